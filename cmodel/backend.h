@@ -1,0 +1,38 @@
+// One interface for the two implementations of the datapath: the golden model and the RTL.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "fragment.h"
+#include "framebuffer.h"
+
+namespace zb {
+
+// Counters of one pass, in fragments and pixel accesses.
+struct PassStats {
+  uint64_t fragments_in = 0;
+  uint64_t fragments_passed = 0;  // passed the depth test
+  uint64_t color_reads = 0;       // destination reads for blending
+  uint64_t color_writes = 0;
+  uint64_t depth_reads = 0;
+  uint64_t depth_writes = 0;
+  uint64_t cycles = 0;            // clock cycles; 0 where the backend has no clock
+
+  uint64_t fragments_killed() const { return fragments_in - fragments_passed; }
+  PassStats& operator+=(const PassStats& o);
+};
+
+class Backend {
+ public:
+  virtual ~Backend() = default;
+  virtual const char* name() const = 0;
+  // Starts a frame: buffers of the given size cleared to `clear_color` and the far depth.
+  virtual void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color) = 0;
+  virtual void begin_pass(const RopState& state) = 0;
+  virtual void draw(const std::vector<Fragment>& fragments) = 0;
+  virtual PassStats end_pass() = 0;
+  virtual const Framebuffer& framebuffer() const = 0;
+};
+
+}  // namespace zb

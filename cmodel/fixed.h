@@ -1,0 +1,49 @@
+// Fixed-point types and the unorm arithmetic of the datapath (docs/datapath.md, "Numerics").
+#pragma once
+
+#include <cstdint>
+
+namespace zb {
+
+struct Rgba8 {
+  uint8_t r = 0, g = 0, b = 0, a = 0;
+  friend bool operator==(Rgba8 x, Rgba8 y) {
+    return x.r == y.r && x.g == y.g && x.b == y.b && x.a == y.a;
+  }
+  friend bool operator!=(Rgba8 x, Rgba8 y) { return !(x == y); }
+};
+
+// Sub-pixel precision of window coordinates: 8 fractional bits.
+constexpr int kSubpixelBits = 8;
+constexpr int32_t kSubpixelOne = 1 << kSubpixelBits;
+
+constexpr int kMinDepthBits = 8;
+constexpr int kMaxDepthBits = 32;
+constexpr int kDefaultDepthBits = 24;
+
+// Largest depth value of a `bits`-wide unorm depth buffer (window depth 1.0).
+constexpr uint32_t depth_max(int bits) {
+  return bits >= 32 ? 0xffffffffu : (uint32_t{1} << bits) - 1u;
+}
+
+// m(x, y) ~ x*y/255: t = x*y, (t + (t >> 8) + 0x80) >> 8, llvmpipe's unorm8 multiply. It is
+// x*y/255 rounded to nearest for all but 24 of the 65536 pairs, where the fraction is just
+// over one half and it rounds down (tests/test_blend.cpp counts them).
+constexpr uint8_t mul_unorm8(uint8_t x, uint8_t y) {
+  const uint32_t t = uint32_t{x} * y;
+  return static_cast<uint8_t>((t + (t >> 8) + 0x80u) >> 8);
+}
+
+// Alpha blend of one channel: min(255, m(s, a) + m(d, 255 - a)).
+constexpr uint8_t blend_alpha(uint8_t s, uint8_t a, uint8_t d) {
+  const uint32_t v = uint32_t{mul_unorm8(s, a)} + mul_unorm8(d, static_cast<uint8_t>(255 - a));
+  return static_cast<uint8_t>(v > 255u ? 255u : v);
+}
+
+// Additive blend of one channel: min(255, d + m(s, a)).
+constexpr uint8_t blend_additive(uint8_t s, uint8_t a, uint8_t d) {
+  const uint32_t v = uint32_t{d} + mul_unorm8(s, a);
+  return static_cast<uint8_t>(v > 255u ? 255u : v);
+}
+
+}  // namespace zb

@@ -1,0 +1,35 @@
+#include "metrics.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+namespace zb {
+
+ImageError compare_images(const Framebuffer& image, const Framebuffer& reference) {
+  ImageError e;
+  const size_t n = image.color.size();
+  if (n == 0 || n != reference.color.size()) return e;
+  double sum_sq = 0;
+  size_t over2 = 0, over16 = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const Rgba8 a = image.color[i], b = reference.color[i];
+    const int d[3] = {std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)};
+    int worst = 0;
+    for (int c : d) {
+      sum_sq += double(c) * c;
+      worst = std::max(worst, c);
+    }
+    e.max_abs = std::max(e.max_abs, worst);
+    over2 += worst > 2;
+    over16 += worst > 16;
+  }
+  e.rmse = std::sqrt(sum_sq / (3.0 * double(n)));
+  e.psnr = e.rmse == 0 ? std::numeric_limits<double>::infinity()
+                       : 20.0 * std::log10(255.0 / e.rmse);
+  e.share_over_2 = double(over2) / double(n);
+  e.share_over_16 = double(over16) / double(n);
+  return e;
+}
+
+}  // namespace zb

@@ -1,0 +1,18 @@
+// Error of an image against the reference, over the RGB channels of RGBA8.
+#pragma once
+
+#include "framebuffer.h"
+
+namespace zb {
+
+struct ImageError {
+  double rmse = 0;            // root mean square error over RGB, in 8-bit units
+  double psnr = 0;            // dB; infinity when identical
+  int max_abs = 0;            // largest channel difference
+  double share_over_2 = 0;    // share of pixels with a channel off by more than 2
+  double share_over_16 = 0;   // share of pixels with a channel off by more than 16
+};
+
+ImageError compare_images(const Framebuffer& image, const Framebuffer& reference);
+
+}  // namespace zb

@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# The zblend command as a user meets it: help, listings, a render, and bad input that must
+# give one line on stderr, exit code 2 and no output file.
+set -u
+zblend=${1:?usage: test_cli.sh PATH/TO/zblend}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+pass=0 fail=0
+
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
+
+# expect_error NAME PATTERN ARGS...: exit 2, one stderr line matching PATTERN, no files left.
+expect_error() {
+  local name=$1 pattern=$2; shift 2
+  local before after err rc
+  before=$(ls -A "$tmp/out" | sort)
+  err=$("$zblend" "$@" 2>&1 >/dev/null); rc=$?
+  after=$(ls -A "$tmp/out" | sort)
+  if [[ $rc -ne 2 ]]; then bad "$name: exit $rc, want 2 ($err)"; return; fi
+  if [[ $(printf '%s\n' "$err" | wc -l) -ne 1 ]]; then bad "$name: not one line: $err"; return; fi
+  if ! grep -qE -- "$pattern" <<<"$err"; then bad "$name: '$err' lacks /$pattern/"; return; fi
+  if [[ "$before" != "$after" ]]; then bad "$name: left files: $after"; return; fi
+  ok
+}
+
+mkdir -p "$tmp/out" "$tmp/ro"
+chmod 555 "$tmp/ro"
+
+# Help and listings.
+for sub in "" render methods scenes plan; do
+  if "$zblend" $sub --help >"$tmp/help" 2>&1 && grep -q "Usage" "$tmp/help"; then ok; else bad "help $sub"; fi
+done
+if "$zblend" methods | grep -q "three-pass"; then ok; else bad "methods lists three-pass"; fi
+if "$zblend" methods | grep -q "reference"; then ok; else bad "methods lists reference"; fi
+for s in cad quads sphere-torus; do
+  if "$zblend" scenes | grep -q "^$s "; then ok; else bad "scenes lists $s"; fi
+done
+if "$zblend" plan --method three-pass | grep -c "transparent" | grep -q 2; then ok; else bad "plan three-pass"; fi
+
+# A render: a PNG of the asked size, and stats.
+if "$zblend" render -q --scene quads --method three-pass --width 64 --height 48 \
+     --out "$tmp/out/q.png" --stats "$tmp/out/q.json"; then
+  sig=$(head -c 8 "$tmp/out/q.png" | od -An -tx1 | tr -d ' \n')
+  size=$(od -An -tu1 -j16 -N8 "$tmp/out/q.png" | awk '{print $3*256+$4 "x" $7*256+$8}')
+  [[ $sig == 89504e470d0a1a0a ]] && ok || bad "PNG signature $sig"
+  [[ $size == 64x48 ]] && ok || bad "PNG size $size"
+  grep -q '"fragments_in"' "$tmp/out/q.json" && ok || bad "stats json"
+  rm -f "$tmp/out/q.png" "$tmp/out/q.json"
+else
+  bad "render quads"
+fi
+if "$zblend" render -q --scene cad --method all --width 80 --height 60 --out-dir "$tmp/run"; then
+  [[ $(ls "$tmp/run"/*.png | wc -l) -eq 4 ]] && ok || bad "out-dir images: $(ls "$tmp/run")"
+  [[ $(head -1 "$tmp/run/summary.csv") == method,passes,fragments,* ]] && ok || bad "summary header"
+  grep -q '^reference,.*,0.0000,inf,0,' "$tmp/run/summary.csv" && ok || bad "reference row has no error"
+else
+  bad "render all"
+fi
+
+# Bad input.
+expect_error "unknown scene" "unknown scene 'nope'.*cad" render --scene nope --out "$tmp/out/a.png"
+expect_error "unknown method" "unknown method 'nope'.*three-pass" render --method nope --out "$tmp/out/a.png"
+expect_error "zero width" "--width: 0 is out of range" render --width 0 --out "$tmp/out/a.png"
+expect_error "huge height" "--height: 100000 is out of range" render --height 100000 --out "$tmp/out/a.png"
+expect_error "depth bits" "--depth-bits" render --depth-bits 40 --out "$tmp/out/a.png"
+expect_error "not a number" "width" render --width abc --out "$tmp/out/a.png"
+expect_error "no output" "--out" render --scene cad
+expect_error "not png" "must end in .png" render --out "$tmp/out/a.jpg"
+expect_error "missing dir" "does not exist" render --out "$tmp/out/no/such/a.png"
+expect_error "several methods one file" "--out-dir" render --method opaque,three-pass --out "$tmp/out/a.png"
+expect_error "unknown subcommand" "" frobnicate
+expect_error "plan of reference" "no pass plan" plan --method reference
+if [[ $(id -u) -ne 0 ]]; then
+  expect_error "unwritable" "not writable" render --out "$tmp/ro/a.png"
+else
+  expect_error "unwritable" "cannot write" render -q --width 8 --height 8 --out /proc/zblend-test.png
+fi
+
+echo "$pass passed, $fail failed"
+[[ $fail -eq 0 ]]
