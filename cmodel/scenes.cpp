@@ -1,1 +1,322 @@
-// placeholder: being written
+// The built-in scenes and the mesh builders they use.
+//
+// Every scene is chosen to make some transparency method fail (DESIGN.md, "The methods"):
+// transparent objects are never submitted back to front, and closed transparent shells show
+// their back faces through their front faces.
+#include "scenes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace zb {
+
+namespace {
+
+constexpr float kPi = glm::pi<float>();
+
+void require(bool ok, const char* what) {
+  if (!ok) throw std::invalid_argument(what);
+}
+
+uint32_t add_vertex(Mesh& m, glm::vec3 p, glm::vec3 n) {
+  m.positions.push_back(p);
+  m.normals.push_back(glm::normalize(n));
+  return static_cast<uint32_t>(m.positions.size() - 1);
+}
+
+// Two triangles of the quad a-b-c-d, given counter-clockwise seen from its front.
+void add_quad(Mesh& m, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+  m.triangles.emplace_back(a, b, c);
+  m.triangles.emplace_back(a, c, d);
+}
+
+// Appends `src` to `dst` (indices rebased).
+void append(Mesh& dst, const Mesh& src, const glm::mat4& xf = glm::mat4(1.0f)) {
+  const auto base = static_cast<uint32_t>(dst.positions.size());
+  const glm::mat3 nxf = glm::transpose(glm::inverse(glm::mat3(xf)));
+  for (size_t i = 0; i < src.positions.size(); ++i) {
+    dst.positions.push_back(glm::vec3(xf * glm::vec4(src.positions[i], 1.0f)));
+    dst.normals.push_back(glm::normalize(nxf * src.normals[i]));
+  }
+  for (const glm::uvec3& t : src.triangles) dst.triangles.push_back(t + glm::uvec3(base));
+}
+
+glm::mat4 translate(glm::vec3 t) { return glm::translate(glm::mat4(1.0f), t); }
+glm::mat4 rotate(float deg, glm::vec3 axis) {
+  return glm::rotate(glm::mat4(1.0f), glm::radians(deg), axis);
+}
+
+// Sets the camera's near and far planes tightly around the scene: the nearest and farthest
+// vertex along the view direction, widened by 2% of the depth range (at least 0.01) each side,
+// so that the depth buffer's precision is spent on the scene.
+void fit_depth_range(Scene& s) {
+  const glm::vec3 fwd = glm::normalize(s.camera.at - s.camera.eye);
+  float lo = std::numeric_limits<float>::max();
+  float hi = std::numeric_limits<float>::lowest();
+  for (const Object& o : s.objects) {
+    for (const glm::vec3& p : o.mesh.positions) {
+      const glm::vec3 w = glm::vec3(o.transform * glm::vec4(p, 1.0f));
+      const float d = glm::dot(w - s.camera.eye, fwd);
+      lo = std::min(lo, d);
+      hi = std::max(hi, d);
+    }
+  }
+  const float margin = std::max(0.01f, 0.02f * (hi - lo));
+  s.camera.near = std::max(0.01f, lo - margin);
+  s.camera.far = hi + margin;
+}
+
+uint32_t add_material(Scene& s, const char* name, Rgba8 c) {
+  s.materials.push_back(Material{name, c});
+  return static_cast<uint32_t>(s.materials.size() - 1);
+}
+
+void add_object(Scene& s, const char* name, Mesh mesh, uint32_t material, glm::mat4 xf) {
+  s.objects.push_back(Object{name, std::move(mesh), material, xf});
+}
+
+// The CAD use case of US 7,834,879: an opaque part inside two nested transparent shells.
+// Submitted outer shell, inner shell, part: front to back, the worst order for one-pass blending.
+Scene cad_scene() {
+  Scene s;
+  const uint32_t part = add_material(s, "part", Rgba8{70, 80, 110, 255});             // blue-grey
+  const uint32_t inner = add_material(s, "inner_shell", Rgba8{255, 170, 0, 128});     // amber
+  const uint32_t outer = add_material(s, "outer_shell", Rgba8{0, 190, 220, 77});      // cyan
+
+  // Outer shell: a box of half extent (1.5, 1.3, 1.5), turned 20 degrees about y.
+  add_object(s, "outer_shell", make_box({1.5f, 1.3f, 1.5f}), outer, rotate(20.0f, {0, 1, 0}));
+  // Inner shell: a sphere of radius 1.1 (inside the outer box whatever its turn).
+  add_object(s, "inner_shell", make_sphere(1.1f, 32, 16), inner, glm::mat4(1.0f));
+  // The part: a block of half extent (0.7, 0.25, 0.4) with a ball of radius 0.35 on top
+  // (two closed surfaces in one mesh), turned -30 degrees about y; inside the inner sphere.
+  Mesh body = make_box({0.7f, 0.25f, 0.4f});
+  append(body, make_sphere(0.35f, 16, 8), translate({0.2f, 0.3f, 0.0f}));
+  add_object(s, "part", std::move(body), part, rotate(-30.0f, {0, 1, 0}));
+
+  s.camera.eye = {4.5f, 3.5f, 5.5f};
+  s.camera.at = {0.0f, 0.0f, 0.0f};
+  s.camera.fov_y_deg = 45.0f;
+  fit_depth_range(s);
+  return s;
+}
+
+// Three transparent quads facing the camera, on each half of the frame, in opposite submit
+// orders, over one opaque backdrop. The camera looks straight down -z from z = 8, so every quad
+// has one constant depth (world z; eye distance 8 - z):
+//   A (near)   z = +1.0   red   (230, 30, 30, 128)
+//   B (middle) z =  0.0   green (30, 200, 60, 100)
+//   C (far)    z = -1.0   blue  (30, 70, 230, 200)
+//   backdrop   z = -2.0   grey  (110, 110, 110, 255), opaque
+// Left half (x < 0): A, B, C submitted near to far. Right half (x > 0): C, B, A, far to near.
+// Each quad is laid out on the plane z = 0 (half size 0.8, centred at its group's centre
+// x = -+2.2 plus its offset) and then scaled about the eye onto its own depth, so that it
+// covers the same screen rectangle at every depth: the two halves are the same picture, with
+// regions of 1, 2 and 3 transparent layers, and differ only in submit order.
+Scene quads_scene() {
+  Scene s;
+  const uint32_t grey = add_material(s, "backdrop", Rgba8{110, 110, 110, 255});
+  const uint32_t red = add_material(s, "A_red", Rgba8{230, 30, 30, 128});
+  const uint32_t green = add_material(s, "B_green", Rgba8{30, 200, 60, 100});
+  const uint32_t blue = add_material(s, "C_blue", Rgba8{30, 70, 230, 200});
+
+  constexpr float kEyeZ = 8.0f;
+  constexpr float kZa = 1.0f, kZb = 0.0f, kZc = -1.0f, kZbackdrop = -2.0f;
+  constexpr float kHalf = 0.8f;   // half size on the plane z = 0
+  constexpr float kSideX = 2.2f;  // centre of each half's group on the plane z = 0
+  // Offsets of A, B, C within a group, on the plane z = 0: overlapping like a Venn diagram.
+  const glm::vec2 oa{-0.4f, 0.3f}, ob{0.4f, 0.3f}, oc{0.0f, -0.35f};
+
+  add_object(s, "backdrop", make_quad(4.8f, 2.0f), grey, translate({0.0f, 0.0f, kZbackdrop}));
+  auto quad = [&](const char* name, uint32_t mat, float side, glm::vec2 o, float z) {
+    const float k = (kEyeZ - z) / kEyeZ;  // scale about the eye from z = 0 to depth z
+    add_object(s, name, make_quad(k * kHalf, k * kHalf), mat,
+               translate({k * (side + o.x), k * o.y, z}));
+  };
+  quad("A_left", red, -kSideX, oa, kZa);
+  quad("B_left", green, -kSideX, ob, kZb);
+  quad("C_left", blue, -kSideX, oc, kZc);
+  quad("C_right", blue, kSideX, oc, kZc);
+  quad("B_right", green, kSideX, ob, kZb);
+  quad("A_right", red, kSideX, oa, kZa);
+
+  s.camera.eye = {0.0f, 0.0f, kEyeZ};
+  s.camera.at = {0.0f, 0.0f, 0.0f};
+  s.camera.fov_y_deg = 45.0f;
+  fit_depth_range(s);
+  return s;
+}
+
+// A convex transparent sphere and a non-convex transparent torus over an opaque ground slab.
+// The torus (radii 1.0 and 0.35) is tilted so that the camera sees its ring at about 25
+// degrees: the hole shows, and near the ends of the ring its near and far arcs overlap on
+// screen (four layers of one object). Its left end overlaps the sphere on screen (up to six
+// transparent layers); the two do not intersect. Submitted sphere (in front) before torus.
+Scene sphere_torus_scene() {
+  Scene s;
+  const uint32_t ground = add_material(s, "ground", Rgba8{150, 140, 120, 255});
+  const uint32_t sphere = add_material(s, "sphere", Rgba8{220, 50, 90, 128});  // rose
+  const uint32_t torus = add_material(s, "torus", Rgba8{40, 190, 110, 128});   // green
+
+  add_object(s, "ground", make_box({2.6f, 0.1f, 2.0f}), ground, translate({0.0f, -1.6f, 0.0f}));
+  add_object(s, "sphere", make_sphere(0.9f, 32, 16), sphere, translate({-0.9f, -0.4f, 0.6f}));
+  add_object(s, "torus", make_torus(1.0f, 0.35f, 48, 24), torus,
+             translate({0.8f, -0.45f, -1.0f}) * rotate(25.0f, {0, 0, 1}) * rotate(5.0f, {1, 0, 0}));
+
+  s.camera.eye = {0.0f, 2.2f, 6.5f};
+  s.camera.at = {0.0f, -0.4f, 0.0f};
+  s.camera.fov_y_deg = 45.0f;
+  fit_depth_range(s);
+  return s;
+}
+
+struct Builtin {
+  SceneInfo info;
+  Scene (*build)();
+};
+
+const std::vector<Builtin>& builtins() {
+  static const std::vector<Builtin> kBuiltins = {
+      {{"cad", "opaque part inside two nested transparent shells (amber sphere, cyan box), "
+               "submitted outer to inner"},
+       cad_scene},
+      {{"quads", "three transparent quads at known depths, near-to-far on the left, "
+                 "far-to-near on the right, over an opaque backdrop"},
+       quads_scene},
+      {{"sphere-torus", "transparent convex sphere and self-overlapping transparent torus "
+                        "over an opaque ground slab"},
+       sphere_torus_scene},
+  };
+  return kBuiltins;
+}
+
+}  // namespace
+
+const std::vector<SceneInfo>& builtin_scenes() {
+  static const std::vector<SceneInfo> kInfos = [] {
+    std::vector<SceneInfo> v;
+    for (const Builtin& b : builtins()) v.push_back(b.info);
+    return v;
+  }();
+  return kInfos;
+}
+
+std::optional<Scene> builtin_scene(const std::string& name) {
+  for (const Builtin& b : builtins()) {
+    if (b.info.name == name) {
+      Scene s = b.build();
+      s.name = b.info.name;
+      s.description = b.info.description;
+      return s;
+    }
+  }
+  return std::nullopt;
+}
+
+Mesh make_quad(float half_w, float half_h) {
+  require(half_w > 0.0f && half_h > 0.0f, "make_quad: half sizes must be positive");
+  Mesh m;
+  const glm::vec3 n{0.0f, 0.0f, 1.0f};
+  const uint32_t a = add_vertex(m, {-half_w, -half_h, 0.0f}, n);
+  const uint32_t b = add_vertex(m, {half_w, -half_h, 0.0f}, n);
+  const uint32_t c = add_vertex(m, {half_w, half_h, 0.0f}, n);
+  const uint32_t d = add_vertex(m, {-half_w, half_h, 0.0f}, n);
+  add_quad(m, a, b, c, d);
+  return m;
+}
+
+Mesh make_box(glm::vec3 half_extent) {
+  require(half_extent.x > 0.0f && half_extent.y > 0.0f && half_extent.z > 0.0f,
+          "make_box: half extents must be positive");
+  // Each face: outward normal n and in-plane axes u, v with u x v = n, so that the corners
+  // -u-v, +u-v, +u+v, -u+v run counter-clockwise seen from outside.
+  struct Face {
+    glm::vec3 n, u, v;
+  };
+  static const Face kFaces[6] = {
+      {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},   {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
+      {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}},   {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
+      {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},   {{0, 0, -1}, {0, 1, 0}, {1, 0, 0}},
+  };
+  static const glm::vec2 kCorners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  Mesh m;
+  for (const Face& f : kFaces) {
+    uint32_t idx[4];
+    for (int k = 0; k < 4; ++k) {
+      // Every coordinate is exactly +-half_extent, so corners shared by faces are bit-equal.
+      const glm::vec3 sign = f.n + kCorners[k].x * f.u + kCorners[k].y * f.v;
+      idx[k] = add_vertex(m, sign * half_extent, f.n);
+    }
+    add_quad(m, idx[0], idx[1], idx[2], idx[3]);
+  }
+  return m;
+}
+
+Mesh make_sphere(float radius, int slices, int stacks) {
+  require(radius > 0.0f, "make_sphere: radius must be positive");
+  require(slices >= 3 && stacks >= 2, "make_sphere: needs slices >= 3 and stacks >= 2");
+  // Direction at polar angle theta (from +y) and azimuth phi; phi runs counter-clockwise
+  // seen from +y (from +x toward -z).
+  auto dir = [](float theta, float phi) {
+    return glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta),
+                     -std::sin(theta) * std::sin(phi));
+  };
+  Mesh m;
+  const uint32_t top = add_vertex(m, {0.0f, radius, 0.0f}, {0.0f, 1.0f, 0.0f});
+  // Rings 1 .. stacks-1, each of `slices` vertices (no seam duplicate: normals are smooth).
+  auto ring = [&](int i, int j) {
+    return 1u + static_cast<uint32_t>((i - 1) * slices + (j % slices));
+  };
+  for (int i = 1; i < stacks; ++i) {
+    const float theta = kPi * static_cast<float>(i) / static_cast<float>(stacks);
+    for (int j = 0; j < slices; ++j) {
+      const float phi = 2.0f * kPi * static_cast<float>(j) / static_cast<float>(slices);
+      const glm::vec3 d = dir(theta, phi);
+      add_vertex(m, radius * d, d);
+    }
+  }
+  const uint32_t bottom = add_vertex(m, {0.0f, -radius, 0.0f}, {0.0f, -1.0f, 0.0f});
+  // One triangle per pole segment; two per segment of the bands between rings.
+  for (int j = 0; j < slices; ++j) m.triangles.emplace_back(top, ring(1, j), ring(1, j + 1));
+  for (int i = 1; i + 1 < stacks; ++i) {
+    for (int j = 0; j < slices; ++j) {
+      add_quad(m, ring(i, j), ring(i + 1, j), ring(i + 1, j + 1), ring(i, j + 1));
+    }
+  }
+  for (int j = 0; j < slices; ++j) {
+    m.triangles.emplace_back(bottom, ring(stacks - 1, j + 1), ring(stacks - 1, j));
+  }
+  return m;
+}
+
+Mesh make_torus(float major_r, float minor_r, int major_seg, int minor_seg) {
+  require(major_r > minor_r && minor_r > 0.0f, "make_torus: needs major_r > minor_r > 0");
+  require(major_seg >= 3 && minor_seg >= 3, "make_torus: needs at least 3 segments each way");
+  Mesh m;
+  // Vertex (i, j): major angle u_i about +y (from +x toward -z), minor angle v_j around the
+  // tube (0 = outermost, pi/2 = top).
+  auto index = [&](int i, int j) {
+    return static_cast<uint32_t>((i % major_seg) * minor_seg + (j % minor_seg));
+  };
+  for (int i = 0; i < major_seg; ++i) {
+    const float u = 2.0f * kPi * static_cast<float>(i) / static_cast<float>(major_seg);
+    const glm::vec3 radial{std::cos(u), 0.0f, -std::sin(u)};
+    for (int j = 0; j < minor_seg; ++j) {
+      const float v = 2.0f * kPi * static_cast<float>(j) / static_cast<float>(minor_seg);
+      const glm::vec3 n = std::cos(v) * radial + glm::vec3(0.0f, std::sin(v), 0.0f);
+      add_vertex(m, major_r * radial + minor_r * n, n);
+    }
+  }
+  for (int i = 0; i < major_seg; ++i) {
+    for (int j = 0; j < minor_seg; ++j) {
+      add_quad(m, index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1));
+    }
+  }
+  return m;
+}
+
+}  // namespace zb
