@@ -30,7 +30,9 @@ class Backend {
   // Starts a frame: buffers of the given size cleared to `clear_color` and the far depth.
   virtual void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color) = 0;
   virtual void begin_pass(const RopState& state) = 0;
-  virtual void draw(const std::vector<Fragment>& fragments) = 0;
+  // Sends `count` fragments, in order; a pass may draw many times.
+  virtual void draw(const Fragment* fragments, size_t count) = 0;
+  void draw(const std::vector<Fragment>& fragments) { draw(fragments.data(), fragments.size()); }
   virtual PassStats end_pass() = 0;
   virtual const Framebuffer& framebuffer() const = 0;
 };

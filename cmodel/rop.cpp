@@ -55,8 +55,8 @@ void GoldenRop::begin_pass(const RopState& state) {
   stats_ = PassStats{};
 }
 
-void GoldenRop::draw(const std::vector<Fragment>& fragments) {
-  for (const Fragment& f : fragments) process(f);
+void GoldenRop::draw(const Fragment* fragments, size_t count) {
+  for (size_t i = 0; i < count; ++i) process(fragments[i]);
 }
 
 PassStats GoldenRop::end_pass() { return stats_; }

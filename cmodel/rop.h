@@ -20,7 +20,8 @@ class GoldenRop final : public Backend {
   const char* name() const override { return "golden"; }
   void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color) override;
   void begin_pass(const RopState& state) override;
-  void draw(const std::vector<Fragment>& fragments) override;
+  using Backend::draw;
+  void draw(const Fragment* fragments, size_t count) override;
   PassStats end_pass() override;
   const Framebuffer& framebuffer() const override { return fb_; }
 
