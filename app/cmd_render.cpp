@@ -1,9 +1,9 @@
 // zblend render: a scene through one or more methods, to PNG images, a table and JSON stats.
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <optional>
-#include <unistd.h>
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
@@ -16,7 +16,6 @@
 #include "reference.h"
 #include "render.h"
 #include "rop.h"
-#include "scenes.h"
 
 namespace zb::app {
 namespace {
@@ -44,50 +43,6 @@ struct MethodRun {
   ImageError error;
   double host_ms = 0;
 };
-
-std::vector<std::string> scene_names() {
-  std::vector<std::string> names;
-  for (const SceneInfo& s : builtin_scenes()) names.push_back(s.name);
-  return names;
-}
-
-std::vector<std::string> parse_methods(const std::string& list) {
-  if (list == "all") return method_names();
-  std::vector<std::string> out;
-  const std::vector<std::string> valid = method_names();
-  size_t start = 0;
-  while (start <= list.size()) {
-    const size_t comma = std::min(list.find(',', start), list.size());
-    const std::string name = list.substr(start, comma - start);
-    if (std::find(valid.begin(), valid.end(), name) == valid.end())
-      throw UsageError(fmt::format("--method: unknown method '{}' (choose from {}, or all)", name,
-                                   join(valid)));
-    out.push_back(name);
-    start = comma + 1;
-  }
-  return out;
-}
-
-void check_range(const char* option, int value, int lo, int hi) {
-  if (value < lo || value > hi)
-    throw UsageError(fmt::format("{}: {} is out of range ({} to {})", option, value, lo, hi));
-}
-
-// Fails early, before any rendering, when `path` cannot be created.
-void check_writable(const char* option, const std::string& path, const char* extension) {
-  if (fs::path(path).extension() != extension)
-    throw UsageError(fmt::format("{}: '{}' must end in {}", option, path, extension));
-  fs::path dir = fs::path(path).parent_path();
-  if (dir.empty()) dir = ".";
-  if (!fs::is_directory(dir))
-    throw UsageError(fmt::format("{}: directory '{}' does not exist", option, dir.string()));
-  if (::access(dir.c_str(), W_OK) != 0)
-    throw UsageError(fmt::format("{}: directory '{}' is not writable", option, dir.string()));
-}
-
-void write_or_fail(const std::string& error) {
-  if (!error.empty()) throw UsageError(error);
-}
 
 uint64_t bytes_read(const PassStats& s, int depth_bits) {
   return s.color_reads * 4 + s.depth_reads * static_cast<uint64_t>((depth_bits + 7) / 8);
@@ -147,14 +102,9 @@ void print_table(const std::vector<MethodRun>& runs) {
 }
 
 void run_render(const RenderOptions& o) {
-  const std::optional<Scene> scene = builtin_scene(o.scene);
-  if (!scene)
-    throw UsageError(fmt::format("--scene: unknown scene '{}' (choose from {})", o.scene,
-                                 join(scene_names())));
+  const Scene scene = resolve_scene(o.scene);
   const std::vector<std::string> methods = parse_methods(o.methods);
-  check_range("--width", o.width, 1, kMaxFrameSize);
-  check_range("--height", o.height, 1, kMaxFrameSize);
-  check_range("--depth-bits", o.depth_bits, kMinDepthBits, kMaxDepthBits);
+  const Viewport vp = check_viewport(o.width, o.height, o.depth_bits);
   if (o.out.empty() == o.out_dir.empty())
     throw UsageError("give exactly one of --out FILE.png (one method) or --out-dir DIR");
   if (!o.out.empty() && methods.size() != 1)
@@ -168,9 +118,8 @@ void run_render(const RenderOptions& o) {
   if (!o.stats.empty()) check_writable("--stats", o.stats, ".json");
 
   using Clock = std::chrono::steady_clock;
-  const Viewport vp{o.width, o.height, o.depth_bits};
   const auto t0 = Clock::now();
-  const RasterizedScene rs = rasterize_scene(*scene, vp);
+  const RasterizedScene rs = rasterize_scene(scene, vp);
   const auto t1 = Clock::now();
   const Framebuffer reference = render_reference(rs);
   const double raster_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();

@@ -3,8 +3,12 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include "geometry.h"
+#include "scene.h"
 
 namespace zb::app {
 
@@ -14,7 +18,17 @@ struct UsageError : std::runtime_error {
 };
 
 void add_render_command(CLI::App& app);
+void add_trace_command(CLI::App& app);
 void add_info_commands(CLI::App& app);  // methods, scenes, plan
+
+// Option checks shared by the subcommands; each throws UsageError naming the option.
+Scene resolve_scene(const std::string& name);
+std::vector<std::string> parse_methods(const std::string& list);  // "a,b" or "all"
+Viewport check_viewport(int width, int height, int depth_bits);
+// Fails early, before any work, when `path` lacks `extension` or its directory is not writable.
+void check_writable(const char* option, const std::string& path, const char* extension);
+// Throws UsageError(error) unless `error` is empty.
+void write_or_fail(const std::string& error);
 
 // "a, b, c", for error messages that name the valid choices.
 std::string join(const std::vector<std::string>& items, const char* sep = ", ");

@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   app.name("zblend");
   app.require_subcommand(1, 1);
   zb::app::add_render_command(app);
+  zb::app::add_trace_command(app);
   zb::app::add_info_commands(app);
   try {
     app.parse(argc, argv);

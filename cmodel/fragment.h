@@ -57,6 +57,13 @@ struct PassState {
   RopState rop;
 };
 
+// The pass state register as the RTL receives it (docs/datapath.md, "The pass state"):
+// [0] depth_test, [3:1] depth_func, [4] depth_write, [6:5] blend, [10:7] color_mask.
+constexpr int kStateBits = 11;
+uint16_t pack_state(const RopState& s);
+// False when `bits` is not a valid state (bits above kStateBits set, or a reserved blend code).
+bool unpack_state(uint16_t bits, RopState& out);
+
 const char* to_string(DepthFunc f);
 const char* to_string(BlendMode b);
 const char* to_string(PrimFilter f);

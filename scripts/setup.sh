@@ -6,6 +6,7 @@ packages=(
   build-essential cmake make
   libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libbenchmark-dev
+  verilator zlib1g-dev
 )
 
 missing=()

@@ -28,7 +28,7 @@ mkdir -p "$tmp/out" "$tmp/ro"
 chmod 555 "$tmp/ro"
 
 # Help and listings.
-for sub in "" render methods scenes plan; do
+for sub in "" render trace methods scenes plan; do
   if "$zblend" $sub --help >"$tmp/help" 2>&1 && grep -q "Usage" "$tmp/help"; then ok; else bad "help $sub"; fi
 done
 if "$zblend" methods | grep -q "three-pass"; then ok; else bad "methods lists three-pass"; fi
@@ -58,6 +58,11 @@ else
   bad "render all"
 fi
 
+# A trace file.
+if "$zblend" trace --scene quads --method unsorted --width 32 --height 24 --out "$tmp/out/q.zbt" >/dev/null &&
+   [[ $(head -c 7 "$tmp/out/q.zbt") == ZBTRACE ]]; then ok; else bad "trace write"; fi
+rm -f "$tmp/out/q.zbt"
+
 # Bad input.
 expect_error "unknown scene" "unknown scene 'nope'.*cad" render --scene nope --out "$tmp/out/a.png"
 expect_error "unknown method" "unknown method 'nope'.*three-pass" render --method nope --out "$tmp/out/a.png"
@@ -71,6 +76,9 @@ expect_error "missing dir" "does not exist" render --out "$tmp/out/no/such/a.png
 expect_error "several methods one file" "--out-dir" render --method opaque,three-pass --out "$tmp/out/a.png"
 expect_error "unknown subcommand" "" frobnicate
 expect_error "plan of reference" "no pass plan" plan --method reference
+expect_error "trace of reference" "no pass plan" trace --method reference --out "$tmp/out/t.zbt"
+expect_error "trace extension" "must end in .zbt" trace --out "$tmp/out/t.bin"
+expect_error "trace size" "--width: 9000 is out of range" trace --width 9000 --out "$tmp/out/t.zbt"
 if [[ $(id -u) -ne 0 ]]; then
   expect_error "unwritable" "not writable" render --out "$tmp/ro/a.png"
 else

@@ -2,6 +2,24 @@
 
 namespace zb {
 
+uint16_t pack_state(const RopState& s) {
+  return static_cast<uint16_t>((s.depth_test ? 1u : 0u) | (unsigned(s.depth_func) & 7u) << 1 |
+                               (s.depth_write ? 1u : 0u) << 4 | (unsigned(s.blend) & 3u) << 5 |
+                               (unsigned(s.color_mask) & 15u) << 7);
+}
+
+bool unpack_state(uint16_t bits, RopState& out) {
+  if (bits >> kStateBits) return false;
+  const unsigned blend = (bits >> 5) & 3u;
+  if (blend > unsigned(BlendMode::kAdditive)) return false;
+  out.depth_test = bits & 1u;
+  out.depth_func = static_cast<DepthFunc>((bits >> 1) & 7u);
+  out.depth_write = (bits >> 4) & 1u;
+  out.blend = static_cast<BlendMode>(blend);
+  out.color_mask = static_cast<uint8_t>((bits >> 7) & 15u);
+  return true;
+}
+
 const char* to_string(DepthFunc f) {
   switch (f) {
     case DepthFunc::kNever: return "never";

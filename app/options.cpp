@@ -1,0 +1,71 @@
+// Option checks shared by the subcommands.
+#include <algorithm>
+#include <filesystem>
+#include <unistd.h>
+
+#include <fmt/core.h>
+
+#include "commands.h"
+#include "passes.h"
+#include "scenes.h"
+
+namespace zb::app {
+
+namespace fs = std::filesystem;
+
+Scene resolve_scene(const std::string& name) {
+  if (std::optional<Scene> scene = builtin_scene(name)) return *scene;
+  std::vector<std::string> names;
+  for (const SceneInfo& s : builtin_scenes()) names.push_back(s.name);
+  throw UsageError(fmt::format("--scene: unknown scene '{}' (choose from {})", name, join(names)));
+}
+
+std::vector<std::string> parse_methods(const std::string& list) {
+  const std::vector<std::string> valid = method_names();
+  if (list == "all") return valid;
+  std::vector<std::string> out;
+  size_t start = 0;
+  while (start <= list.size()) {
+    const size_t comma = std::min(list.find(',', start), list.size());
+    const std::string name = list.substr(start, comma - start);
+    if (std::find(valid.begin(), valid.end(), name) == valid.end())
+      throw UsageError(fmt::format("--method: unknown method '{}' (choose from {}, or all)", name,
+                                   join(valid)));
+    out.push_back(name);
+    start = comma + 1;
+  }
+  return out;
+}
+
+namespace {
+
+void check_range(const char* option, int value, int lo, int hi) {
+  if (value < lo || value > hi)
+    throw UsageError(fmt::format("{}: {} is out of range ({} to {})", option, value, lo, hi));
+}
+
+}  // namespace
+
+Viewport check_viewport(int width, int height, int depth_bits) {
+  check_range("--width", width, 1, kMaxFrameSize);
+  check_range("--height", height, 1, kMaxFrameSize);
+  check_range("--depth-bits", depth_bits, kMinDepthBits, kMaxDepthBits);
+  return {width, height, depth_bits};
+}
+
+void check_writable(const char* option, const std::string& path, const char* extension) {
+  if (fs::path(path).extension() != extension)
+    throw UsageError(fmt::format("{}: '{}' must end in {}", option, path, extension));
+  fs::path dir = fs::path(path).parent_path();
+  if (dir.empty()) dir = ".";
+  if (!fs::is_directory(dir))
+    throw UsageError(fmt::format("{}: directory '{}' does not exist", option, dir.string()));
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw UsageError(fmt::format("{}: directory '{}' is not writable", option, dir.string()));
+}
+
+void write_or_fail(const std::string& error) {
+  if (!error.empty()) throw UsageError(error);
+}
+
+}  // namespace zb::app

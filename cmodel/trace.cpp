@@ -1,0 +1,187 @@
+#include "trace.h"
+
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/core.h>
+
+#include "geometry.h"
+#include "image.h"
+
+namespace zb {
+namespace {
+
+constexpr char kMagic[8] = {'Z', 'B', 'T', 'R', 'A', 'C', 'E', '\0'};
+constexpr uint32_t kVersion = 1;
+constexpr uint32_t kMaxPasses = 1024;
+constexpr uint32_t kMaxNameLength = 256;
+constexpr size_t kFragmentBytes = 20;
+
+void put(std::string& out, const void* p, size_t n) { out.append(static_cast<const char*>(p), n); }
+void put_u8(std::string& out, uint8_t v) { out.push_back(static_cast<char>(v)); }
+void put_u16(std::string& out, uint16_t v) { for (int i = 0; i < 2; ++i) put_u8(out, uint8_t(v >> (8 * i))); }
+void put_u32(std::string& out, uint32_t v) { for (int i = 0; i < 4; ++i) put_u8(out, uint8_t(v >> (8 * i))); }
+void put_u64(std::string& out, uint64_t v) { for (int i = 0; i < 8; ++i) put_u8(out, uint8_t(v >> (8 * i))); }
+
+// Reads little-endian fields, with the offset of each for error messages.
+class Reader {
+ public:
+  Reader(const std::string& bytes, const std::string& name) : bytes_(bytes), name_(name) {}
+
+  [[noreturn]] void fail(size_t at, const std::string& what) const {
+    throw TraceError(fmt::format("trace '{}': byte {}: {}", name_, at, what));
+  }
+  size_t offset() const { return pos_; }
+  size_t remaining() const { return bytes_.size() - pos_; }
+  uint64_t get(int n, const char* what) {
+    if (remaining() < size_t(n)) fail(pos_, fmt::format("truncated, expected {}", what));
+    uint64_t v = 0;
+    for (int i = 0; i < n; ++i) v |= uint64_t(uint8_t(bytes_[pos_ + size_t(i)])) << (8 * i);
+    pos_ += size_t(n);
+    return v;
+  }
+  std::string get_string(size_t n, const char* what) {
+    if (remaining() < n) fail(pos_, fmt::format("truncated, expected {}", what));
+    std::string s = bytes_.substr(pos_, n);
+    pos_ += n;
+    return s;
+  }
+
+ private:
+  const std::string& bytes_;
+  const std::string& name_;
+  size_t pos_ = 0;
+};
+
+}  // namespace
+
+Trace make_trace(const RasterizedScene& rs, const PassPlan& plan) {
+  Trace t;
+  t.width = rs.viewport.width;
+  t.height = rs.viewport.height;
+  t.depth_bits = rs.viewport.depth_bits;
+  t.clear_color = rs.background;
+  for (const PassState& p : plan.passes) t.passes.push_back({p.name, p.rop, pass_fragments(rs, p)});
+  return t;
+}
+
+std::string serialize_trace(const Trace& t) {
+  std::string out;
+  put(out, kMagic, sizeof kMagic);
+  put_u32(out, kVersion);
+  put_u32(out, uint32_t(t.width));
+  put_u32(out, uint32_t(t.height));
+  put_u32(out, uint32_t(t.depth_bits));
+  for (uint8_t c : {t.clear_color.r, t.clear_color.g, t.clear_color.b, t.clear_color.a}) put_u8(out, c);
+  put_u32(out, uint32_t(t.passes.size()));
+  for (const TracePass& p : t.passes) {
+    put_u32(out, uint32_t(p.name.size()));
+    put(out, p.name.data(), p.name.size());
+    put_u16(out, pack_state(p.state));
+    put_u64(out, p.fragments.size());
+    for (const Fragment& f : p.fragments) {
+      put_u16(out, f.x);
+      put_u16(out, f.y);
+      put_u32(out, f.z);
+      for (uint8_t c : {f.color.r, f.color.g, f.color.b, f.color.a}) put_u8(out, c);
+      put_u8(out, f.front ? 1 : 0);
+      put_u8(out, 0);
+      put_u16(out, 0);
+      put_u32(out, f.prim);
+    }
+  }
+  return out;
+}
+
+std::string write_trace(const std::string& path, const Trace& trace) {
+  return write_file_atomic(path, serialize_trace(trace));
+}
+
+Trace parse_trace(const std::string& bytes, const std::string& name) {
+  Reader r(bytes, name);
+  if (r.get_string(sizeof kMagic, "the magic 'ZBTRACE'") != std::string(kMagic, sizeof kMagic))
+    r.fail(0, "not a zblend trace (bad magic)");
+  const size_t at_version = r.offset();
+  if (const uint64_t v = r.get(4, "the version"); v != kVersion)
+    r.fail(at_version, fmt::format("version {} is not supported (this zblend reads {})", v, kVersion));
+  Trace t;
+  const size_t at_size = r.offset();
+  const uint64_t w = r.get(4, "the width"), h = r.get(4, "the height");
+  if (w < 1 || w > uint64_t(kMaxFrameSize) || h < 1 || h > uint64_t(kMaxFrameSize))
+    r.fail(at_size, fmt::format("frame {}x{} is out of range (1 to {})", w, h, kMaxFrameSize));
+  t.width = int(w);
+  t.height = int(h);
+  const size_t at_bits = r.offset();
+  const uint64_t bits = r.get(4, "the depth width");
+  if (bits < uint64_t(kMinDepthBits) || bits > uint64_t(kMaxDepthBits))
+    r.fail(at_bits, fmt::format("depth width {} is out of range ({} to {})", bits, kMinDepthBits,
+                                kMaxDepthBits));
+  t.depth_bits = int(bits);
+  t.clear_color.r = uint8_t(r.get(1, "the clear colour"));
+  t.clear_color.g = uint8_t(r.get(1, "the clear colour"));
+  t.clear_color.b = uint8_t(r.get(1, "the clear colour"));
+  t.clear_color.a = uint8_t(r.get(1, "the clear colour"));
+  const size_t at_passes = r.offset();
+  const uint64_t passes = r.get(4, "the pass count");
+  if (passes > kMaxPasses)
+    r.fail(at_passes, fmt::format("{} passes is more than {}", passes, kMaxPasses));
+  for (uint64_t p = 0; p < passes; ++p) {
+    TracePass pass;
+    const size_t at_name = r.offset();
+    const uint64_t len = r.get(4, "a pass name length");
+    if (len > kMaxNameLength) r.fail(at_name, fmt::format("pass name of {} bytes", len));
+    pass.name = r.get_string(size_t(len), "a pass name");
+    const size_t at_state = r.offset();
+    if (!unpack_state(uint16_t(r.get(2, "a pass state")), pass.state))
+      r.fail(at_state, fmt::format("pass {}: invalid pass state", p + 1));
+    const size_t at_count = r.offset();
+    const uint64_t count = r.get(8, "a fragment count");
+    if (count > r.remaining() / kFragmentBytes)
+      r.fail(at_count, fmt::format("pass {}: {} fragments announced, {} bytes left", p + 1, count,
+                                   r.remaining()));
+    pass.fragments.resize(size_t(count));
+    for (Fragment& f : pass.fragments) {
+      const size_t at = r.offset();
+      f.x = uint16_t(r.get(2, "x"));
+      f.y = uint16_t(r.get(2, "y"));
+      const uint64_t z = r.get(4, "z");
+      f.color = {uint8_t(r.get(1, "r")), uint8_t(r.get(1, "g")), uint8_t(r.get(1, "b")),
+                 uint8_t(r.get(1, "a"))};
+      const uint64_t flags = r.get(4, "flags");
+      f.prim = uint32_t(r.get(4, "prim"));
+      if (f.x >= t.width || f.y >= t.height)
+        r.fail(at, fmt::format("fragment ({}, {}) is outside the {}x{} frame", f.x, f.y, t.width,
+                               t.height));
+      if (z > depth_max(t.depth_bits))
+        r.fail(at, fmt::format("fragment depth {} exceeds {} bits", z, t.depth_bits));
+      if (flags > 1) r.fail(at, "fragment flags have reserved bits set");
+      f.z = uint32_t(z);
+      f.front = flags & 1;
+    }
+    t.passes.push_back(std::move(pass));
+  }
+  if (r.remaining() != 0) r.fail(r.offset(), fmt::format("{} bytes after the last pass", r.remaining()));
+  return t;
+}
+
+Trace read_trace(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw TraceError(fmt::format("trace '{}': cannot open: {}", path, std::strerror(errno)));
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return parse_trace(bytes.str(), path);
+}
+
+std::vector<PassStats> replay_trace(const Trace& trace, Backend& backend) {
+  backend.begin_frame(trace.width, trace.height, trace.depth_bits, trace.clear_color);
+  std::vector<PassStats> stats;
+  for (const TracePass& p : trace.passes) {
+    backend.begin_pass(p.state);
+    backend.draw(p.fragments);
+    stats.push_back(backend.end_pass());
+  }
+  return stats;
+}
+
+}  // namespace zb
