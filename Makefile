@@ -6,7 +6,7 @@ ZBLEND     := $(BUILD)/zblend
 RUN_SIZE   ?= --width 640 --height 480
 
 .DEFAULT_GOAL := build
-.PHONY: help setup build run test test-asan bench clean
+.PHONY: help setup build run test test-asan bench lint clean
 
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 12
@@ -38,6 +38,15 @@ test-asan: setup ## The tests built with AddressSanitizer and UndefinedBehaviorS
 
 bench: build ## Benchmarks: golden datapath fragments/s, cad at 1024x768 with three-pass
 	$(BUILD)/zblend_bench --benchmark_min_time=1
+
+RTL       := $(sort $(wildcard rtl/*.sv))
+LINT_ARGS := --lint-only -Wall rtl/lint_waivers.vlt $(RTL) --top-module zb_rop
+
+lint: setup ## Verilator lint of the RTL (-Wall), for several parameter sets
+	verilator $(LINT_ARGS)
+	verilator $(LINT_ARGS) -GDEPTH_BITS=16 -GTILE_W=32 -GTILE_H=16
+	verilator $(LINT_ARGS) -GDEPTH_BITS=32 +define+ZB_INJECT_BLEND_BUG
+	@echo "lint: clean"
 
 clean: ## Remove build trees and outputs
 	rm -rf $(BUILD) $(ASAN_BUILD) out

@@ -1,0 +1,46 @@
+// zb_counters: NUM saturating event counters of CNT_W bits. Counter i adds 1 at each rising
+// edge where inc_i[i] is set; at all ones it stays there. A cycle with clear_i set makes every
+// counter 0 at its edge (that cycle's events are not counted).
+module zb_counters #(
+  parameter int unsigned NUM   = 9,
+  parameter int unsigned CNT_W = 32
+) (
+  input  logic                 clk_i,
+  input  logic                 rst_ni,   // asynchronous, active low
+  input  logic                 clear_i,
+  input  logic [NUM-1:0]       inc_i,
+  output logic [NUM*CNT_W-1:0] cnt_o     // counter i at [i*CNT_W +: CNT_W]
+);
+
+  localparam logic [CNT_W-1:0] CntMax = {CNT_W{1'b1}};
+
+  for (genvar i = 0; i < NUM; i++) begin : g_cnt
+    logic [CNT_W-1:0] cnt_d, cnt_q;
+
+    always_comb begin
+      cnt_d = cnt_q;
+      if (clear_i) begin
+        cnt_d = '0;
+      end else if (inc_i[i] && cnt_q != CntMax) begin
+        cnt_d = cnt_q + {{(CNT_W-1){1'b0}}, 1'b1};
+      end
+    end
+
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        cnt_q <= '0;
+      end else begin
+        cnt_q <= cnt_d;
+      end
+    end
+
+    assign cnt_o[i*CNT_W +: CNT_W] = cnt_q;
+
+`ifndef SYNTHESIS
+    // A counter never wraps: at all ones it stays there until cleared.
+    CntSaturates: assert property (@(posedge clk_i) disable iff (!rst_ni)
+        (!clear_i && cnt_q == CntMax) |=> (cnt_q == CntMax));
+`endif
+  end
+
+endmodule
