@@ -17,6 +17,11 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The RTL and the golden model disagreed: exit code 1, after the report.
+struct VerificationError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 void add_render_command(CLI::App& app);
 void add_trace_command(CLI::App& app);
 void add_info_commands(CLI::App& app);  // methods, scenes, plan

@@ -24,6 +24,9 @@ int main(int argc, char** argv) {
   } catch (const zb::app::UsageError& e) {
     std::fprintf(stderr, "zblend: error: %s\n", e.what());
     return 2;
+  } catch (const zb::app::VerificationError& e) {
+    std::fprintf(stderr, "zblend: FAILED: %s\n", e.what());
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "zblend: internal error: %s\n", e.what());
     return 1;

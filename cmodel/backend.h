@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "fragment.h"
@@ -29,6 +30,8 @@ class Backend {
   virtual const char* name() const = 0;
   // Starts a frame: buffers of the given size cleared to `clear_color` and the far depth.
   virtual void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color) = 0;
+  // Names the pass about to begin, for reports; backends may ignore it.
+  virtual void label_pass(const std::string& /*name*/) {}
   virtual void begin_pass(const RopState& state) = 0;
   // Sends `count` fragments, in order; a pass may draw many times.
   virtual void draw(const Fragment* fragments, size_t count) = 0;

@@ -81,6 +81,7 @@ RenderResult render(const RasterizedScene& rs, const PassPlan& plan, Backend& ba
   backend.begin_frame(vp.width, vp.height, vp.depth_bits, rs.background);
   RenderResult result;
   for (const PassState& pass : plan.passes) {
+    backend.label_pass(pass.name);
     backend.begin_pass(pass.rop);
     for_each_pass_range(rs, pass,
                         [&](const Fragment* f, size_t n) { backend.draw(f, n); });

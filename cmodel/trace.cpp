@@ -177,6 +177,7 @@ std::vector<PassStats> replay_trace(const Trace& trace, Backend& backend) {
   backend.begin_frame(trace.width, trace.height, trace.depth_bits, trace.clear_color);
   std::vector<PassStats> stats;
   for (const TracePass& p : trace.passes) {
+    backend.label_pass(p.name);
     backend.begin_pass(p.state);
     backend.draw(p.fragments);
     stats.push_back(backend.end_pass());

@@ -1,0 +1,107 @@
+#include "summary.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+namespace zb::app {
+namespace {
+
+uint64_t depth_bytes(int depth_bits) { return static_cast<uint64_t>((depth_bits + 7) / 8); }
+
+uint64_t bytes_read(const PassStats& s, int depth_bits) {
+  return s.color_reads * 4 + s.depth_reads * depth_bytes(depth_bits);
+}
+
+uint64_t bytes_written(const PassStats& s, int depth_bits) {
+  return s.color_writes * 4 + s.depth_writes * depth_bytes(depth_bits);
+}
+
+std::string psnr_text(double psnr) {
+  return std::isinf(psnr) ? "inf" : fmt::format("{:.2f}", psnr);
+}
+
+}  // namespace
+
+std::string summary_csv(const std::vector<MethodRun>& runs, int depth_bits) {
+  std::string csv =
+      "method,passes,fragments,reads,writes,bytes_read,bytes_written,rmse,psnr_db,max_abs,"
+      "share_over_2,share_over_16,host_ms,rtl_cycles,rtl_tile_io_cycles,mismatches\n";
+  for (const MethodRun& r : runs) {
+    std::string cost = ",,,,,";  // passes, fragments, reads, writes, bytes: none for reference
+    std::string rtl = ",,";
+    if (r.total) {
+      const PassStats& s = *r.total;
+      cost = fmt::format("{},{},{},{},{},{}", r.passes, s.fragments_in,
+                         s.color_reads + s.depth_reads, s.color_writes + s.depth_writes,
+                         bytes_read(s, depth_bits), bytes_written(s, depth_bits));
+      if (r.rtl) rtl = fmt::format("{},{},{}", s.cycles, r.tile_io_cycles, r.mismatches);
+    }
+    csv += fmt::format("{},{},{:.4f},{},{},{:.6f},{:.6f},{:.1f},{}\n", r.method, cost,
+                       r.error.rmse, psnr_text(r.error.psnr), r.error.max_abs,
+                       r.error.share_over_2, r.error.share_over_16, r.host_ms, rtl);
+  }
+  return csv;
+}
+
+void print_table(const std::vector<MethodRun>& runs) {
+  const bool rtl = std::any_of(runs.begin(), runs.end(), [](const MethodRun& r) { return r.rtl; });
+  fmt::print("{:<12} {:>6} {:>10} {:>10} {:>10} {:>8} {:>8} {:>5} {:>8}", "method", "passes",
+             "fragments", "reads", "writes", "rmse", "psnr_dB", "max", ">2/255");
+  fmt::print(rtl ? " {:>10} {:>10}\n" : "\n", "rtl_cycles", "mismatches");
+  for (const MethodRun& r : runs) {
+    if (r.total)
+      fmt::print("{:<12} {:>6} {:>10} {:>10} {:>10}", r.method, r.passes, r.total->fragments_in,
+                 r.total->color_reads + r.total->depth_reads,
+                 r.total->color_writes + r.total->depth_writes);
+    else
+      fmt::print("{:<12} {:>6} {:>10} {:>10} {:>10}", r.method, "-", "-", "-", "-");
+    fmt::print(" {:>8.3f} {:>8} {:>5} {:>7.2f}%", r.error.rmse, psnr_text(r.error.psnr),
+               r.error.max_abs, 100.0 * r.error.share_over_2);
+    if (rtl && r.total && r.rtl)
+      fmt::print(" {:>10} {:>10}\n", r.total->cycles, r.mismatches);
+    else
+      fmt::print(rtl ? " {:>10} {:>10}\n" : "\n", "-", "-");
+  }
+}
+
+std::string stats_json(const std::vector<MethodRun>& runs, int depth_bits,
+                       const std::string& header_json) {
+  nlohmann::json j = nlohmann::json::parse(header_json);
+  j["methods"] = nlohmann::json::array();
+  for (const MethodRun& r : runs) {
+    const ImageError& e = r.error;
+    nlohmann::json m = {
+        {"method", r.method},
+        {"host_ms", r.host_ms},
+        {"error",
+         {{"rmse", e.rmse},
+          {"psnr_db", std::isinf(e.psnr) ? nlohmann::json(nullptr) : nlohmann::json(e.psnr)},
+          {"max_abs", e.max_abs},
+          {"share_over_2", e.share_over_2},
+          {"share_over_16", e.share_over_16}}}};
+    if (r.total) {
+      const PassStats& s = *r.total;
+      m["passes"] = r.passes;
+      m["total"] = {{"fragments_in", s.fragments_in},
+                    {"fragments_passed", s.fragments_passed},
+                    {"fragments_killed", s.fragments_killed()},
+                    {"color_reads", s.color_reads},
+                    {"color_writes", s.color_writes},
+                    {"depth_reads", s.depth_reads},
+                    {"depth_writes", s.depth_writes}};
+      m["bytes_read"] = bytes_read(s, depth_bits);
+      m["bytes_written"] = bytes_written(s, depth_bits);
+      if (r.rtl) {
+        m["rtl"] = {{"cycles", s.cycles}, {"tile_io_cycles", r.tile_io_cycles},
+                    {"mismatches", r.mismatches}};
+      }
+    }
+    j["methods"].push_back(m);
+  }
+  return j.dump(2) + "\n";
+}
+
+}  // namespace zb::app

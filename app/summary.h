@@ -1,0 +1,31 @@
+// What a render of several methods reports: the table, summary.csv and the stats JSON.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "backend.h"
+#include "metrics.h"
+
+namespace zb::app {
+
+// One method's outcome: its image, its cost and its error against the reference.
+struct MethodRun {
+  std::string method;
+  Framebuffer image;
+  std::optional<PassStats> total;  // none for the reference
+  size_t passes = 0;
+  ImageError error;
+  double host_ms = 0;
+  bool rtl = false;                // ran on the RTL: cycles are meaningful
+  uint64_t tile_io_cycles = 0;     // RTL cycles loading and storing tiles
+  uint64_t mismatches = 0;         // pixels where RTL and golden model differ
+};
+
+std::string summary_csv(const std::vector<MethodRun>& runs, int depth_bits);
+void print_table(const std::vector<MethodRun>& runs);
+// The stats JSON of a render; `header` holds scene, size and such.
+std::string stats_json(const std::vector<MethodRun>& runs, int depth_bits, const std::string& header_json);
+
+}  // namespace zb::app

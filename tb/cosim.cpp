@@ -1,0 +1,176 @@
+#include "cosim.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+namespace zb {
+namespace {
+
+std::string hex(uint64_t v, int digits) {
+  static const char kDigits[] = "0123456789abcdef";
+  std::string s;
+  for (int i = 0; i < 16 && (i < digits || v); ++i, v >>= 4) s.insert(s.begin(), kDigits[v & 15]);
+  return "0x" + s;
+}
+
+std::string rgba(Rgba8 c) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "rgba(%u,%u,%u,%u)", c.r, c.g, c.b, c.a);
+  return buf;
+}
+
+std::string state_text(const RopState& s) {
+  std::ostringstream o;
+  o << "depth_test=" << s.depth_test << " func=" << to_string(s.depth_func)
+    << " depth_write=" << s.depth_write << " blend=" << to_string(s.blend)
+    << " color_mask=" << hex(s.color_mask, 1) << " (packed " << hex(pack_state(s), 3) << ")";
+  return o.str();
+}
+
+}  // namespace
+
+Cosim::Cosim(CosimOptions options) : opt_(std::move(options)), rtl_(opt_.rtl) {}
+
+void Cosim::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color) {
+  golden_.begin_frame(width, height, depth_bits, clear_color);
+  rtl_.begin_frame(width, height, depth_bits, clear_color);
+  ++frame_no_;
+  pass_in_frame_ = 0;
+}
+
+void Cosim::begin_pass(const RopState& state) {
+  before_ = golden_.framebuffer();
+  state_ = state;
+  pass_name_ = std::move(next_pass_name_);
+  next_pass_name_.clear();
+  ++pass_in_frame_;
+  golden_.begin_pass(state);
+  rtl_.begin_pass(state);
+}
+
+void Cosim::draw(const Fragment* fragments, size_t count) {
+  golden_.draw(fragments, count);
+  rtl_.draw(fragments, count);
+  fragments_ += count;
+}
+
+std::string Cosim::pass_label() const {
+  std::string s = "frame " + std::to_string(frame_no_) + " pass " + std::to_string(pass_in_frame_);
+  if (!pass_name_.empty()) s += " \"" + pass_name_ + "\"";
+  return s;
+}
+
+PassStats Cosim::end_pass() {
+  const PassStats g = golden_.end_pass();
+  const PassStats r = rtl_.end_pass();
+  ++passes_;
+  const Framebuffer& gf = golden_.framebuffer();
+  const Framebuffer& rf = rtl_.framebuffer();
+  size_t differing = 0, first = 0;
+  for (size_t i = 0; i < gf.color.size(); ++i)
+    if (gf.color[i] != rf.color[i] || gf.depth[i] != rf.depth[i]) {
+      if (differing++ == 0) first = i;
+    }
+  pixels_compared_ += gf.color.size();
+  if (differing) {
+    mismatches_ += differing;
+    report_pixel(int(first % gf.width), int(first / gf.width), differing);
+  }
+  if (g.fragments_in != r.fragments_in || g.fragments_passed != r.fragments_passed ||
+      g.depth_reads != r.depth_reads || g.depth_writes != r.depth_writes ||
+      g.color_reads != r.color_reads || g.color_writes != r.color_writes)
+    report_counters(r, g);
+  return r;
+}
+
+void Cosim::report_pixel(int x, int y, size_t differing) {
+  const Framebuffer& gf = golden_.framebuffer();
+  const Framebuffer& rf = rtl_.framebuffer();
+  const int bits = gf.depth_bits;
+  const int zd = (bits + 3) / 4;
+  std::ostringstream o;
+  o << "MISMATCH in " << pass_label() << ": " << differing << " of " << gf.color.size()
+    << " pixels differ\n";
+  o << "pixel (" << x << "," << y << ") rtl=" << rgba(rf.color_at(x, y)) << " z="
+    << hex(rf.depth_at(x, y), zd) << " golden=" << rgba(gf.color_at(x, y)) << " z="
+    << hex(gf.depth_at(x, y), zd) << "\n";
+  o << "  before the pass: " << rgba(before_.color_at(x, y)) << " z=" << hex(before_.depth_at(x, y), zd)
+    << "\n";
+  o << "  state: " << state_text(state_) << "\n";
+  const std::vector<Fragment>& frags = rtl_.pass_fragments();
+  const std::vector<uint64_t>& acc = rtl_.accept_cycles();
+  uint64_t lo = std::numeric_limits<uint64_t>::max(), hi = 0;
+  size_t touching = 0;
+  std::ostringstream list;
+  for (size_t i = 0; i < frags.size(); ++i) {
+    const Fragment& f = frags[i];
+    if (f.x != x || f.y != y) continue;
+    ++touching;
+    lo = std::min(lo, acc[i]);
+    hi = std::max(hi, acc[i]);
+    if (touching <= 64)
+      list << "    #" << i << " z=" << hex(f.z, zd) << " " << rgba(f.color) << " prim=" << f.prim
+           << " accepted at cycle " << acc[i] << "\n";
+  }
+  o << "  fragments of this pass at (" << x << "," << y << "): " << touching << "\n" << list.str();
+  if (touching > 64) o << "    ... " << (touching - 64) << " more\n";
+
+  // Waveform: replay the pixel's tile with tracing on only around the touching fragments.
+  const int x0 = x / kRtlTileW * kRtlTileW, y0 = y / kRtlTileH * kRtlTileH;
+  const TileRun* run = nullptr;
+  for (const TileRun& t : rtl_.tile_runs())
+    if (t.x0 == x0 && t.y0 == y0) run = &t;
+  std::string fst;
+  if (run && !opt_.mismatch_fst.empty()) {
+    uint64_t from, to;
+    if (touching) {
+      from = lo > run->load_begin + opt_.window ? lo - opt_.window : run->load_begin;
+      to = std::min(hi + opt_.window, run->store_end);
+    } else {  // nothing streamed here: the tile load or store is suspect
+      from = run->load_begin;
+      to = run->store_end;
+    }
+    try {
+      const Framebuffer replayed = rtl_.replay_tile(before_, x0, y0, opt_.mismatch_fst, from, to);
+      fst = opt_.mismatch_fst;
+      const bool same = replayed.color_at(x, y) == rf.color_at(x, y) &&
+                        replayed.depth_at(x, y) == rf.depth_at(x, y);
+      o << "  waveform: " << fst << " (cycles " << from << ".." << to << " of tile (" << x0 << ","
+        << y0 << "), time = 2*cycle+1 at the rising edge; replay "
+        << (same ? "reproduced the mismatch" : "did NOT reproduce the RTL value") << ")\n";
+    } catch (const std::exception& e) {
+      o << "  waveform: not written: " << e.what() << "\n";
+    }
+  } else if (!run) {
+    o << "  waveform: the pass did not stream the tile at (" << x0 << "," << y0
+      << "): the pixel changed without a fragment\n";
+  }
+  throw MismatchError(o.str(), x, y, fst);
+}
+
+void Cosim::report_counters(const PassStats& r, const PassStats& g) {
+  std::ostringstream o;
+  o << "MISMATCH in " << pass_label() << ": counters differ (frame bits agree)\n";
+  auto row = [&](const char* name, uint64_t a, uint64_t b) {
+    if (a != b) o << "  counter " << name << " rtl=" << a << " golden=" << b << "\n";
+  };
+  row("fragments_in", r.fragments_in, g.fragments_in);
+  row("fragments_passed", r.fragments_passed, g.fragments_passed);
+  row("depth_reads", r.depth_reads, g.depth_reads);
+  row("depth_writes", r.depth_writes, g.depth_writes);
+  row("color_reads", r.color_reads, g.color_reads);
+  row("color_writes", r.color_writes, g.color_writes);
+  o << "  state: " << state_text(state_) << "\n";
+  throw MismatchError(o.str(), -1, -1, "");
+}
+
+std::string Cosim::nothing_checked_warning() const {
+  if (pixels_compared_ == 0 || fragments_ == 0)
+    return "warning: cosim checked nothing (" + std::to_string(pixels_compared_) +
+           " pixels compared, " + std::to_string(fragments_) + " fragments)";
+  return "";
+}
+
+}  // namespace zb

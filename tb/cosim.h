@@ -1,0 +1,75 @@
+// Co-simulation: the golden model and the RTL in lockstep on the same calls; after every pass
+// every colour and depth bit of the frame is compared, and the pass counters too. The first
+// mismatch stops the run with a report naming both sides and an FST of the cycles around it.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "backend.h"
+#include "rop.h"
+#include "rtl_rop.h"
+
+namespace zb {
+
+struct CosimOptions {
+  RtlOptions rtl;
+  std::string mismatch_fst = "out/mismatch.fst";  // waveform around the first mismatch
+  uint64_t window = 24;                            // cycles before and after the touching fragments
+};
+
+// Thrown at the first mismatch; what() is the whole multi-line report.
+class MismatchError : public std::runtime_error {
+ public:
+  MismatchError(const std::string& report, int x, int y, std::string fst)
+      : std::runtime_error(report), x_(x), y_(y), fst_(std::move(fst)) {}
+  int x() const { return x_; }  // -1 when a counter, not a pixel, differed
+  int y() const { return y_; }
+  const std::string& fst_path() const { return fst_; }
+
+ private:
+  int x_, y_;
+  std::string fst_;
+};
+
+class Cosim final : public Backend {
+ public:
+  explicit Cosim(CosimOptions options = {});
+  const char* name() const override { return "both"; }
+  void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color) override;
+  void begin_pass(const RopState& state) override;
+  using Backend::draw;
+  void draw(const Fragment* fragments, size_t count) override;
+  // Compares the frames and counters; returns the RTL's stats (with cycles).
+  PassStats end_pass() override;
+  const Framebuffer& framebuffer() const override { return rtl_.framebuffer(); }
+
+  void label_pass(const std::string& name) override { next_pass_name_ = name; }
+
+  const GoldenRop& golden() const { return golden_; }
+  const RtlRop& rtl() const { return rtl_; }
+  uint64_t pixels_compared() const { return pixels_compared_; }
+  uint64_t fragments() const { return fragments_; }
+  uint64_t mismatches() const { return mismatches_; }  // mismatching pixels (only the failing pass)
+  uint64_t passes() const { return passes_; }
+  // A warning when this run compared nothing, else empty.
+  std::string nothing_checked_warning() const;
+
+ private:
+  [[noreturn]] void report_pixel(int x, int y, size_t differing);
+  [[noreturn]] void report_counters(const PassStats& rtl, const PassStats& golden);
+  std::string pass_label() const;
+
+  CosimOptions opt_;
+  GoldenRop golden_;
+  RtlRop rtl_;
+  Framebuffer before_;  // the frame at the start of the pass (both sides agreed then)
+  RopState state_;
+  std::string next_pass_name_, pass_name_;
+  uint64_t pass_in_frame_ = 0, frame_no_ = 0;
+  uint64_t pixels_compared_ = 0, fragments_ = 0, mismatches_ = 0, passes_ = 0;
+};
+
+}  // namespace zb
