@@ -91,6 +91,7 @@ void run_plan(const RenderOptions& o, const RasterizedScene& rs, const PassPlan&
     backend = std::make_unique<Cosim>(cosim);
   }
   run.rtl = o.backend != "golden";
+  run.compared = o.backend == "both";
   run.passes = plan.passes.size();
   run.total = PassStats{};
   try {

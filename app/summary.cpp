@@ -37,7 +37,9 @@ std::string summary_csv(const std::vector<MethodRun>& runs, int depth_bits) {
       cost = fmt::format("{},{},{},{},{},{}", r.passes, s.fragments_in,
                          s.color_reads + s.depth_reads, s.color_writes + s.depth_writes,
                          bytes_read(s, depth_bits), bytes_written(s, depth_bits));
-      if (r.rtl) rtl = fmt::format("{},{},{}", s.cycles, r.tile_io_cycles, r.mismatches);
+      if (r.rtl)
+        rtl = fmt::format("{},{},{}", s.cycles, r.tile_io_cycles,
+                          r.compared ? std::to_string(r.mismatches) : "");
     }
     csv += fmt::format("{},{},{:.4f},{},{},{:.6f},{:.6f},{:.1f},{}\n", r.method, cost,
                        r.error.rmse, psnr_text(r.error.psnr), r.error.max_abs,
@@ -61,7 +63,8 @@ void print_table(const std::vector<MethodRun>& runs) {
     fmt::print(" {:>8.3f} {:>8} {:>5} {:>7.2f}%", r.error.rmse, psnr_text(r.error.psnr),
                r.error.max_abs, 100.0 * r.error.share_over_2);
     if (rtl && r.total && r.rtl)
-      fmt::print(" {:>10} {:>10}\n", r.total->cycles, r.mismatches);
+      fmt::print(" {:>10} {:>10}\n", r.total->cycles,
+                 r.compared ? std::to_string(r.mismatches) : "-");
     else
       fmt::print(rtl ? " {:>10} {:>10}\n" : "\n", "-", "-");
   }
@@ -95,8 +98,8 @@ std::string stats_json(const std::vector<MethodRun>& runs, int depth_bits,
       m["bytes_read"] = bytes_read(s, depth_bits);
       m["bytes_written"] = bytes_written(s, depth_bits);
       if (r.rtl) {
-        m["rtl"] = {{"cycles", s.cycles}, {"tile_io_cycles", r.tile_io_cycles},
-                    {"mismatches", r.mismatches}};
+        m["rtl"] = {{"cycles", s.cycles}, {"tile_io_cycles", r.tile_io_cycles}};
+        if (r.compared) m["rtl"]["mismatches"] = r.mismatches;
       }
     }
     j["methods"].push_back(m);

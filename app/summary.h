@@ -20,7 +20,8 @@ struct MethodRun {
   double host_ms = 0;
   bool rtl = false;                // ran on the RTL: cycles are meaningful
   uint64_t tile_io_cycles = 0;     // RTL cycles loading and storing tiles
-  uint64_t mismatches = 0;         // pixels where RTL and golden model differ
+  bool compared = false;           // RTL and golden model compared (backend both)
+  uint64_t mismatches = 0;         // pixels where they differ
 };
 
 std::string summary_csv(const std::vector<MethodRun>& runs, int depth_bits);

@@ -58,6 +58,14 @@ else
   bad "render all"
 fi
 
+# Both backends, compared bit for bit, with back-pressure.
+if "$zblend" render -q --scene sphere-torus --method all --width 48 --height 36 --backend both \
+     --backpressure 0.25 --out-dir "$tmp/both"; then
+  grep -qE '^three-pass,3,.*,[0-9]+,[0-9]+,0$' "$tmp/both/summary.csv" && ok || bad "both: mismatches column"
+else
+  bad "render --backend both"
+fi
+
 # A trace file.
 if "$zblend" trace --scene quads --method unsorted --width 32 --height 24 --out "$tmp/out/q.zbt" >/dev/null &&
    [[ $(head -c 7 "$tmp/out/q.zbt") == ZBTRACE ]]; then ok; else bad "trace write"; fi
@@ -75,6 +83,10 @@ expect_error "not png" "must end in .png" render --out "$tmp/out/a.jpg"
 expect_error "missing dir" "does not exist" render --out "$tmp/out/no/such/a.png"
 expect_error "several methods one file" "--out-dir" render --method opaque,three-pass --out "$tmp/out/a.png"
 expect_error "unknown subcommand" "" frobnicate
+expect_error "unknown backend" "unknown backend 'gpu'.*golden, rtl, both" render --backend gpu --out "$tmp/out/a.png"
+expect_error "rtl depth bits" "--depth-bits: the RTL model is built with 24" render --backend rtl --depth-bits 16 --out "$tmp/out/a.png"
+expect_error "waves need rtl" "--waves: needs --backend rtl" render --waves "$tmp/out/w.fst" --out "$tmp/out/a.png"
+expect_error "backpressure range" "--backpressure: 1.5 is out of range" render --backend rtl --backpressure 1.5 --out "$tmp/out/a.png"
 expect_error "plan of reference" "no pass plan" plan --method reference
 expect_error "trace of reference" "no pass plan" trace --method reference --out "$tmp/out/t.zbt"
 expect_error "trace extension" "must end in .zbt" trace --out "$tmp/out/t.bin"
