@@ -6,7 +6,7 @@ ZBLEND     := $(BUILD)/zblend
 RUN_SIZE   ?= --width 640 --height 480
 
 .DEFAULT_GOAL := build
-.PHONY: help setup build run test test-asan bench lint clean
+.PHONY: help setup build run test test-asan bench lint soak waves coverage clean
 
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 12
@@ -21,8 +21,8 @@ build: setup $(BUILD)/CMakeCache.txt ## Build the zblend command, tests and benc
 	@cmake --build $(BUILD) -j $(JOBS)
 	@echo "zblend: $(ZBLEND)"
 
-run: build ## Render the default scene `cad` with every method: out/run/*.png, summary.csv
-	@$(ZBLEND) render --scene cad --method all $(RUN_SIZE) --out-dir out/run \
+run: build ## Render `cad` with every method on golden model and RTL, compared: out/run/
+	@$(ZBLEND) render --scene cad --method all $(RUN_SIZE) --backend both --out-dir out/run \
 	  --stats out/run/stats.json
 	@echo "images and table: out/run/"
 
@@ -33,11 +33,53 @@ test: build ## Run every test (CTest), then again under ASan and UBSan
 test-asan: setup ## The tests built with AddressSanitizer and UndefinedBehaviorSanitizer
 	@[ -f $(ASAN_BUILD)/CMakeCache.txt ] || cmake -S . -B $(ASAN_BUILD) \
 	  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DZBLEND_SANITIZE=ON
-	@cmake --build $(ASAN_BUILD) -j $(JOBS) --target zblend_tests zblend
+	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS)
 
-bench: build ## Benchmarks: golden datapath fragments/s, cad at 1024x768 with three-pass
+bench: build ## Benchmarks: golden and RTL fragments/s, RTL fragments/clock, cad RTL/golden time
 	$(BUILD)/zblend_bench --benchmark_min_time=1
+	$(BUILD)/zblend_bench_rtl --benchmark_min_time=1
+
+SOAK_FRAGMENTS ?= 50000000
+
+soak: build ## Long RTL regression: 10^8 fragments of random and hazard streams
+	$(BUILD)/zblend_tb --suite random --seed 11 --fragments $(SOAK_FRAGMENTS) --backpressure 0.2
+	$(BUILD)/zblend_tb --suite hazard --seed 12 --fragments $(SOAK_FRAGMENTS)
+
+waves: build ## Render `cad` on the RTL with a waveform: out/waves/cad.fst
+	@mkdir -p out/waves
+	$(ZBLEND) render --scene cad --method three-pass --width 128 --height 96 --backend rtl \
+	  --out out/waves/cad.png --waves out/waves/cad.fst
+	@echo "open it: gtkwave out/waves/cad.fst  (or surfer out/waves/cad.fst)"
+
+COV_BUILD ?= build-cov
+COV_DIR   := out/coverage
+COV_TB    := $(COV_BUILD)/zblend_tb --coverage-out
+
+coverage: setup ## RTL line and toggle coverage of the suites, annotated: out/coverage/
+	@[ -f $(COV_BUILD)/CMakeCache.txt ] || cmake -S . -B $(COV_BUILD) \
+	  -DCMAKE_BUILD_TYPE=Release -DZBLEND_RTL_COVERAGE=ON
+	@cmake --build $(COV_BUILD) -j $(JOBS) --target zblend_tb
+	@rm -rf $(COV_DIR) && mkdir -p $(COV_DIR)/runs
+	$(COV_TB) $(COV_DIR)/runs/scenes.dat --suite scenes --seed 1
+	$(COV_TB) $(COV_DIR)/runs/scenes_bp.dat --suite scenes --seed 2 --backpressure 0.3
+	$(COV_TB) $(COV_DIR)/runs/random.dat --suite random --seed 1 --fragments 100000
+	$(COV_TB) $(COV_DIR)/runs/random_bp.dat --suite random --seed 1000 --fragments 50000 \
+	  --backpressure 0.3
+	$(COV_TB) $(COV_DIR)/runs/hazard.dat --suite hazard --seed 1 --fragments 100000
+	$(COV_TB) $(COV_DIR)/runs/hazard_bp.dat --suite hazard --seed 7 --fragments 50000 \
+	  --backpressure 0.3
+	$(COV_TB) $(COV_DIR)/runs/blend.dat --suite blend --fragments 400000
+	@verilator_coverage --write $(COV_DIR)/merged.dat $(COV_DIR)/runs/*.dat
+	@verilator_coverage --annotate $(COV_DIR)/annotated $(COV_DIR)/merged.dat \
+	  | sed 's/^/verilator_coverage: /'
+	@# Per kind of point (line includes branch points), from the merged counts.
+	@tr '\001\002' '|=' < $(COV_DIR)/merged.dat | awk '/^C / { \
+	    k = match($$0, /page=v_[a-z]+/) ? substr($$0, RSTART + 7, RLENGTH - 7) : "other"; \
+	    if (k == "branch") k = "line"; n[k]++; if ($$NF > 0) hit[k]++ } \
+	  END { for (k in n) printf "coverage: %-6s %5d of %5d points covered (%.1f%%)\n", \
+	    k "s", hit[k], n[k], 100 * hit[k] / n[k] }' | sort
+	@echo "open: $(COV_DIR)/annotated/zb_rop.sv (and the other .sv there); lines marked %00 never ran"
 
 RTL       := $(sort $(wildcard rtl/*.sv))
 LINT_ARGS := --lint-only -Wall rtl/lint_waivers.vlt $(RTL) --top-module zb_rop
@@ -49,4 +91,4 @@ lint: setup ## Verilator lint of the RTL (-Wall), for several parameter sets
 	@echo "lint: clean"
 
 clean: ## Remove build trees and outputs
-	rm -rf $(BUILD) $(ASAN_BUILD) out
+	rm -rf $(BUILD) $(ASAN_BUILD) $(COV_BUILD) out

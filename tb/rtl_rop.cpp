@@ -7,6 +7,12 @@
 
 #include <verilated.h>
 #include <verilated_fst_c.h>
+#if defined(VM_COVERAGE) && VM_COVERAGE
+#include <cstdio>
+#include <verilated_cov.h>
+
+#include "coverage.h"
+#endif
 
 #ifdef ZB_TB_BUG
 #include "Vzb_rop_bug.h"
@@ -67,10 +73,12 @@ struct Sim {
   std::unique_ptr<VerilatedContext> ctx;
   std::unique_ptr<VModel> top;
   std::unique_ptr<VerilatedFstC> fst;
+  CoverageTotals* coverage = nullptr;
   uint64_t cycle = 0;
   uint64_t dump_from = 0, dump_to = std::numeric_limits<uint64_t>::max();
 
-  explicit Sim(const std::string& fst_path) : ctx(std::make_unique<VerilatedContext>()) {
+  explicit Sim(const std::string& fst_path, CoverageTotals* totals = nullptr)
+      : ctx(std::make_unique<VerilatedContext>()), coverage(totals) {
     ctx->commandArgs(0, static_cast<const char**>(nullptr));
     ctx->fatalOnError(true);
     if (!fst_path.empty()) ctx->traceEverOn(true);  // before the model exists
@@ -97,12 +105,26 @@ struct Sim {
     // this model's, or destroying a model after another context came and went deadlocks.
     Verilated::threadContextp(ctx.get());
     top->final();
+    add_coverage();
     if (fst) fst->close();
     fst.reset();
     top.reset();
   }
   Sim(const Sim&) = delete;
   Sim& operator=(const Sim&) = delete;
+
+  // The context's coverage points die with the model: their counts go to the run's totals now.
+  void add_coverage() noexcept {
+#if defined(VM_COVERAGE) && VM_COVERAGE
+    if (!coverage) return;
+    try {
+      ctx->coveragep()->write(coverage->scratch_path().c_str());
+      coverage->add_file(coverage->scratch_path());
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "zblend_tb: %s\n", e.what());
+    }
+#endif
+  }
 
   void idle_inputs() {
     top->state_we_i = 0;
@@ -144,7 +166,7 @@ struct RtlRop::Impl {
   bool in_pass = false;
   uint64_t io_cycles = 0, stalls = 0;
 
-  explicit Impl(RtlOptions o) : opt(std::move(o)), sim(opt.trace_path) {}
+  explicit Impl(RtlOptions o) : opt(std::move(o)), sim(opt.trace_path, opt.coverage) {}
 
   int tiles_x() const { return (fb.width + kRtlTileW - 1) / kRtlTileW; }
 

@@ -12,6 +12,8 @@
 
 namespace zb {
 
+class CoverageTotals;
+
 // Mirrors of zb_rop's parameters; tb/rtl_rop.cpp static_asserts them against the model.
 constexpr int kRtlTileW = 64;
 constexpr int kRtlTileH = 64;
@@ -21,6 +23,9 @@ struct RtlOptions {
   double backpressure = 0;  // probability per cycle of stall_i, and (independently) of a valid gap
   uint64_t seed = 1;        // back-pressure pattern; deterministic
   std::string trace_path;   // FST of the whole run when set
+  // Coverage build only (ZBLEND_RTL_COVERAGE): the model's line and toggle counts are added
+  // here when it closes. Not owned; ignored in other builds.
+  CoverageTotals* coverage = nullptr;
 };
 
 // The cycles of one tile's run in a pass, in cycles since reset.

@@ -1,0 +1,378 @@
+// The named suites of zblend_tb; see suites.h.
+#include "suites.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+
+#include "fixed.h"
+#include "passes.h"
+#include "render.h"
+#include "scenes.h"
+
+namespace zb::tb {
+
+CosimOptions cosim_options(const Config& c, uint64_t seed) {
+  CosimOptions o;
+  o.rtl.backpressure = c.backpressure;
+  o.rtl.seed = seed;
+  o.rtl.trace_path = c.trace;
+  o.rtl.coverage = c.coverage;
+  o.mismatch_fst = c.mismatch_fst;
+  return o;
+}
+
+namespace {
+
+// Runs one iteration's body on a fresh Cosim; folds its counts into `t`. Returns false on a
+// mismatch (the report is printed) so the suite stops.
+bool run_iteration(const char* suite, const Config& c, uint64_t seed, Tally& t,
+                   const std::function<void(Cosim&)>& body) {
+  Cosim cosim(cosim_options(c, seed));
+  bool ok = true;
+  try {
+    body(cosim);
+  } catch (const MismatchError& e) {
+    std::printf("%s", e.what());
+    std::printf("FAIL suite %s iteration seed %llu: replay with --suite %s --seed %llu "
+                "--iterations 1%s\n",
+                suite, (unsigned long long)seed, suite, (unsigned long long)seed,
+                c.backpressure > 0 ? (" --backpressure " + std::to_string(c.backpressure)).c_str()
+                                   : "");
+    t.failed = true;
+    ok = false;
+    if (cosim.mismatches() == 0) ++t.mismatches;  // a counter mismatch
+  }
+  ++t.iterations;
+  t.fragments += cosim.fragments();
+  t.pixels += cosim.pixels_compared();
+  t.mismatches += cosim.mismatches();
+  t.io_cycles += cosim.rtl().tile_io_cycles();
+  t.stream_cycles += cosim.rtl().total_cycles() - cosim.rtl().tile_io_cycles();
+  if (c.verbose) std::printf("  %s seed %llu: %llu fragments\n", suite, (unsigned long long)seed,
+                             (unsigned long long)cosim.fragments());
+  return ok;
+}
+
+}  // namespace
+
+void draw_pass(Cosim& cs, const std::string& name, const RopState& st,
+               const std::vector<Fragment>& f) {
+  cs.label_pass(name);
+  cs.begin_pass(st);
+  cs.draw(f);
+  cs.end_pass();
+}
+
+// scenes: every built-in scene with every pass plan, 96x72.
+Tally suite_scenes(const Config& c) {
+  Tally t;
+  const int iters = c.iterations ? c.iterations : 1;
+  std::vector<std::pair<std::string, RasterizedScene>> scenes;
+  for (const SceneInfo& info : builtin_scenes())
+    scenes.emplace_back(info.name, rasterize_scene(*builtin_scene(info.name), Viewport{96, 72, 24}));
+  for (int it = 0; it < iters; ++it) {
+    const uint64_t seed = c.seed + it;
+    for (const auto& [sname, rs] : scenes)
+      for (const PassPlan& plan : pass_plans()) {
+        const bool ok = run_iteration("scenes", c, seed, t, [&](Cosim& cs) {
+          cs.begin_frame(rs.viewport.width, rs.viewport.height, rs.viewport.depth_bits,
+                         rs.background);
+          for (const PassState& p : plan.passes)
+            draw_pass(cs, sname + "/" + plan.name + "/" + p.name, p.rop, pass_fragments(rs, p));
+        });
+        if (!ok) return t;
+      }
+  }
+  return t;
+}
+
+namespace {
+
+RopState random_state(Rng& r) {
+  RopState s;
+  s.depth_test = !r.chance(0.15);
+  s.depth_func = DepthFunc(r.below(8));
+  s.depth_write = r.chance(0.6);
+  s.blend = BlendMode(r.below(3));
+  const uint32_t m = r.below(4);
+  s.color_mask = m == 0 ? uint8_t(r.below(16)) : uint8_t(kMaskRgba);
+  return s;
+}
+
+uint8_t pick_alpha(Rng& r) {
+  static const uint8_t special[] = {0, 1, 254, 255};
+  return r.chance(0.5) ? special[r.below(4)] : uint8_t(r.below(256));
+}
+
+uint8_t pick_channel(Rng& r) {
+  return r.chance(0.2) ? (r.chance(0.5) ? 0 : 255) : uint8_t(r.below(256));
+}
+
+// A random stream of `n` fragments on a w x h frame; `hot` > 0 makes runs on 1..hot pixels.
+std::vector<Fragment> random_stream(Rng& r, int w, int h, size_t n, int hot, double hot_share,
+                                    std::vector<uint32_t>& zpool) {
+  const uint32_t zmax = depth_max(24);
+  std::vector<Fragment> out;
+  out.reserve(n);
+  std::vector<std::pair<uint16_t, uint16_t>> spots;
+  size_t run_left = 0;
+  while (out.size() < n) {
+    Fragment f;
+    if (hot > 0 && run_left == 0 && r.chance(hot_share)) {
+      spots.clear();
+      const int k = 1 + int(r.below(uint32_t(hot)));
+      const int bx = int(r.below(uint32_t(w))), by = int(r.below(uint32_t(h)));
+      for (int i = 0; i < k; ++i)  // neighbours, so the hot pixels share a tile mostly
+        spots.emplace_back(uint16_t(std::min(w - 1, bx + int(r.below(3)))),
+                           uint16_t(std::min(h - 1, by + int(r.below(2)))));
+      run_left = 8 + r.below(120);
+    }
+    if (run_left) {
+      --run_left;
+      const auto& s = spots[r.below(uint32_t(spots.size()))];
+      f.x = s.first;
+      f.y = s.second;
+    } else {
+      f.x = uint16_t(r.below(uint32_t(w)));
+      f.y = uint16_t(r.below(uint32_t(h)));
+    }
+    switch (r.below(8)) {
+      case 0: f.z = 0; break;
+      case 1: f.z = zmax; break;
+      case 2: f.z = zmax - 1; break;
+      case 3: case 4: f.z = zpool[r.below(uint32_t(zpool.size()))]; break;  // equal depths
+      default: f.z = r.below(zmax + 1u); break;
+    }
+    if (r.chance(0.05)) zpool[r.below(uint32_t(zpool.size()))] = f.z;
+    f.color = Rgba8{pick_channel(r), pick_channel(r), pick_channel(r), pick_alpha(r)};
+    f.front = r.chance(0.5);
+    f.prim = uint32_t(out.size() / 16);
+    out.push_back(f);
+  }
+  return out;
+}
+
+}  // namespace
+
+// random: constrained-random states and streams, several passes per small frame.
+Tally suite_random(const Config& c) {
+  Tally t;
+  const uint64_t total = c.fragments ? c.fragments : 300000;
+  const int iters = c.iterations ? c.iterations : std::max<int>(1, int(total / 6000));
+  for (int it = 0; it < iters; ++it) {
+    const uint64_t seed = c.seed + it;
+    const bool ok = run_iteration("random", c, seed, t, [&](Cosim& cs) {
+      Rng r(seed);
+      // Mostly one tile; sometimes straddling tile edges.
+      const int w = r.chance(0.25) ? 60 + int(r.below(90)) : 1 + int(r.below(48));
+      const int h = r.chance(0.25) ? 60 + int(r.below(40)) : 1 + int(r.below(40));
+      const Rgba8 clear{uint8_t(r.below(256)), uint8_t(r.below(256)), uint8_t(r.below(256)),
+                        pick_alpha(r)};
+      cs.begin_frame(w, h, 24, clear);
+      std::vector<uint32_t> zpool(8);
+      for (uint32_t& z : zpool) z = r.chance(0.3) ? depth_max(24) : r.below(depth_max(24));
+      const int passes = 2 + int(r.below(4));
+      const size_t per_pass = std::max<size_t>(1, 6000 / passes);
+      for (int p = 0; p < passes; ++p) {
+        const RopState st = random_state(r);
+        draw_pass(cs, "random-" + std::to_string(p + 1), st,
+                  random_stream(r, w, h, per_pass, 4, 0.3, zpool));
+      }
+    });
+    if (!ok) break;
+  }
+  return t;
+}
+
+HazardStimulus::HazardStimulus(uint64_t seed) : rng_(seed), zpool_(4) {
+  for (uint32_t& z : zpool_) z = rng_.below(depth_max(24));
+}
+
+RopState HazardStimulus::next_state() {
+  RopState st = random_state(rng_);
+  // Mostly states where back-to-back fragments change the pixel: the RMW path.
+  if (rng_.chance(0.7)) {
+    static const DepthFunc busy[] = {DepthFunc::kAlways, DepthFunc::kLequal, DepthFunc::kGequal,
+                                     DepthFunc::kNotequal};
+    st.depth_func = busy[rng_.below(4)];
+    st.blend = rng_.chance(0.5) ? BlendMode::kAlpha : BlendMode::kAdditive;
+  }
+  return st;
+}
+
+std::vector<Fragment> HazardStimulus::next_fragments(size_t count) {
+  return random_stream(rng_, kRtlTileW, kRtlTileH, count, 4, 0.9, zpool_);
+}
+
+// hazard: long runs on 1-4 pixels, mixed with random ones, one tile; fragments per clock.
+Tally suite_hazard(const Config& c) {
+  Tally t;
+  const uint64_t total = c.fragments ? c.fragments : 400000;
+  const int iters = c.iterations ? c.iterations : 2;
+  const size_t per_iter = std::max<uint64_t>(1, total / iters);
+  uint64_t frags = 0, cycles = 0;
+  double rtl_sec = 0;
+  for (int it = 0; it < iters; ++it) {
+    const uint64_t seed = c.seed + it;
+    const bool ok = run_iteration("hazard", c, seed, t, [&](Cosim& cs) {
+      HazardStimulus stim(seed);
+      cs.begin_frame(kRtlTileW, kRtlTileH, 24, Rgba8{10, 20, 30, 40});
+      const int passes = 4;
+      for (int p = 0; p < passes; ++p) {
+        const RopState st = stim.next_state();
+        cs.label_pass("hazard-" + std::to_string(p + 1));
+        cs.begin_pass(st);
+        cs.draw(stim.next_fragments(per_iter / passes));
+        const auto t0 = std::chrono::steady_clock::now();
+        const PassStats s = cs.end_pass();  // the RTL simulation (the golden ran in draw)
+        rtl_sec += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        frags += s.fragments_in;
+        cycles += s.cycles;
+      }
+    });
+    if (!ok) break;
+  }
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "fragments per clock %.4f (%llu fragments / %llu streaming cycles); RTL "
+                "simulation %.3g fragments/s",
+                cycles ? double(frags) / double(cycles) : 0.0, (unsigned long long)frags,
+                (unsigned long long)cycles, rtl_sec > 0 ? double(frags) / rtl_sec : 0.0);
+  t.note = buf;
+  return t;
+}
+
+namespace {
+
+constexpr int kBlendW = kRtlTileW, kBlendH = kRtlTileH, kBlendPix = kBlendW * kBlendH;
+
+Fragment at_pixel(int i, Rgba8 color) {
+  Fragment f;
+  f.x = uint16_t(i % kBlendW);
+  f.y = uint16_t(i / kBlendW);
+  f.color = color;
+  return f;
+}
+
+// R, G, B: the 2^24 (s, a, d) of `mode`, all of them, or `count` < kBlendIndices indices spread
+// over the whole space. Each pass starts a fresh frame cleared to 0. Per pixel a fragment with
+// alpha 255 first loads the destination: m(x, 255) = x and m(0, 0) = 0, so both modes write the
+// fragment's colour ("alpha: min(255, m(s, a) + m(d, 255 - a))", "additive: min(255, d +
+// m(s, a))"); then the fragment under test blends onto it. Each pixel carries three triples: d
+// in [0, 86) on R, d + 86 on G, d + 172 on B (clamped to 255). The destination alpha is 255
+// here; blend_alpha_channel covers the rest.
+constexpr uint64_t kBlendIndices = 256ull * 256 * 86;  // (a, s, d): d fastest, then s, then a
+// A sample steps through the indices by a stride coprime to their count (2^17 * 43): distinct,
+// and over every a.
+constexpr uint64_t kSampleStride = 2654435761ull % kBlendIndices;
+static_assert(kSampleStride % 2 == 1 && kSampleStride % 43 != 0, "stride must be coprime");
+
+void blend_rgb(Cosim& cs, BlendMode mode, const char* tag, uint64_t count) {
+  RopState st;
+  st.depth_test = false;
+  st.blend = mode;
+  const uint64_t stride = count >= kBlendIndices ? 1 : kSampleStride;
+  count = std::min(count, kBlendIndices);
+  std::vector<Fragment> f;
+  f.reserve(2 * kBlendPix);
+  uint64_t k = 0;
+  int pass = 0;
+  while (k < count) {
+    cs.begin_frame(kBlendW, kBlendH, 24, Rgba8{0, 0, 0, 0});
+    f.clear();
+    // Groups of 8 pixels: 8 destinations, then the 8 blends onto them, so the blends follow
+    // their pixel's write by 8 cycles (the hazard suite covers back-to-back).
+    for (int base = 0; base < kBlendPix && k < count; base += 8) {
+      const int n = int(std::min<uint64_t>(8, std::min<uint64_t>(kBlendPix - base, count - k)));
+      for (int i = 0; i < n; ++i) {
+        const uint8_t d = uint8_t((k + i) * stride % kBlendIndices % 86);
+        f.push_back(at_pixel(base + i, Rgba8{d, uint8_t(std::min(255, d + 86)),
+                                             uint8_t(std::min(255, d + 172)), 255}));
+      }
+      for (int i = 0; i < n; ++i) {
+        const uint64_t v = (k + i) * stride % kBlendIndices;
+        const uint8_t s = uint8_t(v / 86 % 256), a = uint8_t(v / (86 * 256));
+        f.push_back(at_pixel(base + i, Rgba8{s, uint8_t(255 - s), uint8_t(s ^ 0x5a), a}));
+      }
+      k += uint64_t(n);
+    }
+    draw_pass(cs, std::string("blend-") + tag + "-rgb-" + std::to_string(++pass), st, f);
+  }
+}
+
+// A: all 2^16 (a, d) of `mode` on the alpha channel, where the source is the alpha itself. A
+// replace pass loads the destinations (every channel, A included), then the blend pass. The
+// R, G and B channels see further (s, a, d) triples on the way.
+void blend_alpha_channel(Cosim& cs, BlendMode mode, const char* tag) {
+  RopState load;
+  load.depth_test = false;
+  load.blend = BlendMode::kReplace;
+  RopState st = load;
+  st.blend = mode;
+  std::vector<Fragment> dst, src;
+  constexpr uint32_t kTotal = 256u * 256;  // (a, d): d fastest
+  for (uint32_t first = 0; first < kTotal; first += kBlendPix) {
+    cs.begin_frame(kBlendW, kBlendH, 24, Rgba8{0, 0, 0, 0});
+    dst.clear();
+    src.clear();
+    for (uint32_t v = first; v < std::min<uint32_t>(kTotal, first + kBlendPix); ++v) {
+      const uint8_t a = uint8_t(v >> 8), d = uint8_t(v);
+      const int i = int(v - first);
+      dst.push_back(at_pixel(i, Rgba8{uint8_t(v * 37u), uint8_t(v >> 3), uint8_t(~v), d}));
+      src.push_back(
+          at_pixel(i, Rgba8{uint8_t(v * 11u + 3u), uint8_t(v >> 5), uint8_t(v * 101u), a}));
+    }
+    const std::string n = std::to_string(first / kBlendPix + 1);
+    draw_pass(cs, std::string("blend-") + tag + "-a-load-" + n, load, dst);
+    draw_pass(cs, std::string("blend-") + tag + "-a-" + n, st, src);
+  }
+}
+
+}  // namespace
+
+// blend: the blend unit exhaustively, through the whole pipeline, for both modes that read the
+// destination: all 2^24 (s, a, d) on R, G, B and all 2^16 (a, d) on A, for alpha and additive.
+// --fragments N samples the R, G, B part instead (about N fragments in all; A stays whole).
+Tally suite_blend(const Config& c) {
+  Tally t;
+  const int iters = c.iterations ? c.iterations : 1;
+  const uint64_t count = c.fragments ? std::max<uint64_t>(1, c.fragments / 4) : kBlendIndices;
+  for (int it = 0; it < iters; ++it) {
+    const bool ok = run_iteration("blend", c, c.seed + it, t, [&](Cosim& cs) {
+      blend_rgb(cs, BlendMode::kAlpha, "alpha", count);
+      blend_alpha_channel(cs, BlendMode::kAlpha, "alpha");
+      blend_rgb(cs, BlendMode::kAdditive, "additive", count);
+      blend_alpha_channel(cs, BlendMode::kAdditive, "additive");
+    });
+    if (!ok) break;
+  }
+  t.note = count >= kBlendIndices
+               ? "per iteration and per mode (alpha, additive): all 2^24 (s, a, d) on R/G/B, "
+                 "all 2^16 (a, d) on A"
+               : "per iteration and per mode (alpha, additive): a sample of " +
+                     std::to_string(3 * count) + " (s, a, d) on R/G/B, all 2^16 (a, d) on A";
+  return t;
+}
+
+const std::vector<Suite>& suites() {
+  static const std::vector<Suite> kSuites = {
+      {"scenes", "every built-in scene x every pass plan at 96x72", suite_scenes},
+      {"random", "constrained-random states and streams, small frames, several passes",
+       suite_random},
+      {"hazard", "runs of fragments on 1-4 pixels mixed with random ones; fragments per clock",
+       suite_hazard},
+      {"blend", "alpha and additive blend over all 2^24 (s, a, d) and 2^16 (a, d) on A",
+       suite_blend},
+  };
+  return kSuites;
+}
+
+const Suite* find_suite(const std::string& name) {
+  for (const Suite& s : suites())
+    if (name == s.name) return &s;
+  return nullptr;
+}
+
+}  // namespace zb::tb
