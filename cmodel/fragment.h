@@ -15,7 +15,9 @@ struct Fragment {
   uint16_t y = 0;      // pixel row, 0 = top
   uint32_t z = 0;      // window depth, unorm of the frame's depth width; 0 = near
   Rgba8 color;         // flat colour of the primitive, straight alpha
-  bool front = true;   // facing of the primitive (winding), for culling and facing methods
+  bool front = true;   // facing of the primitive from its winding: culling
+  bool facing = true;  // facing decided per vertex in the vertex stage, interpolated (raster.md)
+  uint8_t coverage = 0;  // covered samples of the pixel, coverage-aa (raster.md "Coverage")
   uint32_t prim = 0;   // sideband: source primitive index, for debugging; not seen by the datapath
 };
 
