@@ -118,8 +118,11 @@ int main(int argc, char** argv) {
 #endif
   try {
     app.parse(int(cargv.size()), cargv.data());
-  } catch (const CLI::ParseError& e) {
+  } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "zblend_tb: error: %s (see --help)\n", e.what());
+    return 2;
   }
 
   if (list) {
