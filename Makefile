@@ -86,8 +86,10 @@ LINT_ARGS := --lint-only -Wall rtl/lint_waivers.vlt $(RTL) --top-module zb_rop
 
 lint: setup ## Verilator lint of the RTL (-Wall), for several parameter sets
 	verilator $(LINT_ARGS)
-	verilator $(LINT_ARGS) -GDEPTH_BITS=16 -GTILE_W=32 -GTILE_H=16
-	verilator $(LINT_ARGS) -GDEPTH_BITS=32 +define+ZB_INJECT_BLEND_BUG
+	verilator $(LINT_ARGS) -GDEPTH_BITS=16 -GTILE_W=32 -GTILE_H=16 -GCOV_SAMPLES=4
+	verilator $(LINT_ARGS) -GDEPTH_BITS=32 -GCOV_SAMPLES=1 +define+ZB_INJECT_BLEND_BUG
+	verilator $(LINT_ARGS) -GCOV_SAMPLES=2
+	verilator $(LINT_ARGS) -GCOV_SAMPLES=8
 	@echo "lint: clean"
 
 clean: ## Remove build trees and outputs

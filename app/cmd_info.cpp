@@ -16,10 +16,10 @@ std::string join(const std::vector<std::string>& items, const char* sep) {
 namespace {
 
 void print_methods() {
-  fmt::print("{:<12} {:>6}  {:<34} {}\n", "method", "passes", "source", "what it does");
+  fmt::print("{:<16} {:>6}  {:<34} {}\n", "method", "passes", "source", "what it does");
   for (const PassPlan& p : pass_plans())
-    fmt::print("{:<12} {:>6}  {:<34} {}\n", p.name, p.passes.size(), p.source, p.description);
-  fmt::print("{:<12} {:>6}  {:<34} {}\n", kReferenceMethod, "-", "exact ground truth",
+    fmt::print("{:<16} {:>6}  {:<34} {}\n", p.name, p.passes.size(), p.source, p.description);
+  fmt::print("{:<16} {:>6}  {:<34} {}\n", kReferenceMethod, "-", "exact ground truth",
              "every fragment sorted per pixel by depth, composited in floating point");
 }
 
@@ -39,7 +39,7 @@ void print_plan(const std::string& method) {
                                  join(names)));
   }
   fmt::print("{} ({}): {}\n", plan->name, plan->source, plan->description);
-  fmt::print("{:<4} {:<22} {:<12} {:<5} {:<6} {:<7} {:<6} {:<8} {}\n", "pass", "name", "primitives",
+  fmt::print("{:<4} {:<22} {:<16} {:<5} {:<6} {:<7} {:<6} {:<8} {}\n", "pass", "name", "primitives",
              "cull", "ztest", "zfunc", "zwrite", "blend", "mask");
   int n = 1;
   for (const PassState& p : plan->passes) {
@@ -48,7 +48,7 @@ void print_plan(const std::string& method) {
                                          (r.color_mask & kMaskG) ? "G" : "-",
                                          (r.color_mask & kMaskB) ? "B" : "-",
                                          (r.color_mask & kMaskA) ? "A" : "-");
-    fmt::print("{:<4} {:<22} {:<12} {:<5} {:<6} {:<7} {:<6} {:<8} {}\n", n++, p.name,
+    fmt::print("{:<4} {:<22} {:<16} {:<5} {:<6} {:<7} {:<6} {:<8} {}\n", n++, p.name,
                to_string(p.filter), to_string(p.cull), r.depth_test ? "on" : "off",
                to_string(r.depth_func), r.depth_write ? "on" : "off", to_string(r.blend), mask);
   }

@@ -50,16 +50,16 @@ std::string summary_csv(const std::vector<MethodRun>& runs, int depth_bits) {
 
 void print_table(const std::vector<MethodRun>& runs) {
   const bool rtl = std::any_of(runs.begin(), runs.end(), [](const MethodRun& r) { return r.rtl; });
-  fmt::print("{:<12} {:>6} {:>10} {:>10} {:>10} {:>8} {:>8} {:>5} {:>8}", "method", "passes",
+  fmt::print("{:<16} {:>6} {:>10} {:>10} {:>10} {:>8} {:>8} {:>5} {:>8}", "method", "passes",
              "fragments", "reads", "writes", "rmse", "psnr_dB", "max", ">2/255");
   fmt::print(rtl ? " {:>10} {:>10}\n" : "\n", "rtl_cycles", "mismatches");
   for (const MethodRun& r : runs) {
     if (r.total)
-      fmt::print("{:<12} {:>6} {:>10} {:>10} {:>10}", r.method, r.passes, r.total->fragments_in,
+      fmt::print("{:<16} {:>6} {:>10} {:>10} {:>10}", r.method, r.passes, r.total->fragments_in,
                  r.total->color_reads + r.total->depth_reads,
                  r.total->color_writes + r.total->depth_writes);
     else
-      fmt::print("{:<12} {:>6} {:>10} {:>10} {:>10}", r.method, "-", "-", "-", "-");
+      fmt::print("{:<16} {:>6} {:>10} {:>10} {:>10}", r.method, "-", "-", "-", "-");
     fmt::print(" {:>8.3f} {:>8} {:>5} {:>7.2f}%", r.error.rmse, psnr_text(r.error.psnr),
                r.error.max_abs, 100.0 * r.error.share_over_2);
     if (rtl && r.total && r.rtl)

@@ -28,8 +28,13 @@ class Backend {
  public:
   virtual ~Backend() = default;
   virtual const char* name() const = 0;
-  // Starts a frame: buffers of the given size cleared to `clear_color` and the far depth.
-  virtual void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color) = 0;
+  // Starts a frame: buffers of the given size cleared to `clear_color`, the far depth and
+  // coverage 0, for a sample pattern of `coverage_samples` (valid_coverage_samples) per pixel.
+  virtual void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
+                           int coverage_samples) = 0;
+  void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color) {
+    begin_frame(width, height, depth_bits, clear_color, kDefaultCoverageSamples);
+  }
   // Names the pass about to begin, for reports; backends may ignore it.
   virtual void label_pass(const std::string& /*name*/) {}
   virtual void begin_pass(const RopState& state) = 0;

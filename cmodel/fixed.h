@@ -46,4 +46,32 @@ constexpr uint8_t blend_additive(uint8_t s, uint8_t a, uint8_t d) {
   return static_cast<uint8_t>(v > 255u ? 255u : v);
 }
 
+// Coverage anti-aliasing (US 5,123,085; docs/datapath.md "Coverage blend", raster.md
+// "Coverage"). N samples per pixel, a power of two from 1 to 16; the coverage plane stores a
+// count 0..N in coverage_bits(N) = ceil(log2(N + 1)) bits.
+constexpr int kMaxCoverageSamples = 16;
+constexpr int kDefaultCoverageSamples = 16;
+
+constexpr bool valid_coverage_samples(int n) {
+  return n >= 1 && n <= kMaxCoverageSamples && (n & (n - 1)) == 0;
+}
+
+// log2(N) for a valid N.
+constexpr int coverage_log2(int n) {
+  int l = 0;
+  while ((1 << l) < n) ++l;
+  return l;
+}
+
+// ceil(log2(N + 1)): bits of a count 0..N.
+constexpr int coverage_bits(int n) { return coverage_log2(n + 1); }
+
+// Coverage-weighted blend of one channel, w of the N samples from the polygon colour p, the
+// rest from the stored colour d: (w*p + (N - w)*d + N/2) >> log2(N). 0 <= w <= N; the sum is
+// below 256 N, so the result is at most 255 with no saturation.
+constexpr uint8_t blend_coverage(uint8_t p, uint8_t d, uint32_t w, int n) {
+  const uint32_t nn = uint32_t(n);
+  return static_cast<uint8_t>((w * p + (nn - w) * d + nn / 2) >> coverage_log2(n));
+}
+
 }  // namespace zb

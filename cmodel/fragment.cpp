@@ -11,7 +11,6 @@ uint16_t pack_state(const RopState& s) {
 bool unpack_state(uint16_t bits, RopState& out) {
   if (bits >> kStateBits) return false;
   const unsigned blend = (bits >> 5) & 3u;
-  if (blend > unsigned(BlendMode::kAdditive)) return false;
   out.depth_test = bits & 1u;
   out.depth_func = static_cast<DepthFunc>((bits >> 1) & 7u);
   out.depth_write = (bits >> 4) & 1u;
@@ -39,6 +38,7 @@ const char* to_string(BlendMode b) {
     case BlendMode::kReplace: return "replace";
     case BlendMode::kAlpha: return "alpha";
     case BlendMode::kAdditive: return "additive";
+    case BlendMode::kCoverage: return "coverage";
   }
   return "?";
 }
@@ -48,6 +48,7 @@ const char* to_string(PrimFilter f) {
     case PrimFilter::kOpaque: return "opaque";
     case PrimFilter::kTransparent: return "transparent";
     case PrimFilter::kAll: return "all";
+    case PrimFilter::kEdges: return "edges";
   }
   return "?";
 }
@@ -57,6 +58,15 @@ const char* to_string(Cull c) {
     case Cull::kNone: return "none";
     case Cull::kFront: return "front";
     case Cull::kBack: return "back";
+  }
+  return "?";
+}
+
+const char* to_string(FacingFilter f) {
+  switch (f) {
+    case FacingFilter::kAll: return "all";
+    case FacingFilter::kToward: return "toward";
+    case FacingFilter::kAway: return "away";
   }
   return "?";
 }

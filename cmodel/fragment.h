@@ -32,6 +32,8 @@ enum class BlendMode : uint8_t {
   kReplace = 0,   // colour = source
   kAlpha = 1,     // colour = min(255, m(s, a) + m(d, 255 - a)), every channel
   kAdditive = 2,  // colour = min(255, d + m(s, a)), every channel
+  kCoverage = 3,  // US 5,123,085: the four depth cases on colour, depth and coverage
+                  // (docs/datapath.md "Coverage blend"); a coverage pass (raster.md "Coverage")
 };
 
 // Colour write mask bits.
@@ -42,20 +44,42 @@ struct RopState {
   bool depth_test = true;                 // off: every fragment passes and depth is never written
   DepthFunc depth_func = DepthFunc::kLess;
   bool depth_write = true;
-  BlendMode blend = BlendMode::kReplace;
+  BlendMode blend = BlendMode::kReplace;  // kCoverage: depth_func is not used (datapath.md)
   uint8_t color_mask = kMaskRgba;         // kMask* bits; 0 = no colour writes
 };
 
-// Which primitives a pass draws. Decided by the feeder, before the datapath.
-enum class PrimFilter : uint8_t { kOpaque, kTransparent, kAll };
+// A pass draws coverage fragments (every pixel with a covered sample, Fragment::coverage the
+// count) exactly when its blend is kCoverage: the feeder asks the pass state.
+constexpr bool is_coverage_pass(const RopState& s) { return s.blend == BlendMode::kCoverage; }
+
+// Which primitives a pass draws. Decided by the feeder, before the datapath. kEdges draws the
+// scene's unique tessellation edges as lines (raster.md, "Lines") instead of its triangles.
+enum class PrimFilter : uint8_t { kOpaque, kTransparent, kAll, kEdges };
 // Which faces a pass discards (by winding). Decided by the feeder.
 enum class Cull : uint8_t { kNone, kFront, kBack };
+// Which fragments a pass keeps by their per-vertex facing flag (Fragment::facing). Feeder.
+enum class FacingFilter : uint8_t { kAll, kToward, kAway };
 
-// One pass of a pass plan.
+// Depth offset applied by the feeder (docs/datapath.md, "The feeder"):
+// offset = units + ceil(slope_q8 * slope / 256), limited to `clamp` when clamp > 0, where
+// `slope` is the primitive's depth slope (raster.md, "Depth offset"); z' = max(0, z - offset).
+struct DepthOffset {
+  uint32_t units = 0;     // constant, in units of the depth format
+  uint32_t slope_q8 = 0;  // slope factor, unsigned 8.8 fixed point (256 = 1.0)
+  uint32_t clamp = 0;     // largest offset, depth units; 0 = unlimited
+  bool any() const { return units != 0 || slope_q8 != 0; }
+};
+
+// One pass of a pass plan. Everything but `rop` is applied by the feeder, before the datapath.
 struct PassState {
   std::string name;
   PrimFilter filter = PrimFilter::kAll;
   Cull cull = Cull::kNone;
+  FacingFilter facing = FacingFilter::kAll;
+  bool zero_alpha_toward = false;  // fragments with facing = 1 carry alpha 0 (CN 103021015)
+  DepthOffset offset;              // moves fragments toward the viewer
+  bool constant_color = false;     // every fragment carries `color` (edge colour)
+  Rgba8 color{0, 0, 0, 255};
   RopState rop;
 };
 
@@ -63,12 +87,13 @@ struct PassState {
 // [0] depth_test, [3:1] depth_func, [4] depth_write, [6:5] blend, [10:7] color_mask.
 constexpr int kStateBits = 11;
 uint16_t pack_state(const RopState& s);
-// False when `bits` is not a valid state (bits above kStateBits set, or a reserved blend code).
+// False when `bits` is not a valid state (bits above kStateBits set).
 bool unpack_state(uint16_t bits, RopState& out);
 
 const char* to_string(DepthFunc f);
 const char* to_string(BlendMode b);
 const char* to_string(PrimFilter f);
 const char* to_string(Cull c);
+const char* to_string(FacingFilter f);
 
 }  // namespace zb

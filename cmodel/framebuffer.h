@@ -1,4 +1,5 @@
-// The pixel buffers a frame renders into: colour RGBA8 and depth, row-major, row 0 at the top.
+// The pixel buffers a frame renders into: colour RGBA8, depth and coverage, row-major, row 0 at
+// the top.
 #pragma once
 
 #include <cstddef>
@@ -13,18 +14,25 @@ struct Framebuffer {
   int width = 0;
   int height = 0;
   int depth_bits = kDefaultDepthBits;
+  int coverage_samples = kDefaultCoverageSamples;  // N of the sample pattern
   std::vector<Rgba8> color;
   std::vector<uint32_t> depth;
+  // Covered samples per pixel, 0..N (coverage_bits(N) wide in hardware); cleared to 0 with the
+  // frame, written only by coverage passes (docs/datapath.md "Coverage blend").
+  std::vector<uint8_t> coverage;
 
   Framebuffer() = default;
-  Framebuffer(int w, int h, int bits, Rgba8 clear_color)
-      : width(w), height(h), depth_bits(bits),
+  Framebuffer(int w, int h, int bits, Rgba8 clear_color,
+              int samples = kDefaultCoverageSamples)
+      : width(w), height(h), depth_bits(bits), coverage_samples(samples),
         color(static_cast<size_t>(w) * h, clear_color),
-        depth(static_cast<size_t>(w) * h, depth_max(bits)) {}
+        depth(static_cast<size_t>(w) * h, depth_max(bits)),
+        coverage(static_cast<size_t>(w) * h, 0) {}
 
   size_t index(int x, int y) const { return static_cast<size_t>(y) * width + x; }
   Rgba8 color_at(int x, int y) const { return color[index(x, y)]; }
   uint32_t depth_at(int x, int y) const { return depth[index(x, y)]; }
+  int coverage_at(int x, int y) const { return coverage[index(x, y)]; }
 };
 
 }  // namespace zb

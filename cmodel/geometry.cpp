@@ -24,6 +24,7 @@ constexpr double kFixedLimit = double(1 << 24);
 
 struct Polygon {
   glm::vec4 v[kMaxPolygon + 1];
+  bool facing[kMaxPolygon + 1] = {};  // per vertex; a crossing takes its inside end's flag
   int n = 0;
 };
 
@@ -58,8 +59,12 @@ void clip_polygon(int plane, const Polygon& src, Polygon& dst) {
     const int j = (i + 1) % src.n;
     const bool in_i = d[i] >= 0.0f;
     const bool in_j = d[j] >= 0.0f;
-    if (in_i) dst.v[dst.n++] = src.v[i];
+    if (in_i) {
+      dst.facing[dst.n] = src.facing[i];
+      dst.v[dst.n++] = src.v[i];
+    }
     if (in_i != in_j) {
+      dst.facing[dst.n] = in_i ? src.facing[i] : src.facing[j];
       dst.v[dst.n++] = in_i ? crossing(src.v[i], d[i], src.v[j], d[j])
                             : crossing(src.v[j], d[j], src.v[i], d[i]);
     }
@@ -71,11 +76,13 @@ bool finite4(const glm::vec4& c) {
 }
 
 // Clips the triangle in clip space. Returns the polygon, empty when wholly outside.
-Polygon clip_triangle(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) {
+Polygon clip_triangle(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c,
+                      const bool facing[3]) {
   Polygon p[2];
   p[0].v[0] = a;
   p[0].v[1] = b;
   p[0].v[2] = c;
+  for (int k = 0; k < 3; ++k) p[0].facing[k] = facing[k];
   p[0].n = 3;
   int cur = 0;
   bool clipped = false;
@@ -163,6 +170,21 @@ bool to_window(const glm::vec4& c, const Viewport& vp, ScreenVertex& out) {
 
 }  // namespace
 
+bool vertex_faces_eye(const glm::vec3& normal_world, const glm::vec3& vertex_world,
+                      const glm::vec3& eye) {
+  return glm::dot(normal_world, eye - vertex_world) > 0.0f;
+}
+
+float clip_plane_distance(int plane, const glm::vec4& c) { return plane_distance(plane, c); }
+
+glm::vec4 clip_crossing(const glm::vec4& in, float d_in, const glm::vec4& out, float d_out) {
+  return crossing(in, d_in, out, d_out);
+}
+
+bool clip_to_window(const glm::vec4& c, const Viewport& vp, ScreenVertex& out) {
+  return to_window(c, vp, out);
+}
+
 std::vector<ScreenTriangle> setup_triangles(const Scene& scene, const Viewport& vp) {
   if (vp.width < 1 || vp.width > kMaxFrameSize || vp.height < 1 || vp.height > kMaxFrameSize)
     throw std::invalid_argument("viewport " + std::to_string(vp.width) + "x" +
@@ -202,7 +224,18 @@ std::vector<ScreenTriangle> setup_triangles(const Scene& scene, const Viewport& 
       const glm::vec4 c[3] = {clip[idx[0]], clip[idx[1]], clip[idx[2]]};
       if (!finite4(c[0]) || !finite4(c[1]) || !finite4(c[2])) continue;  // NaN/inf: dropped
 
-      const Polygon poly = clip_triangle(c[0], c[1], c[2]);
+      // Per-vertex facing (CN 103021015), before clipping: the vertex normal in world space
+      // (the face normal when the mesh has none) against the direction to the eye.
+      bool facing[3];
+      {
+        const bool have_normals = idx[0] < mesh.normals.size() && idx[1] < mesh.normals.size() &&
+                                  idx[2] < mesh.normals.size();
+        const glm::vec3 face_n = glm::cross(world[idx[1]] - world[idx[0]], world[idx[2]] - world[idx[0]]);
+        for (int k = 0; k < 3; ++k)
+          facing[k] = vertex_faces_eye(have_normals ? normal_matrix * mesh.normals[idx[k]] : face_n,
+                                       world[idx[k]], eye);
+      }
+      const Polygon poly = clip_triangle(c[0], c[1], c[2], facing);
       if (poly.n < 3) continue;
       ScreenVertex sv[kMaxPolygon];
       bool ok = true;
@@ -237,6 +270,9 @@ std::vector<ScreenTriangle> setup_triangles(const Scene& scene, const Viewport& 
         st.v[0] = sv[0];
         st.v[1] = sv[i];
         st.v[2] = sv[i + 1];
+        st.facing[0] = poly.facing[0];
+        st.facing[1] = poly.facing[i];
+        st.facing[2] = poly.facing[i + 1];
         out.push_back(st);
       }
     }

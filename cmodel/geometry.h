@@ -17,6 +17,7 @@ struct Viewport {
   int width = 0;
   int height = 0;
   int depth_bits = kDefaultDepthBits;
+  int coverage_samples = kDefaultCoverageSamples;  // N of the sample pattern (raster.md "Coverage")
 };
 
 // A vertex in window coordinates: x right, y down, 8 fractional bits; pixel centres at +0.5.
@@ -31,6 +32,7 @@ struct ScreenTriangle {
   ScreenVertex v[3];
   Rgba8 color;            // flat, shaded once per triangle
   bool front = true;      // counter-clockwise as the viewer sees it
+  bool facing[3] = {true, true, true};  // per vertex: normal toward the eye (raster.md, "Facing")
   bool transparent = false;
   uint32_t prim = 0;      // index of the source triangle in scene order
 };
@@ -42,5 +44,19 @@ constexpr float kAmbient = 0.25f;
 // crosses the near or far plane (or the guard band) is clipped into a fan; one that lies wholly
 // outside is dropped; zero-area triangles are dropped.
 std::vector<ScreenTriangle> setup_triangles(const Scene& scene, const Viewport& vp);
+
+// The per-vertex facing decision of the vertex stage (CN 103021015; raster.md, "Facing"):
+// true when dot(normal_world, eye - vertex_world) > 0, in float.
+bool vertex_faces_eye(const glm::vec3& normal_world, const glm::vec3& vertex_world,
+                      const glm::vec3& eye);
+
+// The stage's pieces, shared with the edge setup (edges.h): signed distance of a clip-space
+// point to clip plane `plane` (0 near, 1 far, 2..5 the guard band; inside when >= 0), the
+// crossing point interpolated from the inside end, and the perspective divide and viewport
+// (false when the point is unusable).
+constexpr int kClipPlaneCount = 6;
+float clip_plane_distance(int plane, const glm::vec4& c);
+glm::vec4 clip_crossing(const glm::vec4& in, float d_in, const glm::vec4& out, float d_out);
+bool clip_to_window(const glm::vec4& c, const Viewport& vp, ScreenVertex& out);
 
 }  // namespace zb

@@ -45,6 +45,82 @@ std::vector<PassPlan> make_plans() {
                          less(false, BlendMode::kAlpha)),
                     pass("transparent-zwrite", PrimFilter::kTransparent,
                          less(true, BlendMode::kAlpha))}});
+  // US 5,923,333, claim 1: (a) opaque primitives to the z-buffer and frame buffer; (b)
+  // "disabling writes to said z-buffer, culling all front-facing primitives of said transparent
+  // objects", rasterizing the back-facing ones, culling pixels behind opaque objects and alpha
+  // blending the rest; (c) the same with the back-facing primitives culled. Culling is by
+  // winding (ScreenTriangle::front), in the feeder.
+  {
+    PassState back =
+        pass("transparent-back", PrimFilter::kTransparent, less(false, BlendMode::kAlpha));
+    back.cull = Cull::kFront;
+    PassState front =
+        pass("transparent-front", PrimFilter::kTransparent, less(false, BlendMode::kAlpha));
+    front.cull = Cull::kBack;
+    plans.push_back({"back-front", "US 5,923,333",
+                     "opaque; transparent back faces (front faces culled), z-write off, blend; "
+                     "transparent front faces (back faces culled), z-write off, blend",
+                     {pass("opaque", PrimFilter::kOpaque, less(true, BlendMode::kReplace)), back,
+                      front}});
+  }
+  // CN 103021015: the vertex stage decides from the vertex normal and the camera whether each
+  // vertex faces the viewer (Fragment::facing, raster.md "Facing"). "First pass: ... points to
+  // be drawn are output normally; points not to be drawn output alpha 0 ... the faces turned
+  // away from the viewer. Second pass: z-test off, draw the front faces. The second pass is
+  // drawn onto the frame buffer additively."
+  {
+    PassState away =
+        pass("transparent-away", PrimFilter::kTransparent, less(false, BlendMode::kAlpha));
+    away.zero_alpha_toward = true;
+    RopState additive = less(false, BlendMode::kAdditive);
+    additive.depth_test = false;
+    PassState toward = pass("transparent-toward", PrimFilter::kTransparent, additive);
+    toward.facing = FacingFilter::kToward;
+    plans.push_back({"facing-additive", "CN 103021015",
+                     "opaque; transparent with fragments facing the viewer at alpha 0 (the "
+                     "away-facing part blends); the facing part again, z-test off, additive",
+                     {pass("opaque", PrimFilter::kOpaque, less(true, BlendMode::kReplace)), away,
+                      toward}});
+  }
+  // US 5,123,085: "each pixel in the frame buffer being identified by a color value, a z buffer
+  // value and a representation indicative of coverage"; every polygon pixel is composited with
+  // the background pixel by the four depth cases. One pass over all primitives, in submit
+  // order, coverage fragments (raster.md "Coverage"); material alpha is not a weight (the
+  // patent's polygons are opaque): it is blended as a fourth channel by coverage.
+  plans.push_back({"coverage-aa", "US 5,123,085",
+                   "one pass, all primitives: per-pixel colour, depth and sample coverage, "
+                   "composited by the four depth cases (nearer, farther, equal full, equal "
+                   "partial)",
+                   {pass("coverage", PrimFilter::kAll, less(true, BlendMode::kCoverage))}});
+  // US 5,359,704, claim 1: (a) mask the frame buffer; (b, c) scan-convert the faces, updating
+  // the depth buffer "only when the obtained depth value is smaller"; (d) unmask; (e) move the
+  // display "a distance in front of visible faces"; (f) depth-test and draw "all tessellation
+  // edges". The distance is a depth offset (raster.md "Depth offset"); edges pass on LEQUAL.
+  // "... with hidden lines eliminated or displayed in a line style different from that of
+  // visible lines": hidden-line-dim draws the edges that fail the test (GREATER) dimmed first.
+  {
+    RopState faces_rop = less(true, BlendMode::kReplace);
+    faces_rop.color_mask = 0;
+    const PassState faces = pass("faces-depth-only", PrimFilter::kAll, faces_rop);
+    RopState edge_rop = less(false, BlendMode::kReplace);
+    edge_rop.depth_func = DepthFunc::kLequal;
+    PassState visible = pass("edges-visible", PrimFilter::kEdges, edge_rop);
+    visible.offset = kEdgeOffset;
+    visible.constant_color = true;
+    visible.color = kEdgeColor;
+    PassState hidden = visible;
+    hidden.name = "edges-hidden-dim";
+    hidden.rop.depth_func = DepthFunc::kGreater;
+    hidden.color = kHiddenEdgeColor;
+    plans.push_back({"hidden-line", "US 5,359,704",
+                     "faces to depth only (colour masked); every tessellation edge once, moved "
+                     "toward the viewer by a depth offset, depth LEQUAL: hidden lines removed",
+                     {faces, visible}});
+    plans.push_back({"hidden-line-dim", "US 5,359,704",
+                     "hidden-line with hidden edges kept in a second style: edges failing the "
+                     "test (GREATER) drawn dimmed before the visible ones",
+                     {faces, hidden, visible}});
+  }
   return plans;
 }
 

@@ -15,6 +15,11 @@ struct PassPlan {
   std::vector<PassState> passes;
 };
 
+// hidden-line's edge passes: depth offset (raster.md "Depth offset"), visible and hidden colours.
+constexpr DepthOffset kEdgeOffset{2, 256, 0};  // 2 units + 1.0 x slope, unclamped
+constexpr Rgba8 kEdgeColor{0, 0, 0, 255};
+constexpr Rgba8 kHiddenEdgeColor{190, 190, 190, 255};
+
 // Every pass plan, in the order methods are listed.
 const std::vector<PassPlan>& pass_plans();
 

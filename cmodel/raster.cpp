@@ -57,6 +57,7 @@ void rasterize(const ScreenTriangle& tri, const Viewport& vp, std::vector<Fragme
   if (vp.width < 1 || vp.width > kMaxFrameSize || vp.height < 1 || vp.height > kMaxFrameSize)
     return;
   ScreenVertex v[3] = {tri.v[0], tri.v[1], tri.v[2]};
+  bool facing[3] = {tri.facing[0], tri.facing[1], tri.facing[2]};
   if (!in_range(v[0]) || !in_range(v[1]) || !in_range(v[2])) return;
 
   int64_t area = (int64_t{v[1].x} - v[0].x) * (int64_t{v[2].y} - v[0].y) -
@@ -64,6 +65,7 @@ void rasterize(const ScreenTriangle& tri, const Viewport& vp, std::vector<Fragme
   if (area == 0) return;
   if (area < 0) {  // orient to positive area; depth weights follow their vertices
     std::swap(v[1], v[2]);
+    std::swap(facing[1], facing[2]);
     area = -area;
   }
 
@@ -95,6 +97,13 @@ void rasterize(const ScreenTriangle& tri, const Viewport& vp, std::vector<Fragme
   frag.color = tri.color;
   frag.front = tri.front;
   frag.prim = tri.prim;
+  // Every sample of a pixel whose centre is covered counts as covered: the full count (a
+  // coverage pass uses rasterize_coverage instead, coverage.h).
+  frag.coverage = static_cast<uint8_t>(vp.coverage_samples);
+  // Facing (raster.md, "Facing"): constant when the vertices agree; otherwise a fragment faces
+  // the viewer iff the barycentric weights of the flagged vertices sum to at least half.
+  const bool facing_mixed = !(facing[0] == facing[1] && facing[1] == facing[2]);
+  frag.facing = facing[0];
 
   int64_t row[3] = {edge[0].at_origin, edge[1].at_origin, edge[2].at_origin};
   const int64_t span_max = px_hi - px_lo;
@@ -126,6 +135,11 @@ void rasterize(const ScreenTriangle& tri, const Viewport& vp, std::vector<Fragme
           frag.z = static_cast<uint32_t>(num / static_cast<uint64_t>(area));
         }
         frag.x = static_cast<uint16_t>(px_lo + k);
+        if (facing_mixed) {
+          const int64_t toward = (facing[0] ? w[0] : 0) + (facing[1] ? w[1] : 0) +
+                                 (facing[2] ? w[2] : 0);
+          frag.facing = 2 * toward >= area;
+        }
         out.push_back(frag);
         if (z_exact) {
           z_exact->push_back((double(w[0]) * v[0].z_exact + double(w[1]) * v[1].z_exact +

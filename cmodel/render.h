@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "backend.h"
+#include "edges.h"
 #include "geometry.h"
 #include "passes.h"
 #include "scene.h"
@@ -20,6 +21,11 @@ struct RasterizedScene {
   std::vector<Fragment> fragments;      // all triangles' fragments, in primitive order
   std::vector<double> z_exact;          // per fragment, unrounded window depth
   std::vector<size_t> first_fragment;   // triangle i owns [first_fragment[i], first_fragment[i+1])
+  // The unique tessellation edges (edges.h) and their line fragments (lines.h), for passes
+  // with PrimFilter::kEdges; not part of the reference.
+  std::vector<ScreenLine> lines;
+  std::vector<Fragment> line_fragments;      // all lines' fragments, in edge order
+  std::vector<size_t> first_line_fragment;   // line i owns [first_line_fragment[i], [i+1])
 };
 
 RasterizedScene rasterize_scene(const Scene& scene, const Viewport& vp);
@@ -28,7 +34,12 @@ RasterizedScene rasterize_scene(const Scene& scene, const Viewport& vp);
 RasterizedScene rasterize_triangles(std::vector<ScreenTriangle> triangles, const Viewport& vp,
                                     Rgba8 background);
 
-// The fragments a pass draws, in primitive order.
+// Replaces the scene's edges with `lines` and rasterizes them (rasterize_scene does this with
+// setup_lines; tests may give their own).
+void add_lines(RasterizedScene& rs, std::vector<ScreenLine> lines);
+
+// The fragments a pass draws, in primitive order, as the feeder sends them to the datapath
+// (filtered, culled and rewritten by the pass's feeder rules).
 std::vector<Fragment> pass_fragments(const RasterizedScene& rs, const PassState& pass);
 
 struct RenderResult {

@@ -1,5 +1,9 @@
 #include "rop.h"
 
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
 namespace zb {
 
 PassStats& PassStats::operator+=(const PassStats& o) {
@@ -37,17 +41,69 @@ Rgba8 blend(BlendMode mode, Rgba8 s, Rgba8 d) {
     case BlendMode::kAdditive:
       return {blend_additive(s.r, s.a, d.r), blend_additive(s.g, s.a, d.g),
               blend_additive(s.b, s.a, d.b), blend_additive(s.a, s.a, d.a)};
+    case BlendMode::kCoverage:  // needs the depths and coverages: composite_coverage
+      return s;
   }
   return s;
 }
+
+namespace {
+
+// w of the N samples from p, the rest from d, every channel (alpha too).
+Rgba8 proportionate(Rgba8 p, Rgba8 d, uint32_t w, int n) {
+  return {blend_coverage(p.r, d.r, w, n), blend_coverage(p.g, d.g, w, n),
+          blend_coverage(p.b, d.b, w, n), blend_coverage(p.a, d.a, w, n)};
+}
+
+}  // namespace
+
+// US 5,123,085, claim 1, "the step of compositing": the polygon pixel (z, p, k) onto the
+// background pixel (zs, b, cs). The combined coverage is min(N, k + cs) in every case.
+CoveragePixel composite_coverage(uint32_t z, Rgba8 p, int k, uint32_t zs, Rgba8 b, int cs,
+                                 int n) {
+  const int combined = std::min(n, k + cs);
+  CoveragePixel out;
+  if (z < zs) {
+    // "if the depth value of the polygon pixel is less than ...: a first proportionate blend
+    // ... dependent upon the extent of coverage of the polygon pixel"; depth of the polygon.
+    out.color = proportionate(p, b, uint32_t(k), n);
+    out.depth = z;
+    out.coverage = uint8_t(combined);
+  } else if (z > zs) {
+    // "greater than ...: a second proportionate blend ... dependent upon the extent of
+    // coverage of the background pixel"; the background keeps its cs samples and its depth.
+    out.color = proportionate(b, p, uint32_t(cs), n);
+    out.depth = zs;
+    out.coverage = uint8_t(combined);
+  } else if (k + cs >= n) {
+    // "equal ... and the combination ... represents full coverage: the color of the polygon
+    // pixel", full coverage.
+    out.color = p;
+    out.depth = zs;
+    out.coverage = uint8_t(n);
+  } else {
+    // "equal ... does not indicate full coverage: the first proportionate blend".
+    out.color = proportionate(p, b, uint32_t(k), n);
+    out.depth = z;
+    out.coverage = uint8_t(combined);
+  }
+  return out;
+}
+
+Rgba8 resolve_coverage(Rgba8 stored, int /*coverage*/, int /*n*/) { return stored; }
 
 Rgba8 apply_color_mask(uint8_t mask, Rgba8 blended, Rgba8 d) {
   return {(mask & kMaskR) ? blended.r : d.r, (mask & kMaskG) ? blended.g : d.g,
           (mask & kMaskB) ? blended.b : d.b, (mask & kMaskA) ? blended.a : d.a};
 }
 
-void GoldenRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color) {
-  fb_ = Framebuffer(width, height, depth_bits, clear_color);
+void GoldenRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
+                            int coverage_samples) {
+  if (!valid_coverage_samples(coverage_samples))
+    throw std::invalid_argument("golden: coverage samples " + std::to_string(coverage_samples) +
+                                " is not a power of two from 1 to " +
+                                std::to_string(kMaxCoverageSamples));
+  fb_ = Framebuffer(width, height, depth_bits, clear_color, coverage_samples);
 }
 
 void GoldenRop::begin_pass(const RopState& state) {
@@ -65,6 +121,11 @@ PassStats GoldenRop::end_pass() { return stats_; }
 // mask, write. "If the depth test is disabled ... the depth buffer is not updated" (GL 4.6,
 // 14.9.4): a disabled test passes every fragment and never writes depth.
 void GoldenRop::process(const Fragment& f) {
+  if (f.coverage > fb_.coverage_samples)
+    throw std::invalid_argument("golden: fragment coverage " + std::to_string(f.coverage) +
+                                " exceeds the " + std::to_string(fb_.coverage_samples) +
+                                " samples of the frame");
+  if (state_.blend == BlendMode::kCoverage) return process_coverage(f);
   const size_t i = fb_.index(f.x, f.y);
   ++stats_.fragments_in;
 
@@ -86,6 +147,32 @@ void GoldenRop::process(const Fragment& f) {
   if (reads_dest) ++stats_.color_reads;
   const Rgba8 d = fb_.color[i];
   fb_.color[i] = apply_color_mask(state_.color_mask, blend(state_.blend, f.color, d), d);
+  ++stats_.color_writes;
+}
+
+}  // namespace zb
+
+namespace zb {
+
+// Coverage mode (datapath.md "Coverage blend"): the depth unit compares three ways instead of
+// testing, so every fragment passes and is composited; depth is written (when depth_test and
+// depth_write) only in the nearer case; coverage always; colour under the write mask.
+void GoldenRop::process_coverage(const Fragment& f) {
+  const size_t i = fb_.index(f.x, f.y);
+  ++stats_.fragments_in;
+  ++stats_.fragments_passed;
+  ++stats_.depth_reads;
+  const CoveragePixel c = composite_coverage(f.z, f.color, f.coverage, fb_.depth[i],
+                                             fb_.color[i], fb_.coverage[i],
+                                             fb_.coverage_samples);
+  if (state_.depth_test && state_.depth_write && c.depth != fb_.depth[i]) {
+    fb_.depth[i] = c.depth;
+    ++stats_.depth_writes;
+  }
+  fb_.coverage[i] = c.coverage;
+  if (state_.color_mask == 0) return;
+  ++stats_.color_reads;
+  fb_.color[i] = apply_color_mask(state_.color_mask, c.color, fb_.color[i]);
   ++stats_.color_writes;
 }
 

@@ -2,6 +2,8 @@
 // test, blend, write mask, write. Bit-exact specification of the RTL; see docs/datapath.md.
 #pragma once
 
+#include <cstdint>
+
 #include "backend.h"
 
 namespace zb {
@@ -15,20 +17,39 @@ Rgba8 blend(BlendMode mode, Rgba8 s, Rgba8 d);
 // Merges `blended` into `d` under the colour write mask.
 Rgba8 apply_color_mask(uint8_t mask, Rgba8 blended, Rgba8 d);
 
+// The pixel after compositing a polygon pixel (depth z, colour p, k of N samples covered) onto
+// the stored ("background") pixel, by the four cases of US 5,123,085 claim 1
+// (docs/datapath.md "Coverage blend"). 0 <= k, cs <= n.
+struct CoveragePixel {
+  Rgba8 color;
+  uint32_t depth = 0;
+  uint8_t coverage = 0;
+};
+CoveragePixel composite_coverage(uint32_t z, Rgba8 p, int k, uint32_t zs, Rgba8 b, int cs, int n);
+
+// The displayed pixel of a coverage-aa frame: the stored colour, which already carries the
+// background by coverage (datapath.md "Resolve"). The coverage plane is not needed for display.
+Rgba8 resolve_coverage(Rgba8 stored, int coverage, int n);
+
 class GoldenRop final : public Backend {
  public:
   const char* name() const override { return "golden"; }
-  void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color) override;
+  using Backend::begin_frame;
+  void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
+                   int coverage_samples) override;
   void begin_pass(const RopState& state) override;
   using Backend::draw;
   void draw(const Fragment* fragments, size_t count) override;
   PassStats end_pass() override;
   const Framebuffer& framebuffer() const override { return fb_; }
 
-  // One fragment through the datapath.
+  // One fragment through the datapath. Throws std::invalid_argument when its coverage exceeds
+  // the frame's sample count.
   void process(const Fragment& f);
 
  private:
+  void process_coverage(const Fragment& f);
+
   Framebuffer fb_;
   RopState state_;
   PassStats stats_;

@@ -174,6 +174,49 @@ Scene sphere_torus_scene() {
   return s;
 }
 
+// Opaque solid parts for hidden-line (US 5,359,704). Top row: four square plates (boxes of
+// half size 0.8 x 0.8 x 0.06) whose large face is tilted 0, 60, 85 and 89 degrees away from
+// the direction to the eye (measured at the plate's centre, about a horizontal axis), left to
+// right: the faces an edge offset must keep their edges visible on. Bottom row: a turned block
+// in front of a taller one (hidden edges), and a transparent ball around an opaque cube (the
+// catalogue asks every scene for both kinds).
+Scene parts_scene() {
+  Scene s;
+  const uint32_t steel = add_material(s, "plate", Rgba8{120, 140, 170, 255});
+  const uint32_t block = add_material(s, "block", Rgba8{170, 120, 80, 255});
+  const uint32_t glass = add_material(s, "glass", Rgba8{120, 200, 230, 90});
+
+  s.camera.eye = {0.0f, 0.0f, 10.0f};
+  s.camera.at = {0.0f, 0.0f, 0.0f};
+  s.camera.fov_y_deg = 45.0f;
+  const float tilts[4] = {0.0f, 60.0f, 85.0f, 89.0f};
+  for (int i = 0; i < 4; ++i) {
+    const glm::vec3 centre{-3.3f + 2.2f * static_cast<float>(i), 1.5f, 0.0f};
+    // Basis: n is the direction to the eye turned by the tilt about the horizontal axis u.
+    const glm::vec3 d = glm::normalize(s.camera.eye - centre);
+    const glm::vec3 u = glm::normalize(glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), d));
+    const glm::vec3 n = glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(tilts[i]), u) *
+                                  glm::vec4(d, 0.0f));
+    const glm::vec3 v = glm::cross(n, u);
+    glm::mat4 xf(1.0f);
+    xf[0] = glm::vec4(u, 0.0f);
+    xf[1] = glm::vec4(v, 0.0f);
+    xf[2] = glm::vec4(n, 0.0f);
+    xf[3] = glm::vec4(centre, 1.0f);
+    static const char* kNames[4] = {"plate_0", "plate_60", "plate_85", "plate_89"};
+    add_object(s, kNames[i], make_box({0.8f, 0.8f, 0.06f}), steel, xf);
+  }
+  add_object(s, "block_back", make_box({0.7f, 1.0f, 0.5f}), block,
+             translate({-1.5f, -1.5f, -1.2f}) * rotate(-15.0f, {0, 1, 0}));
+  add_object(s, "block_front", make_box({1.0f, 0.5f, 0.6f}), block,
+             translate({-2.4f, -1.8f, 0.6f}) * rotate(30.0f, {0, 1, 0}) * rotate(15.0f, {1, 0, 0}));
+  add_object(s, "cube", make_box({0.35f, 0.35f, 0.35f}), block,
+             translate({2.2f, -1.6f, 0.0f}) * rotate(35.0f, {0, 1, 0}) * rotate(25.0f, {1, 0, 0}));
+  add_object(s, "glass_ball", make_sphere(0.9f, 24, 12), glass, translate({2.2f, -1.6f, 0.0f}));
+  fit_depth_range(s);
+  return s;
+}
+
 struct Builtin {
   SceneInfo info;
   Scene (*build)();
@@ -190,6 +233,9 @@ const std::vector<Builtin>& builtins() {
       {{"sphere-torus", "transparent convex sphere and self-overlapping transparent torus "
                         "over an opaque ground slab"},
        sphere_torus_scene},
+      {{"parts", "opaque solid parts for hidden-line: plates tilted 0, 60, 85 and 89 degrees to "
+                 "the view, overlapping blocks, a cube in a transparent ball"},
+       parts_scene},
   };
   return kBuiltins;
 }

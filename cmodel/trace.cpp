@@ -13,7 +13,7 @@ namespace zb {
 namespace {
 
 constexpr char kMagic[8] = {'Z', 'B', 'T', 'R', 'A', 'C', 'E', '\0'};
-constexpr uint32_t kVersion = 1;
+constexpr uint32_t kVersion = 2;  // 2: coverage samples in the header, coverage per fragment
 constexpr uint32_t kMaxPasses = 1024;
 constexpr uint32_t kMaxNameLength = 256;
 constexpr size_t kFragmentBytes = 20;
@@ -61,6 +61,7 @@ Trace make_trace(const RasterizedScene& rs, const PassPlan& plan) {
   t.width = rs.viewport.width;
   t.height = rs.viewport.height;
   t.depth_bits = rs.viewport.depth_bits;
+  t.coverage_samples = rs.viewport.coverage_samples;
   t.clear_color = rs.background;
   for (const PassState& p : plan.passes) t.passes.push_back({p.name, p.rop, pass_fragments(rs, p)});
   return t;
@@ -73,6 +74,7 @@ std::string serialize_trace(const Trace& t) {
   put_u32(out, uint32_t(t.width));
   put_u32(out, uint32_t(t.height));
   put_u32(out, uint32_t(t.depth_bits));
+  put_u32(out, uint32_t(t.coverage_samples));
   for (uint8_t c : {t.clear_color.r, t.clear_color.g, t.clear_color.b, t.clear_color.a}) put_u8(out, c);
   put_u32(out, uint32_t(t.passes.size()));
   for (const TracePass& p : t.passes) {
@@ -86,7 +88,7 @@ std::string serialize_trace(const Trace& t) {
       put_u32(out, f.z);
       for (uint8_t c : {f.color.r, f.color.g, f.color.b, f.color.a}) put_u8(out, c);
       put_u8(out, f.front ? 1 : 0);
-      put_u8(out, 0);
+      put_u8(out, f.coverage);  // flags bits 8..15
       put_u16(out, 0);
       put_u32(out, f.prim);
     }
@@ -118,6 +120,12 @@ Trace parse_trace(const std::string& bytes, const std::string& name) {
     r.fail(at_bits, fmt::format("depth width {} is out of range ({} to {})", bits, kMinDepthBits,
                                 kMaxDepthBits));
   t.depth_bits = int(bits);
+  const size_t at_samples = r.offset();
+  const uint64_t samples = r.get(4, "the coverage samples");
+  if (samples > uint64_t(kMaxCoverageSamples) || !valid_coverage_samples(int(samples)))
+    r.fail(at_samples, fmt::format("coverage samples {} is not a power of two from 1 to {}",
+                                   samples, kMaxCoverageSamples));
+  t.coverage_samples = int(samples);
   t.clear_color.r = uint8_t(r.get(1, "the clear colour"));
   t.clear_color.g = uint8_t(r.get(1, "the clear colour"));
   t.clear_color.b = uint8_t(r.get(1, "the clear colour"));
@@ -155,9 +163,14 @@ Trace parse_trace(const std::string& bytes, const std::string& name) {
                                t.height));
       if (z > depth_max(t.depth_bits))
         r.fail(at, fmt::format("fragment depth {} exceeds {} bits", z, t.depth_bits));
-      if (flags > 1) r.fail(at, "fragment flags have reserved bits set");
+      if (flags & ~uint64_t{0xff01}) r.fail(at, "fragment flags have reserved bits set");
+      const uint64_t coverage = (flags >> 8) & 0xffu;
+      if (coverage > uint64_t(t.coverage_samples))
+        r.fail(at, fmt::format("fragment coverage {} exceeds the {} samples", coverage,
+                               t.coverage_samples));
       f.z = uint32_t(z);
       f.front = flags & 1;
+      f.coverage = uint8_t(coverage);
     }
     t.passes.push_back(std::move(pass));
   }
@@ -174,7 +187,8 @@ Trace read_trace(const std::string& path) {
 }
 
 std::vector<PassStats> replay_trace(const Trace& trace, Backend& backend) {
-  backend.begin_frame(trace.width, trace.height, trace.depth_bits, trace.clear_color);
+  backend.begin_frame(trace.width, trace.height, trace.depth_bits, trace.clear_color,
+                      trace.coverage_samples);
   std::vector<PassStats> stats;
   for (const TracePass& p : trace.passes) {
     backend.label_pass(p.name);

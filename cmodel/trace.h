@@ -22,6 +22,7 @@ struct Trace {
   int width = 0;
   int height = 0;
   int depth_bits = kDefaultDepthBits;
+  int coverage_samples = kDefaultCoverageSamples;
   Rgba8 clear_color;
   std::vector<TracePass> passes;
 };

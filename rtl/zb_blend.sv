@@ -3,14 +3,25 @@
 //   replace:  c' = s
 //   alpha:    c' = min(255, m(s, a) + m(d, 255 - a))
 //   additive: c' = min(255, d + m(s, a))
-// a is the source alpha (src_i[31:24]) for every channel, alpha included.
-// Mode 3 (reserved for coverage) behaves as replace.
-module zb_blend (
-  input  logic [1:0]  mode_i,  // 0 replace, 1 alpha, 2 additive, 3 reserved (= replace)
-  input  logic [31:0] src_i,   // fragment colour: r [7:0], g [15:8], b [23:16], a [31:24]
-  input  logic [31:0] dst_i,   // stored colour, same packing
-  output logic [31:0] color_o
+//   coverage: c' = (w * s + (N - w) * d + N/2) >> log2(N), w = weight_i (zb_coverage_composite)
+// a is the source alpha (src_i[31:24]) for every channel, alpha included. The coverage blend
+// treats alpha as a fourth channel, weighted by coverage like R, G and B.
+module zb_blend #(
+  parameter int unsigned COV_SAMPLES = 16,  // N: 1, 2, 4, 8 or 16
+  localparam int unsigned CovW       = $clog2(COV_SAMPLES + 1)
+) (
+  input  logic [1:0]      mode_i,    // 0 replace, 1 alpha, 2 additive, 3 coverage
+  input  logic [31:0]     src_i,     // fragment colour: r [7:0], g [15:8], b [23:16], a [31:24]
+  input  logic [31:0]     dst_i,     // stored colour, same packing
+  input  logic [CovW-1:0] weight_i,  // coverage: samples of src_i, 0..N
+  output logic [31:0]     color_o
 );
+
+  localparam int unsigned CovLog = $clog2(COV_SAMPLES);
+  // w * s + (N - w) * d + N/2 <= 255 N + N/2 < 2^(8 + CovLog): AccW = 8 + CovW bits hold it.
+  localparam int unsigned AccW = 8 + CovW;
+  localparam logic [CovW-1:0] Full = CovW'(COV_SAMPLES);
+  localparam logic [AccW-1:0] Half = AccW'(COV_SAMPLES / 2);
 
   // m(x, y). t + (t >> 8) + 0x80 <= 65025 + 254 + 128 = 65407 fits 16 bits; m is its upper
   // byte (the lower byte is the discarded fraction).
@@ -30,10 +41,12 @@ module zb_blend (
   endfunction
 
   logic [7:0] alpha, inv_alpha;
-  logic [31:0] alpha_blend, add_blend;
+  logic [31:0] alpha_blend, add_blend, cov_blend;
+  logic [CovW-1:0] inv_weight;
 
   assign alpha     = src_i[31:24];
   assign inv_alpha = 8'hff - alpha;
+  assign inv_weight = Full - weight_i;
 
   for (genvar c = 0; c < 4; c++) begin : g_chan
     logic [7:0] s, d, ms;
@@ -42,6 +55,14 @@ module zb_blend (
     assign ms = mul_unorm8(s, alpha);
     assign alpha_blend[8*c +: 8] = sat_add8(ms, mul_unorm8(d, inv_alpha));
     assign add_blend[8*c +: 8]   = sat_add8(d, ms);
+
+    // Coverage: the sum, shifted right by log2(N); its bits above 7 are always zero.
+    logic [AccW-1:0] acc, shifted;
+    logic            unused_hi;
+    assign acc     = AccW'(s) * AccW'(weight_i) + AccW'(d) * AccW'(inv_weight) + Half;
+    assign shifted = acc >> CovLog;
+    assign cov_blend[8*c +: 8] = shifted[7:0];
+    assign unused_hi = ^shifted[AccW-1:8];
   end
 
   always_comb begin
@@ -50,7 +71,7 @@ module zb_blend (
       2'd0:    color_o = src_i;        // replace
       2'd1:    color_o = alpha_blend;  // alpha
       2'd2:    color_o = add_blend;    // additive
-      2'd3:    color_o = src_i;        // reserved: replace
+      2'd3:    color_o = cov_blend;    // coverage
       default: color_o = src_i;
     endcase
 `ifdef ZB_INJECT_BLEND_BUG

@@ -1,8 +1,9 @@
 // zb_rop: the per-pixel datapath (raster operations unit) of docs/datapath.md, top level.
 //
 // Three-stage pipeline, one fragment per clock, no interlock (docs/rtl.md has the diagram):
-//   S0  accept (frag_valid_i && frag_ready_o); issue the depth-memory read.
-//   S1  depth read data; depth forwarding; depth test; depth write; issue the colour read.
+//   S0  accept (frag_valid_i && frag_ready_o); issue the depth- and coverage-memory reads.
+//   S1  depth and coverage read data; their forwarding; depth test, or in coverage mode the
+//       four-case decision (zb_coverage_composite); depth and coverage writes; colour read.
 //   S2  colour read data; colour forwarding; blend; write mask; colour write.
 // Each memory is read one edge before it is written, so a fragment's read can miss only the
 // write landing on the same edge (the previous fragment's); one forwarding register per
@@ -13,7 +14,9 @@ module zb_rop #(
   parameter int unsigned TILE_W     = 64,   // power of two
   parameter int unsigned TILE_H     = 64,   // power of two
   parameter int unsigned CNT_W      = 32,
-  localparam int unsigned AddrW     = $clog2(TILE_W * TILE_H)
+  parameter int unsigned COV_SAMPLES = 16,  // N of the sample pattern: 1, 2, 4, 8 or 16
+  localparam int unsigned AddrW     = $clog2(TILE_W * TILE_H),
+  localparam int unsigned CovW      = $clog2(COV_SAMPLES + 1)  // coverage count 0..N
 ) (
   input  logic                  clk_i,
   input  logic                  rst_ni,
@@ -27,14 +30,17 @@ module zb_rop #(
   input  logic [15:0]           frag_y_i,
   input  logic [DEPTH_BITS-1:0] frag_z_i,
   input  logic [31:0]           frag_rgba_i,
+  input  logic [CovW-1:0]       frag_cov_i,
   input  logic                  stall_i,
   input  logic                  tile_req_i,
   input  logic                  tile_we_i,
   input  logic [AddrW-1:0]      tile_addr_i,
   input  logic [31:0]           tile_wcolor_i,
   input  logic [DEPTH_BITS-1:0] tile_wdepth_i,
+  input  logic [CovW-1:0]       tile_wcov_i,
   output logic [31:0]           tile_rcolor_o,
   output logic [DEPTH_BITS-1:0] tile_rdepth_o,
+  output logic [CovW-1:0]       tile_rcov_o,
   output logic                  busy_o,
   input  logic                  cnt_clear_i,
   output logic [CNT_W-1:0]      cnt_frag_in_o,
@@ -59,6 +65,10 @@ module zb_rop #(
   if (DEPTH_BITS < 8 || DEPTH_BITS > 32) begin : g_bad_depth
     $error("zb_rop: DEPTH_BITS must be 8..32");
   end
+  if (COV_SAMPLES < 1 || COV_SAMPLES > 16 || (COV_SAMPLES & (COV_SAMPLES - 1)) != 0)
+  begin : g_bad_cov
+    $error("zb_rop: COV_SAMPLES must be 1, 2, 4, 8 or 16");
+  end
 `endif
 
   // ---------------------------------------------------------------------------------------
@@ -82,6 +92,9 @@ module zb_rop #(
   assign st_depth_write = state_q[4];
   assign st_blend       = state_q[6:5];
   assign st_color_mask  = state_q[10:7];
+
+  logic st_cov;  // coverage mode: blend code 3 (docs/datapath.md "Coverage blend")
+  assign st_cov = st_blend == 2'd3;
 
   // ---------------------------------------------------------------------------------------
   // Tile port decode
@@ -109,16 +122,19 @@ module zb_rop #(
   logic [AddrW-1:0]      s1_addr_d, s1_addr_q;
   logic [DEPTH_BITS-1:0] s1_z_d, s1_z_q;
   logic [31:0]           s1_rgba_d, s1_rgba_q;
+  logic [CovW-1:0]       s1_cov_d, s1_cov_q;
 
   always_comb begin
     s1_valid_d = accept;
     s1_addr_d  = s1_addr_q;
     s1_z_d     = s1_z_q;
     s1_rgba_d  = s1_rgba_q;
+    s1_cov_d   = s1_cov_q;
     if (accept) begin
       s1_addr_d = s0_addr;
       s1_z_d    = frag_z_i;
       s1_rgba_d = frag_rgba_i;
+      s1_cov_d  = frag_cov_i;
     end
   end
 
@@ -126,6 +142,9 @@ module zb_rop #(
   // An accepted fragment lies inside the resident tile.
   FragInTile: assert property (@(posedge clk_i) disable iff (!rst_ni)
       accept |-> (dx < 16'(TILE_W) && dy < 16'(TILE_H)));
+  // A fragment covers at most the N samples of a pixel.
+  FragCoverageInRange: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      accept |-> (frag_cov_i <= CovW'(COV_SAMPLES)));
 `endif
 
   // Depth memory. Read: S0 (fragment) or the tile port. Write: S1 (fragment) or the tile port.
@@ -157,9 +176,74 @@ module zb_rop #(
     .pass_o  (s1_cmp)
   );
 
-  // Test off: every fragment passes and depth is never written.
-  assign s1_pass = ~st_depth_test | s1_cmp;
-  assign s1_dwe  = s1_valid_q & s1_pass & st_depth_test & st_depth_write;
+  // Coverage memory: read and written with the depth memory's timing (read S0, write S1), so
+  // it forwards the same way (vfwd).
+  logic                  vmem_re, vmem_we;
+  logic [AddrW-1:0]      vmem_raddr, vmem_waddr;
+  logic [CovW-1:0]       vmem_rdata, vmem_wdata;
+  logic                  vfwd_valid_d, vfwd_valid_q;
+  logic [AddrW-1:0]      vfwd_addr_d, vfwd_addr_q;
+  logic [CovW-1:0]       vfwd_cov_d, vfwd_cov_q;
+  logic                  s1_vfwd_hit;
+  logic [CovW-1:0]       s1_cs;        // stored coverage as sequential processing sees it
+  logic                  s1_nearer, s1_vwe;
+  logic [CovW-1:0]       s1_weight, s1_cov_new;
+
+  assign s1_vfwd_hit = vfwd_valid_q && (vfwd_addr_q == s1_addr_q);
+  assign s1_cs       = s1_vfwd_hit ? vfwd_cov_q : vmem_rdata;
+
+  zb_coverage_composite #(
+    .DEPTH_BITS (DEPTH_BITS),
+    .COV_SAMPLES(COV_SAMPLES)
+  ) u_coverage (
+    .z_i         (s1_z_q),
+    .stored_z_i  (s1_zs),
+    .cov_i       (s1_cov_q),
+    .stored_cov_i(s1_cs),
+    .nearer_o    (s1_nearer),
+    .weight_o    (s1_weight),
+    .cov_o       (s1_cov_new)
+  );
+
+  // Test off: every fragment passes and depth is never written. Coverage mode: every fragment
+  // passes to the compositing; depth is written only in the nearer case.
+  assign s1_pass = st_cov | ~st_depth_test | s1_cmp;
+  assign s1_dwe  = s1_valid_q & s1_pass & st_depth_test & st_depth_write &
+                   (~st_cov | s1_nearer);
+  assign s1_vwe  = s1_valid_q & st_cov;
+
+  always_comb begin
+    vfwd_valid_d = s1_valid_q;
+    vfwd_addr_d  = s1_addr_q;
+    vfwd_cov_d   = s1_vwe ? s1_cov_new : s1_cs;
+  end
+
+  always_comb begin
+    vmem_re    = accept | tile_rd;
+    vmem_raddr = tile_req_i ? tile_addr_i : s0_addr;
+    vmem_we    = s1_vwe | tile_wr;
+    vmem_waddr = s1_vwe ? s1_addr_q : tile_addr_i;
+    vmem_wdata = s1_vwe ? s1_cov_new : tile_wcov_i;
+  end
+
+  zb_tile_mem #(
+    .WIDTH(CovW),
+    .WORDS(Words)
+  ) u_cov_mem (
+    .clk_i  (clk_i),
+    .re_i   (vmem_re),
+    .raddr_i(vmem_raddr),
+    .rdata_o(vmem_rdata),
+    .we_i   (vmem_we),
+    .waddr_i(vmem_waddr),
+    .wdata_i(vmem_wdata)
+  );
+
+`ifndef SYNTHESIS
+  // The coverage plane holds counts 0..N: a coverage-mode fragment never reads more.
+  StoredCoverageInRange: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (s1_valid_q && st_cov) |-> (s1_cs <= CovW'(COV_SAMPLES)));
+`endif
 
   always_comb begin
     dfwd_valid_d = s1_valid_q;
@@ -192,16 +276,19 @@ module zb_rop #(
   logic [AddrW-1:0] s2_addr_d, s2_addr_q;
   logic [31:0]      s2_rgba_d, s2_rgba_q;
   logic             s2_pass_d, s2_pass_q;
+  logic [CovW-1:0]  s2_weight_d, s2_weight_q;
 
   always_comb begin
-    s2_valid_d = s1_valid_q;
-    s2_addr_d  = s2_addr_q;
-    s2_rgba_d  = s2_rgba_q;
-    s2_pass_d  = s2_pass_q;
+    s2_valid_d  = s1_valid_q;
+    s2_addr_d   = s2_addr_q;
+    s2_rgba_d   = s2_rgba_q;
+    s2_pass_d   = s2_pass_q;
+    s2_weight_d = s2_weight_q;
     if (s1_valid_q) begin
-      s2_addr_d = s1_addr_q;
-      s2_rgba_d = s1_rgba_q;
-      s2_pass_d = s1_pass;
+      s2_addr_d   = s1_addr_q;
+      s2_rgba_d   = s1_rgba_q;
+      s2_pass_d   = s1_pass;
+      s2_weight_d = s1_weight;
     end
   end
 
@@ -223,11 +310,14 @@ module zb_rop #(
   assign s2_cfwd_hit = cfwd_valid_q && (cfwd_addr_q == s2_addr_q);
   assign s2_cs       = s2_cfwd_hit ? cfwd_color_q : cmem_rdata;
 
-  zb_blend u_blend (
-    .mode_i (st_blend),
-    .src_i  (s2_rgba_q),
-    .dst_i  (s2_cs),
-    .color_o(s2_blended)
+  zb_blend #(
+    .COV_SAMPLES(COV_SAMPLES)
+  ) u_blend (
+    .mode_i  (st_blend),
+    .src_i   (s2_rgba_q),
+    .dst_i   (s2_cs),
+    .weight_i(s2_weight_q),
+    .color_o (s2_blended)
   );
 
   zb_color_mask u_color_mask (
@@ -268,6 +358,7 @@ module zb_rop #(
 
   assign tile_rcolor_o = cmem_rdata;
   assign tile_rdepth_o = dmem_rdata;
+  assign tile_rcov_o   = vmem_rdata;
   assign busy_o        = s1_valid_q | s2_valid_q;
 
   // ---------------------------------------------------------------------------------------
@@ -280,6 +371,11 @@ module zb_rop #(
       s1_addr_q    <= '0;
       s1_z_q       <= '0;
       s1_rgba_q    <= '0;
+      s1_cov_q     <= '0;
+      vfwd_valid_q <= 1'b0;
+      vfwd_addr_q  <= '0;
+      vfwd_cov_q   <= '0;
+      s2_weight_q  <= '0;
       dfwd_valid_q <= 1'b0;
       dfwd_addr_q  <= '0;
       dfwd_depth_q <= '0;
@@ -296,6 +392,11 @@ module zb_rop #(
       s1_addr_q    <= s1_addr_d;
       s1_z_q       <= s1_z_d;
       s1_rgba_q    <= s1_rgba_d;
+      s1_cov_q     <= s1_cov_d;
+      vfwd_valid_q <= vfwd_valid_d;
+      vfwd_addr_q  <= vfwd_addr_d;
+      vfwd_cov_q   <= vfwd_cov_d;
+      s2_weight_q  <= s2_weight_d;
       dfwd_valid_q <= dfwd_valid_d;
       dfwd_addr_q  <= dfwd_addr_d;
       dfwd_depth_q <= dfwd_depth_d;
@@ -319,16 +420,16 @@ module zb_rop #(
   logic [NumCnt*CNT_W-1:0] cnt_all;
 
   assign s1_color_on   = s1_valid_q & s1_pass & (st_color_mask != 4'h0);
-  // Replace (and reserved code 3, which behaves as replace) with all four channels written
-  // needs no destination colour.
-  assign s1_reads_dest = (st_blend == 2'd1) | (st_blend == 2'd2) | (st_color_mask != 4'hf);
+  // Replace with all four channels written needs no destination colour; the other modes
+  // (alpha, additive, coverage) blend with it.
+  assign s1_reads_dest = (st_blend != 2'd0) | (st_color_mask != 4'hf);
 
   always_comb begin
     cnt_inc    = '0;
     cnt_inc[0] = s1_valid_q;                       // fragments_in
     cnt_inc[1] = s1_valid_q & s1_pass;             // fragments_passed
     cnt_inc[2] = s1_valid_q & ~s1_pass;            // fragments_killed
-    cnt_inc[3] = s1_valid_q & st_depth_test;       // depth_reads
+    cnt_inc[3] = s1_valid_q & (st_depth_test | st_cov);  // depth_reads
     cnt_inc[4] = s1_dwe;                           // depth_writes
     cnt_inc[5] = s1_color_on & s1_reads_dest;      // color_reads
     cnt_inc[6] = s1_color_on;                      // color_writes
@@ -373,19 +474,24 @@ module zb_rop #(
 
   // Forwarding invariant: a fragment's read can miss at most one write to its memory, the one
   // landing on the read edge, and that write is the previous fragment's, held in the
-  // forwarding register. dwe_last_q/cwe_last_q record the writes of the previous edge.
-  logic             dwe_last_q, cwe_last_q;
-  logic [AddrW-1:0] dwaddr_last_q, cwaddr_last_q;
+  // forwarding register. dwe_last_q/vwe_last_q/cwe_last_q record the writes of the previous
+  // edge.
+  logic             dwe_last_q, vwe_last_q, cwe_last_q;
+  logic [AddrW-1:0] dwaddr_last_q, vwaddr_last_q, cwaddr_last_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       dwe_last_q    <= 1'b0;
       dwaddr_last_q <= '0;
+      vwe_last_q    <= 1'b0;
+      vwaddr_last_q <= '0;
       cwe_last_q    <= 1'b0;
       cwaddr_last_q <= '0;
     end else begin
       dwe_last_q    <= dmem_we;
       dwaddr_last_q <= dmem_waddr;
+      vwe_last_q    <= vmem_we;
+      vwaddr_last_q <= vmem_waddr;
       cwe_last_q    <= cmem_we;
       cwaddr_last_q <= cmem_waddr;
     end
@@ -393,14 +499,24 @@ module zb_rop #(
 
   DepthFwdCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
       (s1_valid_q && dwe_last_q) |-> (dfwd_valid_q && dfwd_addr_q == dwaddr_last_q));
+  CovFwdCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (s1_valid_q && vwe_last_q) |-> (vfwd_valid_q && vfwd_addr_q == vwaddr_last_q));
   ColorFwdCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
       (s2_valid_q && cwe_last_q) |-> (cfwd_valid_q && cfwd_addr_q == cwaddr_last_q));
 
   // The forwarding registers mirror the memory: they hold the pixel's current contents.
   DepthFwdMirror: assert property (@(posedge clk_i) disable iff (!rst_ni)
       dfwd_valid_q |-> (u_depth_mem.mem_q[dfwd_addr_q] == dfwd_depth_q));
+  CovFwdMirror: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      vfwd_valid_q |-> (u_cov_mem.mem_q[vfwd_addr_q] == vfwd_cov_q));
   ColorFwdMirror: assert property (@(posedge clk_i) disable iff (!rst_ni)
       cfwd_valid_q |-> (u_color_mem.mem_q[cfwd_addr_q] == cfwd_color_q));
+
+  // Coverage mode: the depth never moves farther, and the pixel's coverage never shrinks.
+  CovDepthNeverFarther: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (s1_valid_q && st_cov && s1_dwe) |-> (s1_z_q < s1_zs));
+  CovNeverShrinks: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (s1_valid_q && st_cov) |-> (s1_cov_new >= s1_cs));
 
   // A fragment in S1 moves to S2 on the next edge: the pipeline never holds or drops one.
   NoPipelineBubble: assert property (@(posedge clk_i) disable iff (!rst_ni)

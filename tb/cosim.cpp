@@ -33,9 +33,10 @@ std::string state_text(const RopState& s) {
 
 Cosim::Cosim(CosimOptions options) : opt_(std::move(options)), rtl_(opt_.rtl) {}
 
-void Cosim::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color) {
-  golden_.begin_frame(width, height, depth_bits, clear_color);
-  rtl_.begin_frame(width, height, depth_bits, clear_color);
+void Cosim::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
+                        int coverage_samples) {
+  golden_.begin_frame(width, height, depth_bits, clear_color, coverage_samples);
+  rtl_.begin_frame(width, height, depth_bits, clear_color, coverage_samples);
   ++frame_no_;
   pass_in_frame_ = 0;
 }
@@ -70,7 +71,8 @@ PassStats Cosim::end_pass() {
   const Framebuffer& rf = rtl_.framebuffer();
   size_t differing = 0, first = 0;
   for (size_t i = 0; i < gf.color.size(); ++i)
-    if (gf.color[i] != rf.color[i] || gf.depth[i] != rf.depth[i]) {
+    if (gf.color[i] != rf.color[i] || gf.depth[i] != rf.depth[i] ||
+        gf.coverage[i] != rf.coverage[i]) {
       if (differing++ == 0) first = i;
     }
   pixels_compared_ += gf.color.size();
@@ -94,10 +96,11 @@ void Cosim::report_pixel(int x, int y, size_t differing) {
   o << "MISMATCH in " << pass_label() << ": " << differing << " of " << gf.color.size()
     << " pixels differ\n";
   o << "pixel (" << x << "," << y << ") rtl=" << rgba(rf.color_at(x, y)) << " z="
-    << hex(rf.depth_at(x, y), zd) << " golden=" << rgba(gf.color_at(x, y)) << " z="
-    << hex(gf.depth_at(x, y), zd) << "\n";
+    << hex(rf.depth_at(x, y), zd) << " cov=" << rf.coverage_at(x, y)
+    << " golden=" << rgba(gf.color_at(x, y)) << " z=" << hex(gf.depth_at(x, y), zd)
+    << " cov=" << gf.coverage_at(x, y) << "\n";
   o << "  before the pass: " << rgba(before_.color_at(x, y)) << " z=" << hex(before_.depth_at(x, y), zd)
-    << "\n";
+    << " cov=" << before_.coverage_at(x, y) << "\n";
   o << "  state: " << state_text(state_) << "\n";
   const std::vector<Fragment>& frags = rtl_.pass_fragments();
   const std::vector<uint64_t>& acc = rtl_.accept_cycles();
@@ -111,7 +114,8 @@ void Cosim::report_pixel(int x, int y, size_t differing) {
     lo = std::min(lo, acc[i]);
     hi = std::max(hi, acc[i]);
     if (touching <= 64)
-      list << "    #" << i << " z=" << hex(f.z, zd) << " " << rgba(f.color) << " prim=" << f.prim
+      list << "    #" << i << " z=" << hex(f.z, zd) << " " << rgba(f.color)
+           << " cov=" << int(f.coverage) << " prim=" << f.prim
            << " accepted at cycle " << acc[i] << "\n";
   }
   o << "  fragments of this pass at (" << x << "," << y << "): " << touching << "\n" << list.str();
@@ -136,7 +140,8 @@ void Cosim::report_pixel(int x, int y, size_t differing) {
       const Framebuffer replayed = rtl_.replay_tile(before_, x0, y0, opt_.mismatch_fst, from, to);
       fst = opt_.mismatch_fst;
       const bool same = replayed.color_at(x, y) == rf.color_at(x, y) &&
-                        replayed.depth_at(x, y) == rf.depth_at(x, y);
+                        replayed.depth_at(x, y) == rf.depth_at(x, y) &&
+                        replayed.coverage_at(x, y) == rf.coverage_at(x, y);
       o << "  waveform: " << fst << " (cycles " << from << ".." << to << " of tile (" << x0 << ","
         << y0 << "), time = 2*cycle+1 at the rising edge; replay "
         << (same ? "reproduced the mismatch" : "did NOT reproduce the RTL value") << ")\n";

@@ -1,5 +1,5 @@
 // Co-simulation: the golden model and the RTL in lockstep on the same calls; after every pass
-// every colour and depth bit of the frame is compared, and the pass counters too. The first
+// every colour, depth and coverage bit of the frame is compared, and the pass counters too. The first
 // mismatch stops the run with a report naming both sides and an FST of the cycles around it.
 #pragma once
 
@@ -38,7 +38,9 @@ class Cosim final : public Backend {
  public:
   explicit Cosim(CosimOptions options = {});
   const char* name() const override { return "both"; }
-  void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color) override;
+  using Backend::begin_frame;
+  void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
+                   int coverage_samples) override;
   void begin_pass(const RopState& state) override;
   using Backend::draw;
   void draw(const Fragment* fragments, size_t count) override;

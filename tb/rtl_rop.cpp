@@ -31,6 +31,7 @@ namespace zb {
 static_assert(VParams::TILE_W == kRtlTileW, "tb mirror of TILE_W disagrees with the RTL");
 static_assert(VParams::TILE_H == kRtlTileH, "tb mirror of TILE_H disagrees with the RTL");
 static_assert(VParams::DEPTH_BITS == kRtlDepthBits, "tb mirror of DEPTH_BITS disagrees");
+static_assert(VParams::COV_SAMPLES == kRtlCoverageSamples, "tb mirror of COV_SAMPLES disagrees");
 static_assert(VParams::CNT_W == 32, "the driver reads 32-bit counters");
 
 namespace {
@@ -66,6 +67,7 @@ Rgba8 unpack_rgba(uint32_t v) {
 struct Streamed {
   uint16_t x, y;
   uint32_t z, rgba, index;
+  uint8_t cov;
 };
 
 // One Verilated model with its context, clock and optional FST.
@@ -191,6 +193,7 @@ struct RtlRop::Impl {
         t.tile_addr_i = y * kRtlTileW + x;
         t.tile_wcolor_i = pack_rgba(src.color[i]);
         t.tile_wdepth_i = src.depth[i];
+        t.tile_wcov_i = src.coverage[i];
         s.tick();
       }
     t.tile_req_i = 0;
@@ -218,6 +221,7 @@ struct RtlRop::Impl {
         t.frag_y_i = f[k].y;
         t.frag_z_i = f[k].z;
         t.frag_rgba_i = f[k].rgba;
+        t.frag_cov_i = f[k].cov;
         accept_out[f[k].index] = s.cycle;
         s.tick();
       }
@@ -231,6 +235,7 @@ struct RtlRop::Impl {
         t.frag_y_i = f[k].y;
         t.frag_z_i = f[k].z;
         t.frag_rgba_i = f[k].rgba;
+        t.frag_cov_i = f[k].cov;
         if (valid && !stall) {
           accept_out[f[k].index] = s.cycle;
           ++k;
@@ -270,6 +275,7 @@ struct RtlRop::Impl {
         const size_t i = dst.index(x0 + x, y0 + y);
         dst.color[i] = unpack_rgba(t.tile_rcolor_o);
         dst.depth[i] = t.tile_rdepth_o;
+        dst.coverage[i] = t.tile_rcov_o;
       }
     t.tile_req_i = 0;
     run.store_end = s.cycle;
@@ -286,7 +292,7 @@ struct RtlRop::Impl {
     for (size_t i = 0; i < frags.size(); ++i) {
       const Fragment& f = frags[i];
       binned[pos[size_t(f.y / kRtlTileH) * tx + f.x / kRtlTileW]++] =
-          Streamed{f.x, f.y, f.z, pack_rgba(f.color), uint32_t(i)};
+          Streamed{f.x, f.y, f.z, pack_rgba(f.color), uint32_t(i), f.coverage};
     }
   }
 };
@@ -294,14 +300,19 @@ struct RtlRop::Impl {
 RtlRop::RtlRop(RtlOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {}
 RtlRop::~RtlRop() = default;
 
-void RtlRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color) {
+void RtlRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
+                         int coverage_samples) {
+  if (coverage_samples != kRtlCoverageSamples)
+    throw std::invalid_argument("rtl backend: coverage samples " +
+                                std::to_string(coverage_samples) + ", the Verilated zb_rop has " +
+                                std::to_string(kRtlCoverageSamples));
   if (depth_bits != kRtlDepthBits)
     throw std::invalid_argument("rtl backend: depth bits " + std::to_string(depth_bits) +
                                 ", the Verilated zb_rop has " + std::to_string(kRtlDepthBits));
   if (width < 1 || height < 1 || width > 65535 || height > 65535)
     throw std::invalid_argument("rtl backend: frame size " + std::to_string(width) + "x" +
                                 std::to_string(height) + " outside 1..65535");
-  impl_->fb = Framebuffer(width, height, depth_bits, clear_color);
+  impl_->fb = Framebuffer(width, height, depth_bits, clear_color, coverage_samples);
   impl_->in_pass = false;
 }
 
@@ -319,6 +330,11 @@ void RtlRop::draw(const Fragment* fragments, size_t count) {
     if (fragments[i].x >= m.fb.width || fragments[i].y >= m.fb.height)
       throw std::invalid_argument("rtl backend: fragment (" + std::to_string(fragments[i].x) +
                                   "," + std::to_string(fragments[i].y) + ") outside the frame");
+  for (size_t i = 0; i < count; ++i)
+    if (fragments[i].coverage > kRtlCoverageSamples)
+      throw std::invalid_argument("rtl backend: fragment coverage " +
+                                  std::to_string(fragments[i].coverage) + " exceeds " +
+                                  std::to_string(kRtlCoverageSamples) + " samples");
   m.frags.insert(m.frags.end(), fragments, fragments + count);
 }
 

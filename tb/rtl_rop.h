@@ -18,6 +18,7 @@ class CoverageTotals;
 constexpr int kRtlTileW = 64;
 constexpr int kRtlTileH = 64;
 constexpr int kRtlDepthBits = 24;
+constexpr int kRtlCoverageSamples = 16;  // COV_SAMPLES
 
 struct RtlOptions {
   double backpressure = 0;  // probability per cycle of stall_i, and (independently) of a valid gap
@@ -47,7 +48,9 @@ class RtlRop final : public Backend {
   RtlRop& operator=(const RtlRop&) = delete;
 
   const char* name() const override { return "rtl"; }
-  void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color) override;
+  using Backend::begin_frame;
+  void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
+                   int coverage_samples) override;
   void begin_pass(const RopState& state) override;
   using Backend::draw;
   void draw(const Fragment* fragments, size_t count) override;

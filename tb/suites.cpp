@@ -78,7 +78,7 @@ Tally suite_scenes(const Config& c) {
       for (const PassPlan& plan : pass_plans()) {
         const bool ok = run_iteration("scenes", c, seed, t, [&](Cosim& cs) {
           cs.begin_frame(rs.viewport.width, rs.viewport.height, rs.viewport.depth_bits,
-                         rs.background);
+                         rs.background, rs.viewport.coverage_samples);
           for (const PassState& p : plan.passes)
             draw_pass(cs, sname + "/" + plan.name + "/" + p.name, p.rop, pass_fragments(rs, p));
         });
@@ -95,7 +95,7 @@ RopState random_state(Rng& r) {
   s.depth_test = !r.chance(0.15);
   s.depth_func = DepthFunc(r.below(8));
   s.depth_write = r.chance(0.6);
-  s.blend = BlendMode(r.below(3));
+  s.blend = BlendMode(r.below(4));  // replace, alpha, additive, coverage
   const uint32_t m = r.below(4);
   s.color_mask = m == 0 ? uint8_t(r.below(16)) : uint8_t(kMaskRgba);
   return s;
@@ -148,6 +148,9 @@ std::vector<Fragment> random_stream(Rng& r, int w, int h, size_t n, int hot, dou
     if (r.chance(0.05)) zpool[r.below(uint32_t(zpool.size()))] = f.z;
     f.color = Rgba8{pick_channel(r), pick_channel(r), pick_channel(r), pick_alpha(r)};
     f.front = r.chance(0.5);
+    // Coverage: 0 (the rasterizer never sends it; the datapath defines it), 1, N - 1, N, or any.
+    static const uint8_t kCov[] = {0, 1, kRtlCoverageSamples - 1, kRtlCoverageSamples};
+    f.coverage = r.chance(0.5) ? kCov[r.below(4)] : uint8_t(r.below(kRtlCoverageSamples + 1));
     f.prim = uint32_t(out.size() / 16);
     out.push_back(f);
   }
@@ -197,7 +200,9 @@ RopState HazardStimulus::next_state() {
     static const DepthFunc busy[] = {DepthFunc::kAlways, DepthFunc::kLequal, DepthFunc::kGequal,
                                      DepthFunc::kNotequal};
     st.depth_func = busy[rng_.below(4)];
-    st.blend = rng_.chance(0.5) ? BlendMode::kAlpha : BlendMode::kAdditive;
+    static const BlendMode rmw[] = {BlendMode::kAlpha, BlendMode::kAdditive,
+                                    BlendMode::kCoverage};
+    st.blend = rmw[rng_.below(3)];
   }
   return st;
 }
@@ -330,6 +335,43 @@ void blend_alpha_channel(Cosim& cs, BlendMode mode, const char* tag) {
   }
 }
 
+// Coverage: all (k, s, d), k = 0..N, through the whole pipeline. A replace pass (depth test
+// off: depth stays ZMAX, coverage 0) loads d; a coverage pass at z = 0 is then nearer on every
+// pixel, so the weight is k: "(w*s + (N - w)*d + N/2) >> log2 N" with w = k (the farther and
+// full cases use the same unit with w = N - cs and N, values k covers). As blend_rgb, three
+// triples per pixel: d on R, d + 86 on G, d + 172 on B (clamped), all four channels blended.
+void blend_coverage_rgb(Cosim& cs) {
+  RopState load;
+  load.depth_test = false;
+  load.blend = BlendMode::kReplace;
+  RopState st;
+  st.depth_test = true;
+  st.depth_write = true;
+  st.blend = BlendMode::kCoverage;
+  constexpr uint64_t kTotal = uint64_t(kRtlCoverageSamples + 1) * 256 * 86;  // d fastest, s, k
+  std::vector<Fragment> dst, src;
+  int pass = 0;
+  for (uint64_t first = 0; first < kTotal; first += kBlendPix) {
+    cs.begin_frame(kBlendW, kBlendH, 24, Rgba8{0, 0, 0, 0}, kRtlCoverageSamples);
+    dst.clear();
+    src.clear();
+    for (uint64_t v = first; v < std::min<uint64_t>(kTotal, first + kBlendPix); ++v) {
+      const uint8_t d = uint8_t(v % 86), s = uint8_t(v / 86 % 256);
+      const uint8_t k = uint8_t(v / (86 * 256));
+      const int i = int(v - first);
+      dst.push_back(at_pixel(i, Rgba8{d, uint8_t(std::min(255, d + 86)),
+                                      uint8_t(std::min(255, d + 172)), uint8_t(v * 7u)}));
+      Fragment f = at_pixel(i, Rgba8{s, s, s, uint8_t(255 - s)});
+      f.z = 0;
+      f.coverage = k;
+      src.push_back(f);
+    }
+    const std::string n = std::to_string(++pass);
+    draw_pass(cs, "blend-coverage-load-" + n, load, dst);
+    draw_pass(cs, "blend-coverage-" + n, st, src);
+  }
+}
+
 }  // namespace
 
 // blend: the blend unit exhaustively, through the whole pipeline, for both modes that read the
@@ -345,12 +387,13 @@ Tally suite_blend(const Config& c) {
       blend_alpha_channel(cs, BlendMode::kAlpha, "alpha");
       blend_rgb(cs, BlendMode::kAdditive, "additive", count);
       blend_alpha_channel(cs, BlendMode::kAdditive, "additive");
+      blend_coverage_rgb(cs);
     });
     if (!ok) break;
   }
   t.note = count >= kBlendIndices
                ? "per iteration and per mode (alpha, additive): all 2^24 (s, a, d) on R/G/B, "
-                 "all 2^16 (a, d) on A"
+                 "all 2^16 (a, d) on A; coverage: all (k, s, d), k = 0..N"
                : "per iteration and per mode (alpha, additive): a sample of " +
                      std::to_string(3 * count) + " (s, a, d) on R/G/B, all 2^16 (a, d) on A";
   return t;
@@ -363,7 +406,9 @@ const std::vector<Suite>& suites() {
        suite_random},
       {"hazard", "runs of fragments on 1-4 pixels mixed with random ones; fragments per clock",
        suite_hazard},
-      {"blend", "alpha and additive blend over all 2^24 (s, a, d) and 2^16 (a, d) on A",
+      {"blend",
+       "alpha and additive over all 2^24 (s, a, d), 2^16 (a, d) on A; coverage over all "
+       "(k, s, d)",
        suite_blend},
   };
   return kSuites;

@@ -12,7 +12,7 @@ fail() { echo "FAIL: $*"; echo "--- output:"; cat "$tmp/out.txt"; exit 1; }
   >"$tmp/out.txt" 2>&1
 rc=$?
 [[ $rc -ne 0 ]] || fail "the bug-injected RTL passed (exit 0)"
-grep -qE 'pixel \([0-9]+,[0-9]+\) rtl=rgba\([0-9,]+\) z=0x[0-9a-f]+ golden=rgba' "$tmp/out.txt" \
+grep -qE 'pixel \([0-9]+,[0-9]+\) rtl=rgba\([0-9,]+\) z=0x[0-9a-f]+ cov=[0-9]+ golden=rgba' "$tmp/out.txt" \
   || fail "no 'pixel (x,y) rtl=... golden=...' line"
 grep -q 'accepted at cycle' "$tmp/out.txt" || fail "no fragments listed for the pixel"
 grep -q 'replay reproduced the mismatch' "$tmp/out.txt" || fail "the waveform replay did not reproduce it"

@@ -19,14 +19,11 @@ TEST(Trace, StatePackingRoundTripsEveryValidWord) {
   int valid = 0;
   for (uint32_t bits = 0; bits < (1u << zb::kStateBits); ++bits) {
     zb::RopState s;
-    if (!zb::unpack_state(uint16_t(bits), s)) {
-      EXPECT_EQ((bits >> 5) & 3u, 3u) << "only the reserved blend code is invalid";
-      continue;
-    }
+    if (!zb::unpack_state(uint16_t(bits), s)) continue;
     ++valid;
     EXPECT_EQ(zb::pack_state(s), bits);
   }
-  EXPECT_EQ(valid, 3 * (1 << 9));
+  EXPECT_EQ(valid, 1 << zb::kStateBits);  // every blend code is valid: 3 is coverage
   zb::RopState s;
   EXPECT_FALSE(zb::unpack_state(1u << zb::kStateBits, s));
 }
@@ -45,7 +42,7 @@ TEST(Trace, RoundTripAndReplayMatchRender) {
     for (size_t i = 0; i < t.passes[p].fragments.size(); ++i) {
       const zb::Fragment &a = back.passes[p].fragments[i], &b = t.passes[p].fragments[i];
       EXPECT_TRUE(a.x == b.x && a.y == b.y && a.z == b.z && a.color == b.color &&
-                  a.front == b.front && a.prim == b.prim);
+                  a.front == b.front && a.coverage == b.coverage && a.prim == b.prim);
     }
   }
   zb::GoldenRop from_trace, direct;
@@ -73,7 +70,8 @@ TEST(Trace, EveryTruncationIsRejected) {
   expect_rejected(bytes + "x", "after the last pass");
 }
 
-// Offsets into the header: magic 0, version 8, width 12, height 16, depth bits 20.
+// Offsets into the header: magic 0, version 8, width 12, height 16, depth bits 20, coverage
+// samples 24, clear colour 28, pass count 32.
 TEST(Trace, DamagedFieldsNameTheProblem) {
   const std::string good = zb::serialize_trace(small_trace());
   auto patched = [&](size_t at, std::initializer_list<uint8_t> b) {
@@ -82,16 +80,22 @@ TEST(Trace, DamagedFieldsNameTheProblem) {
     return s;
   };
   expect_rejected(patched(0, {'X'}), "bad magic");
-  expect_rejected(patched(8, {2}), "version 2");
+  expect_rejected(patched(8, {1}), "version 1");
   expect_rejected(patched(12, {0, 0}), "out of range");
   expect_rejected(patched(20, {40}), "depth width 40");
-  // First pass: name length at 32, name, then the state word.
-  const size_t name_len = uint8_t(good[32]);
-  expect_rejected(patched(36 + name_len, {0x60, 0x00}), "invalid pass state");
-  expect_rejected(patched(38 + name_len, {0xff, 0xff, 0xff, 0xff}), "fragments announced");
-  const size_t first_fragment = 46 + name_len;
+  expect_rejected(patched(24, {3}), "coverage samples 3");
+  expect_rejected(patched(24, {32}), "coverage samples 32");
+  // First pass: name length at 36, name, then the state word.
+  const size_t name_len = uint8_t(good[36]);
+  expect_rejected(patched(40 + name_len, {0x00, 0x08}), "invalid pass state");
+  expect_rejected(patched(42 + name_len, {0xff, 0xff, 0xff, 0xff}), "fragments announced");
+  const size_t first_fragment = 50 + name_len;
   expect_rejected(patched(first_fragment, {0xff, 0x00}), "outside the 4x4 frame");
   expect_rejected(patched(first_fragment + 4, {0xff, 0xff, 0xff, 0xff}), "exceeds 24 bits");
+  // Flags: bit 0 front, bits 8..15 coverage (at most the header's 16), the rest reserved.
+  expect_rejected(patched(first_fragment + 12, {0x00, 17}), "coverage 17 exceeds the 16");
+  expect_rejected(patched(first_fragment + 12, {0x80}), "reserved bits");
+  expect_rejected(patched(first_fragment + 14, {0x01}), "reserved bits");
 }
 
 TEST(Trace, RandomDamageNeverCrashes) {

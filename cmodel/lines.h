@@ -1,0 +1,19 @@
+// Line rasterizer for tessellation edges (docs/raster.md, "Lines"): one fragment per pixel
+// cell the line crosses along its major axis, the minor coordinate and the depth evaluated at
+// the cell's centre clamped to the segment, exactly in integers.
+#pragma once
+
+#include <vector>
+
+#include "fragment.h"
+#include "geometry.h"
+
+namespace zb {
+
+// Appends the fragments of the segment (a, b) inside the viewport to `out`, in ascending major
+// coordinate; the result does not depend on the order of a and b. Every fragment carries
+// `color`, front = facing = true and `prim`.
+void rasterize_line(const ScreenVertex& a, const ScreenVertex& b, const Viewport& vp,
+                    Rgba8 color, uint32_t prim, std::vector<Fragment>& out);
+
+}  // namespace zb
