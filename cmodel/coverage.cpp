@@ -8,12 +8,13 @@
 #include <string>
 #include <utility>
 
+#include "fixed_point_setup.h"
+
 namespace zb {
 namespace {
 
 __extension__ typedef __int128 i128;
 
-constexpr int64_t kCoordLimit = int64_t{1} << 24;  // as the rasterizer: setup stays inside
 
 // Column of sample i (its row is i) per pattern: raster.md "Coverage", table "Sample pattern".
 const int kCol1[] = {0};
@@ -29,17 +30,7 @@ std::vector<SamplePos> make_pattern(const int* col, int n) {
   return p;
 }
 
-int64_t floor_div(int64_t a, int64_t b) {  // b > 0
-  int64_t q = a / b;
-  if (a % b != 0 && a < 0) --q;
-  return q;
-}
-
-i128 floor_div128(i128 a, int64_t b) {  // b > 0
-  i128 q = a / b;
-  if (a % b != 0 && a < 0) --q;
-  return q;
-}
+using setup::floor_div;
 
 // The rasterizer's edge a->b (raster.md step 2 and 3): E(p) = (b.x - a.x)(p.y - a.y) -
 // (b.y - a.y)(p.x - a.x); covered iff E >= bias, bias 0 on a top or left edge, else 1.
@@ -56,13 +47,8 @@ Edge make_edge(const ScreenVertex& a, const ScreenVertex& b) {
   e.ey = int64_t{b.y} - a.y;
   e.ax = a.x;
   e.ay = a.y;
-  const bool top_left = e.ey < 0 || (e.ey == 0 && e.ex > 0);
-  e.bias = top_left ? 0 : 1;
+  e.bias = setup::top_left(e.ex, e.ey) ? 0 : 1;
   return e;
-}
-
-bool in_range(const ScreenVertex& v) {
-  return v.x >= -kCoordLimit && v.x <= kCoordLimit && v.y >= -kCoordLimit && v.y <= kCoordLimit;
 }
 
 }  // namespace
@@ -89,16 +75,10 @@ void rasterize_coverage(const ScreenTriangle& tri, const Viewport& vp, std::vect
     return;
   const std::vector<SamplePos>& pattern = sample_pattern(vp.coverage_samples);
   const int n = int(pattern.size());
-  ScreenVertex v[3] = {tri.v[0], tri.v[1], tri.v[2]};
-  if (!in_range(v[0]) || !in_range(v[1]) || !in_range(v[2])) return;
-
-  int64_t area = (int64_t{v[1].x} - v[0].x) * (int64_t{v[2].y} - v[0].y) -
-                 (int64_t{v[2].x} - v[0].x) * (int64_t{v[1].y} - v[0].y);
-  if (area == 0) return;
-  if (area < 0) {  // the rasterizer's orientation: positive area, inside where E > 0
-    std::swap(v[1], v[2]);
-    area = -area;
-  }
+  setup::OrientedTriangle t;  // the rasterizer's orientation: inside where E > 0
+  if (!setup::orient(tri, t)) return;
+  const ScreenVertex(&v)[3] = t.v;
+  const int64_t area = t.area;
 
   // Pixels with a sample position (256 px + 0..255) inside the vertices' box, scissored.
   const int64_t min_x = std::min({v[0].x, v[1].x, v[2].x});
@@ -149,7 +129,7 @@ void rasterize_coverage(const ScreenTriangle& tri, const Viewport& vp, std::vect
                             edge[1].at(cx + kSubpixelOne / 2, cy + kSubpixelOne / 2),
                             edge[2].at(cx + kSubpixelOne / 2, cy + kSubpixelOne / 2)};
       const i128 num = i128(w[0]) * zv[0] + i128(w[1]) * zv[1] + i128(w[2]) * zv[2] + half_area;
-      const i128 z = std::clamp<i128>(floor_div128(num, area), z_lo, z_hi);
+      const i128 z = std::clamp<i128>(floor_div(num, area), z_lo, z_hi);
       frag.x = static_cast<uint16_t>(px);
       frag.z = static_cast<uint32_t>(z);
       frag.coverage = static_cast<uint8_t>(count);

@@ -6,25 +6,19 @@
 #include <cstdlib>
 #include <utility>
 
+#include "fixed_point_setup.h"
+
 namespace zb {
 namespace {
 
 constexpr int64_t kHalf = kSubpixelOne / 2;
-// Setup keeps window coordinates below 2^24 in magnitude; anything beyond is ignored.
-constexpr int64_t kCoordLimit = int64_t{1} << 24;
-
-int64_t floor_div(int64_t a, int64_t b) {  // b > 0
-  int64_t q = a / b;
-  if (a % b != 0 && a < 0) --q;
-  return q;
-}
+using setup::floor_div;
 
 }  // namespace
 
 void rasterize_line(const ScreenVertex& a, const ScreenVertex& b, const Viewport& vp,
                     Rgba8 color, uint32_t prim, std::vector<Fragment>& out) {
-  for (const ScreenVertex* v : {&a, &b})
-    if (std::llabs(v->x) > kCoordLimit || std::llabs(v->y) > kCoordLimit) return;
+  if (!setup::in_range(a) || !setup::in_range(b)) return;
   const int64_t dx = int64_t{b.x} - a.x, dy = int64_t{b.y} - a.y;
   // Major axis: x when |dx| >= |dy|. (M, m) are the major and minor coordinates.
   const bool x_major = std::llabs(dx) >= std::llabs(dy);

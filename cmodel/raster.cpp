@@ -6,22 +6,18 @@
 #include <cstdint>
 #include <utility>
 
+#include "fixed_point_setup.h"
+
 namespace zb {
 namespace {
 
 __extension__ typedef unsigned __int128 u128;
 
-// Window coordinates beyond this (in 1/256 pixel) are rejected: setup keeps |x|, |y| < 2^23,
-// and with |x|, |y| <= 2^24 every edge value stays below 2^51 and w * z below 2^83.
-constexpr int64_t kCoordLimit = int64_t{1} << 24;
-constexpr int64_t kHalf = kSubpixelOne / 2;
+using setup::ceil_div;
+using setup::floor_div;
 
-int64_t floor_div(int64_t a, int64_t b) {  // b > 0
-  int64_t q = a / b;
-  if (a % b != 0 && a < 0) --q;
-  return q;
-}
-int64_t ceil_div(int64_t a, int64_t b) { return -floor_div(-a, b); }  // b > 0
+// Coordinates within setup::kCoordLimit keep w * z below 2^83.
+constexpr int64_t kHalf = kSubpixelOne / 2;
 
 // E(p) = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x), stepped over pixel centres.
 struct Edge {
@@ -38,16 +34,8 @@ Edge make_edge(const ScreenVertex& a, const ScreenVertex& b, int64_t x0, int64_t
   e.at_origin = ex * (y0 - a.y) - ey * (x0 - a.x);
   e.step_x = -ey * kSubpixelOne;
   e.step_y = ex * kSubpixelOne;
-  // With the triangle oriented to positive area (clockwise on the y-down screen) the inside
-  // is where E > 0. Top edge: horizontal with the inside below it (ey == 0, ex > 0).
-  // Left edge: the inside to its right, i.e. the edge runs upward (ey < 0).
-  const bool top_left = ey < 0 || (ey == 0 && ex > 0);
-  e.bias = top_left ? 0 : 1;
+  e.bias = setup::top_left(ex, ey) ? 0 : 1;
   return e;
-}
-
-bool in_range(const ScreenVertex& v) {
-  return v.x >= -kCoordLimit && v.x <= kCoordLimit && v.y >= -kCoordLimit && v.y <= kCoordLimit;
 }
 
 }  // namespace
@@ -56,18 +44,11 @@ void rasterize(const ScreenTriangle& tri, const Viewport& vp, std::vector<Fragme
                std::vector<double>* z_exact) {
   if (vp.width < 1 || vp.width > kMaxFrameSize || vp.height < 1 || vp.height > kMaxFrameSize)
     return;
-  ScreenVertex v[3] = {tri.v[0], tri.v[1], tri.v[2]};
-  bool facing[3] = {tri.facing[0], tri.facing[1], tri.facing[2]};
-  if (!in_range(v[0]) || !in_range(v[1]) || !in_range(v[2])) return;
-
-  int64_t area = (int64_t{v[1].x} - v[0].x) * (int64_t{v[2].y} - v[0].y) -
-                 (int64_t{v[2].x} - v[0].x) * (int64_t{v[1].y} - v[0].y);
-  if (area == 0) return;
-  if (area < 0) {  // orient to positive area; depth weights follow their vertices
-    std::swap(v[1], v[2]);
-    std::swap(facing[1], facing[2]);
-    area = -area;
-  }
+  setup::OrientedTriangle t;  // depth weights and facing flags follow their vertices
+  if (!setup::orient(tri, t)) return;
+  const ScreenVertex(&v)[3] = t.v;
+  const bool(&facing)[3] = t.facing;
+  const int64_t area = t.area;
 
   // Bounding box of the pixel centres (px * 256 + 128) inside the vertices' box, scissored.
   const int64_t min_x = std::min({v[0].x, v[1].x, v[2].x});
