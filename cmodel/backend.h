@@ -24,6 +24,10 @@ struct PassStats {
   PassStats& operator+=(const PassStats& o);
 };
 
+// Applies `op` to `fb` (the host's rule, shared by every backend's host side).
+void apply_frame_op(Framebuffer& fb, const FrameOp& op);
+const char* to_string(FrameOpKind k);
+
 class Backend {
  public:
   virtual ~Backend() = default;
@@ -42,6 +46,8 @@ class Backend {
   virtual void draw(const Fragment* fragments, size_t count) = 0;
   void draw(const std::vector<Fragment>& fragments) { draw(fragments.data(), fragments.size()); }
   virtual PassStats end_pass() = 0;
+  // A frame operation between passes (never inside one).
+  virtual void frame_op(const FrameOp& op) = 0;
   virtual const Framebuffer& framebuffer() const = 0;
 };
 

@@ -46,6 +46,25 @@ constexpr uint8_t blend_additive(uint8_t s, uint8_t a, uint8_t d) {
   return static_cast<uint8_t>(v > 255u ? 255u : v);
 }
 
+// Under blend (front-to-back accumulation, depth peeling; docs/datapath.md "Under blend"):
+// the destination is premultiplied, t = 255 - A_d is its remaining transmittance.
+// Colour channel: min(255, d + m(m(s, a), t)); alpha channel: min(255, A_d + m(a, t)).
+constexpr uint8_t blend_under(uint8_t s, uint8_t a, uint8_t d, uint8_t dst_alpha) {
+  const uint32_t v = uint32_t{d} + mul_unorm8(mul_unorm8(s, a), static_cast<uint8_t>(255 - dst_alpha));
+  return static_cast<uint8_t>(v > 255u ? 255u : v);
+}
+constexpr uint8_t blend_under_alpha(uint8_t a, uint8_t dst_alpha) {
+  const uint32_t v = uint32_t{dst_alpha} + mul_unorm8(a, static_cast<uint8_t>(255 - dst_alpha));
+  return static_cast<uint8_t>(v > 255u ? 255u : v);
+}
+
+// Resolve of a front-to-back accumulation over the background, every channel:
+// min(255, c + m(bg, 255 - A)).
+constexpr uint8_t resolve_under(uint8_t c, uint8_t bg, uint8_t acc_alpha) {
+  const uint32_t v = uint32_t{c} + mul_unorm8(bg, static_cast<uint8_t>(255 - acc_alpha));
+  return static_cast<uint8_t>(v > 255u ? 255u : v);
+}
+
 // Coverage anti-aliasing (US 5,123,085; docs/datapath.md "Coverage blend", raster.md
 // "Coverage"). N samples per pixel, a power of two from 1 to 16; the coverage plane stores a
 // count 0..N in coverage_bits(N) = ceil(log2(N + 1)) bits.

@@ -4,18 +4,21 @@ namespace zb {
 
 uint16_t pack_state(const RopState& s) {
   return static_cast<uint16_t>((s.depth_test ? 1u : 0u) | (unsigned(s.depth_func) & 7u) << 1 |
-                               (s.depth_write ? 1u : 0u) << 4 | (unsigned(s.blend) & 3u) << 5 |
-                               (unsigned(s.color_mask) & 15u) << 7);
+                               (s.depth_write ? 1u : 0u) << 4 | (unsigned(s.blend) & 7u) << 5 |
+                               (unsigned(s.color_mask) & 15u) << 8 |
+                               (s.peel_test ? 1u : 0u) << 12);
 }
 
 bool unpack_state(uint16_t bits, RopState& out) {
   if (bits >> kStateBits) return false;
-  const unsigned blend = (bits >> 5) & 3u;
+  const unsigned blend = (bits >> 5) & 7u;
+  if (blend >= kBlendModes) return false;
   out.depth_test = bits & 1u;
   out.depth_func = static_cast<DepthFunc>((bits >> 1) & 7u);
   out.depth_write = (bits >> 4) & 1u;
   out.blend = static_cast<BlendMode>(blend);
-  out.color_mask = static_cast<uint8_t>((bits >> 7) & 15u);
+  out.color_mask = static_cast<uint8_t>((bits >> 8) & 15u);
+  out.peel_test = (bits >> 12) & 1u;
   return true;
 }
 
@@ -39,6 +42,7 @@ const char* to_string(BlendMode b) {
     case BlendMode::kAlpha: return "alpha";
     case BlendMode::kAdditive: return "additive";
     case BlendMode::kCoverage: return "coverage";
+    case BlendMode::kUnder: return "under";
   }
   return "?";
 }

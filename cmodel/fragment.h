@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "fixed.h"
 
@@ -34,7 +35,10 @@ enum class BlendMode : uint8_t {
   kAdditive = 2,  // colour = min(255, d + m(s, a)), every channel
   kCoverage = 3,  // US 5,123,085: the four depth cases on colour, depth and coverage
                   // (docs/datapath.md "Coverage blend"); a coverage pass (raster.md "Coverage")
+  kUnder = 4,     // front-to-back into a premultiplied colour plane (depth peeling), t = 255 - A_d:
+                  // C' = min(255, C_d + m(m(s, a), t)) per RGB, A' = min(255, A_d + m(a, t))
 };
+constexpr unsigned kBlendModes = 5;
 
 // Colour write mask bits.
 enum : uint8_t { kMaskR = 1, kMaskG = 2, kMaskB = 4, kMaskA = 8, kMaskRgba = 15 };
@@ -46,6 +50,9 @@ struct RopState {
   bool depth_write = true;
   BlendMode blend = BlendMode::kReplace;  // kCoverage: depth_func is not used (datapath.md)
   uint8_t color_mask = kMaskRgba;         // kMask* bits; 0 = no colour writes
+  // Second depth compare (depth peeling): the fragment passes only if also z > peel[x, y],
+  // the frame's peel plane (read-only during a pass). Not used in coverage mode.
+  bool peel_test = false;
 };
 
 // A pass draws coverage fragments (every pixel with a covered sample, Fragment::coverage the
@@ -70,6 +77,26 @@ struct DepthOffset {
   bool any() const { return units != 0 || slope_q8 != 0; }
 };
 
+// A frame operation: done by the host on the whole frame between passes (docs/datapath.md
+// "Frame operations"); depth peeling's plans use them.
+enum class FrameOpKind : uint8_t {
+  kClearColor = 0,   // every colour := value
+  kClearDepth = 1,   // every depth := depth
+  kCopyDepthToPeel = 2,  // peel := depth
+  kResolveUnder = 3,     // colour := min(255, C + m(value, 255 - A)) per channel (value = bg)
+};
+constexpr unsigned kFrameOpKinds = 4;
+
+struct FrameOp {
+  FrameOpKind kind = FrameOpKind::kClearColor;
+  Rgba8 value;        // kClearColor, kResolveUnder
+  uint32_t depth = 0;  // kClearDepth; clamped to the frame's depth_max
+  // In a plan: render() replaces `value` with the scene's background (the resolve's bg).
+  bool background = false;
+  // The far depth, as a kClearDepth depth: the frame's depth_max.
+  static constexpr uint32_t kFar = 0xffffffffu;
+};
+
 // One pass of a pass plan. Everything but `rop` is applied by the feeder, before the datapath.
 struct PassState {
   std::string name;
@@ -81,13 +108,17 @@ struct PassState {
   bool constant_color = false;     // every fragment carries `color` (edge colour)
   Rgba8 color{0, 0, 0, 255};
   RopState rop;
+  // Frame operations the host does before this pass (FrameOp above; depth peeling). A
+  // plan's steps are, per pass, its frame_ops then the pass; then PassPlan::final_ops.
+  std::vector<FrameOp> frame_ops;
 };
 
 // The pass state register as the RTL receives it (docs/datapath.md, "The pass state"):
-// [0] depth_test, [3:1] depth_func, [4] depth_write, [6:5] blend, [10:7] color_mask.
-constexpr int kStateBits = 11;
+// [0] depth_test, [3:1] depth_func, [4] depth_write, [7:5] blend, [11:8] color_mask,
+// [12] peel_test.
+constexpr int kStateBits = 13;
 uint16_t pack_state(const RopState& s);
-// False when `bits` is not a valid state (bits above kStateBits set).
+// False when `bits` is not a valid state (bits above kStateBits set, or a blend code above 4).
 bool unpack_state(uint16_t bits, RopState& out);
 
 const char* to_string(DepthFunc f);

@@ -20,6 +20,9 @@ struct Framebuffer {
   // Covered samples per pixel, 0..N (coverage_bits(N) wide in hardware); cleared to 0 with the
   // frame, written only by coverage passes (docs/datapath.md "Coverage blend").
   std::vector<uint8_t> coverage;
+  // Peel depth plane (depth peeling, docs/datapath.md "Peel test"): read-only during a pass,
+  // written only by the frame operation CopyDepthToPeel; cleared to 0 with the frame.
+  std::vector<uint32_t> peel;
 
   Framebuffer() = default;
   Framebuffer(int w, int h, int bits, Rgba8 clear_color,
@@ -27,12 +30,14 @@ struct Framebuffer {
       : width(w), height(h), depth_bits(bits), coverage_samples(samples),
         color(static_cast<size_t>(w) * h, clear_color),
         depth(static_cast<size_t>(w) * h, depth_max(bits)),
-        coverage(static_cast<size_t>(w) * h, 0) {}
+        coverage(static_cast<size_t>(w) * h, 0),
+        peel(static_cast<size_t>(w) * h, 0) {}
 
   size_t index(int x, int y) const { return static_cast<size_t>(y) * width + x; }
   Rgba8 color_at(int x, int y) const { return color[index(x, y)]; }
   uint32_t depth_at(int x, int y) const { return depth[index(x, y)]; }
   int coverage_at(int x, int y) const { return coverage[index(x, y)]; }
+  uint32_t peel_at(int x, int y) const { return peel[index(x, y)]; }
 };
 
 }  // namespace zb

@@ -1,5 +1,7 @@
 #include "passes.h"
 
+#include <string>
+
 namespace zb {
 namespace {
 
@@ -26,13 +28,13 @@ std::vector<PassPlan> make_plans() {
   std::vector<PassPlan> plans;
   plans.push_back({"opaque", "baseline",
                    "every primitive drawn opaque: depth LESS, z-write on, replace",
-                   {pass("all", PrimFilter::kAll, less(true, BlendMode::kReplace))}});
+                   {pass("all", PrimFilter::kAll, less(true, BlendMode::kReplace))}, {}});
   plans.push_back({"unsorted", "prior art, one transparent pass",
                    "opaque pass, then transparent primitives in submit order blended with "
                    "z-write off",
                    {pass("opaque", PrimFilter::kOpaque, less(true, BlendMode::kReplace)),
                     pass("transparent", PrimFilter::kTransparent,
-                         less(false, BlendMode::kAlpha))}});
+                         less(false, BlendMode::kAlpha))}, {}});
   // US 7,834,879: "in pass 1 an opaque object alone is drawn while a hidden surface removal is
   // executed by Z buffer algorithm. The Z buffer is updated. Then in pass 2 a semitransparent
   // object alone is blended ... the Z buffer is not updated. Finally in pass 3 the
@@ -44,7 +46,7 @@ std::vector<PassPlan> make_plans() {
                     pass("transparent-no-zwrite", PrimFilter::kTransparent,
                          less(false, BlendMode::kAlpha)),
                     pass("transparent-zwrite", PrimFilter::kTransparent,
-                         less(true, BlendMode::kAlpha))}});
+                         less(true, BlendMode::kAlpha))}, {}});
   // US 5,923,333, claim 1: (a) opaque primitives to the z-buffer and frame buffer; (b)
   // "disabling writes to said z-buffer, culling all front-facing primitives of said transparent
   // objects", rasterizing the back-facing ones, culling pixels behind opaque objects and alpha
@@ -61,7 +63,7 @@ std::vector<PassPlan> make_plans() {
                      "opaque; transparent back faces (front faces culled), z-write off, blend; "
                      "transparent front faces (back faces culled), z-write off, blend",
                      {pass("opaque", PrimFilter::kOpaque, less(true, BlendMode::kReplace)), back,
-                      front}});
+                      front}, {}});
   }
   // CN 103021015: the vertex stage decides from the vertex normal and the camera whether each
   // vertex faces the viewer (Fragment::facing, raster.md "Facing"). "First pass: ... points to
@@ -80,7 +82,7 @@ std::vector<PassPlan> make_plans() {
                      "opaque; transparent with fragments facing the viewer at alpha 0 (the "
                      "away-facing part blends); the facing part again, z-test off, additive",
                      {pass("opaque", PrimFilter::kOpaque, less(true, BlendMode::kReplace)), away,
-                      toward}});
+                      toward}, {}});
   }
   // US 5,123,085: "each pixel in the frame buffer being identified by a color value, a z buffer
   // value and a representation indicative of coverage"; every polygon pixel is composited with
@@ -91,7 +93,7 @@ std::vector<PassPlan> make_plans() {
                    "one pass, all primitives: per-pixel colour, depth and sample coverage, "
                    "composited by the four depth cases (nearer, farther, equal full, equal "
                    "partial)",
-                   {pass("coverage", PrimFilter::kAll, less(true, BlendMode::kCoverage))}});
+                   {pass("coverage", PrimFilter::kAll, less(true, BlendMode::kCoverage))}, {}});
   // US 5,359,704, claim 1: (a) mask the frame buffer; (b, c) scan-convert the faces, updating
   // the depth buffer "only when the obtained depth value is smaller"; (d) unmask; (e) move the
   // display "a distance in front of visible faces"; (f) depth-test and draw "all tessellation
@@ -115,16 +117,64 @@ std::vector<PassPlan> make_plans() {
     plans.push_back({"hidden-line", "US 5,359,704",
                      "faces to depth only (colour masked); every tessellation edge once, moved "
                      "toward the viewer by a depth offset, depth LEQUAL: hidden lines removed",
-                     {faces, visible}});
+                     {faces, visible}, {}});
     plans.push_back({"hidden-line-dim", "US 5,359,704",
                      "hidden-line with hidden edges kept in a second style: edges failing the "
                      "test (GREATER) drawn dimmed before the visible ones",
-                     {faces, hidden, visible}});
+                     {faces, hidden, visible}, {}});
   }
+  for (int k : kDepthPeelLayers) plans.push_back(make_depth_peel_plan(k));
   return plans;
 }
 
 }  // namespace
+
+// Everitt 2001, "Interactive Order-Independent Transparency": each peel finds, per pixel, the
+// nearest transparent layer strictly behind the previous peel's (the second depth compare,
+// RopState::peel_test, against the peel plane) and in front of the opaque surface, and
+// accumulates it front to back (BlendMode::kUnder) into a premultiplied colour plane cleared
+// to 0. Finally the visible opaque surface is accumulated under the layers and the result resolved
+// over the background. Exact for up to k transparent layers per pixel.
+PassPlan make_depth_peel_plan(int k) {
+  PassPlan plan;
+  plan.name = "depth-peel-" + std::to_string(k);
+  plan.source = "Everitt 2001";
+  plan.description = std::to_string(k) +
+                     " peels, each: opaque depth, nearest transparent layer behind the last "
+                     "(second depth compare), that layer accumulated front to back; then the "
+                     "opaque surface under them and a resolve over the background";
+  FrameOp clear_color{FrameOpKind::kClearColor, Rgba8{0, 0, 0, 0}, 0, false};
+  FrameOp clear_depth{FrameOpKind::kClearDepth, Rgba8{}, FrameOp::kFar, false};
+  FrameOp copy_peel{FrameOpKind::kCopyDepthToPeel, Rgba8{}, 0, false};
+  RopState depth_only = less(true, BlendMode::kReplace);
+  depth_only.color_mask = 0;
+  for (int i = 1; i <= k; ++i) {
+    const std::string n = "peel-" + std::to_string(i);
+    PassState opaque = pass(n + "-opaque-depth", PrimFilter::kOpaque, depth_only);
+    if (i == 1) opaque.frame_ops = {clear_color, clear_depth};
+    else opaque.frame_ops = {copy_peel, clear_depth};
+    // The first peel needs no second compare (the peel plane is not yet meaningful); later
+    // ones keep only fragments strictly behind the previous layer.
+    RopState find = depth_only;
+    find.peel_test = i > 1;
+    RopState accumulate = less(false, BlendMode::kUnder);
+    accumulate.depth_func = DepthFunc::kEqual;
+    accumulate.peel_test = i > 1;
+    plan.passes.push_back(opaque);
+    plan.passes.push_back(pass(n + "-layer-depth", PrimFilter::kTransparent, find));
+    plan.passes.push_back(pass(n + "-layer-under", PrimFilter::kTransparent, accumulate));
+  }
+  // The opaque surface: its depth first, then only the visible fragment accumulated (an
+  // under blend in submit order would keep the first opaque fragment, not the nearest).
+  PassState opaque_depth = pass("opaque-depth", PrimFilter::kOpaque, depth_only);
+  opaque_depth.frame_ops = {clear_depth};
+  RopState visible = less(false, BlendMode::kUnder);
+  visible.depth_func = DepthFunc::kEqual;
+  plan.passes.push_back(opaque_depth);
+  plan.passes.push_back(pass("opaque-under", PrimFilter::kOpaque, visible));
+  plan.final_ops = {FrameOp{FrameOpKind::kResolveUnder, Rgba8{}, 0, true}};
+  return plan;
+}
 
 const std::vector<PassPlan>& pass_plans() {
   static const std::vector<PassPlan> plans = make_plans();

@@ -13,7 +13,13 @@ struct PassPlan {
   std::string source;       // where the method comes from
   std::string description;
   std::vector<PassState> passes;
+  std::vector<FrameOp> final_ops;  // frame operations after the last pass (a resolve)
 };
+
+// depth-peel-K (Everitt 2001): the plans registered are K = 2, 4 and 8; any K >= 1 is built
+// by make_depth_peel_plan (docs/datapath.md "Depth peeling").
+constexpr int kDepthPeelLayers[] = {2, 4, 8};
+PassPlan make_depth_peel_plan(int k);
 
 // hidden-line's edge passes: depth offset (raster.md "Depth offset"), visible and hidden colours.
 constexpr DepthOffset kEdgeOffset{2, 256, 0};  // 2 units + 1.0 x slope, unclamped

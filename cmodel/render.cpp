@@ -169,6 +169,14 @@ void feed_pass(const RasterizedScene& rs, const PassState& pass, Draw&& draw) {
 
 }  // namespace
 
+FrameOp resolve_op(FrameOp op, Rgba8 background) {
+  if (op.background) {
+    op.value = background;
+    op.background = false;
+  }
+  return op;
+}
+
 std::vector<Fragment> pass_fragments(const RasterizedScene& rs, const PassState& pass) {
   std::vector<Fragment> out;
   feed_pass(rs, pass, [&](const Fragment* f, size_t n) { out.insert(out.end(), f, f + n); });
@@ -180,11 +188,13 @@ RenderResult render(const RasterizedScene& rs, const PassPlan& plan, Backend& ba
   backend.begin_frame(vp.width, vp.height, vp.depth_bits, rs.background, vp.coverage_samples);
   RenderResult result;
   for (const PassState& pass : plan.passes) {
+    for (const FrameOp& op : pass.frame_ops) backend.frame_op(resolve_op(op, rs.background));
     backend.label_pass(pass.name);
     backend.begin_pass(pass.rop);
     feed_pass(rs, pass, [&](const Fragment* f, size_t n) { backend.draw(f, n); });
     result.passes.push_back(backend.end_pass());
   }
+  for (const FrameOp& op : plan.final_ops) backend.frame_op(resolve_op(op, rs.background));
   result.framebuffer = backend.framebuffer();
   return result;
 }

@@ -42,6 +42,9 @@ void add_lines(RasterizedScene& rs, std::vector<ScreenLine> lines);
 // (filtered, culled and rewritten by the pass's feeder rules).
 std::vector<Fragment> pass_fragments(const RasterizedScene& rs, const PassState& pass);
 
+// `op` as the backend receives it: a plan's background placeholder replaced by `background`.
+FrameOp resolve_op(FrameOp op, Rgba8 background);
+
 struct RenderResult {
   Framebuffer framebuffer;
   std::vector<PassStats> passes;  // one per pass of the plan

@@ -43,6 +43,9 @@ Rgba8 blend(BlendMode mode, Rgba8 s, Rgba8 d) {
               blend_additive(s.b, s.a, d.b), blend_additive(s.a, s.a, d.a)};
     case BlendMode::kCoverage:  // needs the depths and coverages: composite_coverage
       return s;
+    case BlendMode::kUnder:
+      return {blend_under(s.r, s.a, d.r, d.a), blend_under(s.g, s.a, d.g, d.a),
+              blend_under(s.b, s.a, d.b, d.a), blend_under_alpha(s.a, d.a)};
   }
   return s;
 }
@@ -117,6 +120,38 @@ void GoldenRop::draw(const Fragment* fragments, size_t count) {
 
 PassStats GoldenRop::end_pass() { return stats_; }
 
+void GoldenRop::frame_op(const FrameOp& op) { apply_frame_op(fb_, op); }
+
+void apply_frame_op(Framebuffer& fb, const FrameOp& op) {
+  switch (op.kind) {
+    case FrameOpKind::kClearColor:
+      std::fill(fb.color.begin(), fb.color.end(), op.value);
+      return;
+    case FrameOpKind::kClearDepth:
+      std::fill(fb.depth.begin(), fb.depth.end(), std::min(op.depth, depth_max(fb.depth_bits)));
+      return;
+    case FrameOpKind::kCopyDepthToPeel:
+      fb.peel = fb.depth;
+      return;
+    case FrameOpKind::kResolveUnder:
+      for (Rgba8& c : fb.color)
+        c = {resolve_under(c.r, op.value.r, c.a), resolve_under(c.g, op.value.g, c.a),
+             resolve_under(c.b, op.value.b, c.a), resolve_under(c.a, op.value.a, c.a)};
+      return;
+  }
+  throw std::invalid_argument("frame op: unknown kind " + std::to_string(unsigned(op.kind)));
+}
+
+const char* to_string(FrameOpKind k) {
+  switch (k) {
+    case FrameOpKind::kClearColor: return "clear-color";
+    case FrameOpKind::kClearDepth: return "clear-depth";
+    case FrameOpKind::kCopyDepthToPeel: return "copy-depth-to-peel";
+    case FrameOpKind::kResolveUnder: return "resolve-under";
+  }
+  return "?";
+}
+
 // Stages as in the RTL: fetch the stored depth, test, fetch the destination colour, blend,
 // mask, write. "If the depth test is disabled ... the depth buffer is not updated" (GL 4.6,
 // 14.9.4): a disabled test passes every fragment and never writes depth.
@@ -134,6 +169,8 @@ void GoldenRop::process(const Fragment& f) {
     ++stats_.depth_reads;
     pass = depth_test(state_.depth_func, f.z, fb_.depth[i]);
   }
+  // Peel test: the second compare, strictly behind the previous layer (z > peel).
+  if (state_.peel_test && !(f.z > fb_.peel[i])) pass = false;
   if (!pass) return;
   ++stats_.fragments_passed;
 

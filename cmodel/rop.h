@@ -41,6 +41,7 @@ class GoldenRop final : public Backend {
   using Backend::draw;
   void draw(const Fragment* fragments, size_t count) override;
   PassStats end_pass() override;
+  void frame_op(const FrameOp& op) override;
   const Framebuffer& framebuffer() const override { return fb_; }
 
   // One fragment through the datapath. Throws std::invalid_argument when its coverage exceeds

@@ -13,7 +13,10 @@ namespace zb {
 namespace {
 
 constexpr char kMagic[8] = {'Z', 'B', 'T', 'R', 'A', 'C', 'E', '\0'};
-constexpr uint32_t kVersion = 2;  // 2: coverage samples in the header, coverage per fragment
+// 2: coverage samples in the header, coverage per fragment; 3: 13-bit pass state (3-bit blend,
+// peel_test), frame operations before each pass and after the last.
+constexpr uint32_t kVersion = 3;
+constexpr uint32_t kMaxFrameOps = 64;
 constexpr uint32_t kMaxPasses = 1024;
 constexpr uint32_t kMaxNameLength = 256;
 constexpr size_t kFragmentBytes = 20;
@@ -54,6 +57,34 @@ class Reader {
   size_t pos_ = 0;
 };
 
+void put_ops(std::string& out, const std::vector<FrameOp>& ops) {
+  put_u32(out, uint32_t(ops.size()));
+  for (const FrameOp& op : ops) {
+    put_u8(out, uint8_t(op.kind));
+    for (uint8_t c : {op.value.r, op.value.g, op.value.b, op.value.a}) put_u8(out, c);
+    put_u32(out, op.depth);
+  }
+}
+
+std::vector<FrameOp> get_ops(Reader& r, const std::string& where) {
+  const size_t at = r.offset();
+  const uint64_t n = r.get(4, "a frame op count");
+  if (n > kMaxFrameOps) r.fail(at, fmt::format("{}: {} frame ops is more than {}", where, n, kMaxFrameOps));
+  std::vector<FrameOp> ops(static_cast<size_t>(n));
+  for (FrameOp& op : ops) {
+    const size_t at_op = r.offset();
+    const uint64_t kind = r.get(1, "a frame op kind");
+    if (kind >= kFrameOpKinds) r.fail(at_op, fmt::format("{}: frame op kind {} is unknown", where, kind));
+    op.kind = FrameOpKind(kind);
+    op.value.r = uint8_t(r.get(1, "a frame op value"));
+    op.value.g = uint8_t(r.get(1, "a frame op value"));
+    op.value.b = uint8_t(r.get(1, "a frame op value"));
+    op.value.a = uint8_t(r.get(1, "a frame op value"));
+    op.depth = uint32_t(r.get(4, "a frame op depth"));
+  }
+  return ops;
+}
+
 }  // namespace
 
 Trace make_trace(const RasterizedScene& rs, const PassPlan& plan) {
@@ -63,7 +94,12 @@ Trace make_trace(const RasterizedScene& rs, const PassPlan& plan) {
   t.depth_bits = rs.viewport.depth_bits;
   t.coverage_samples = rs.viewport.coverage_samples;
   t.clear_color = rs.background;
-  for (const PassState& p : plan.passes) t.passes.push_back({p.name, p.rop, pass_fragments(rs, p)});
+  for (const PassState& p : plan.passes) {
+    TracePass tp{p.name, {}, p.rop, pass_fragments(rs, p)};
+    for (const FrameOp& op : p.frame_ops) tp.frame_ops.push_back(resolve_op(op, rs.background));
+    t.passes.push_back(std::move(tp));
+  }
+  for (const FrameOp& op : plan.final_ops) t.final_ops.push_back(resolve_op(op, rs.background));
   return t;
 }
 
@@ -80,6 +116,7 @@ std::string serialize_trace(const Trace& t) {
   for (const TracePass& p : t.passes) {
     put_u32(out, uint32_t(p.name.size()));
     put(out, p.name.data(), p.name.size());
+    put_ops(out, p.frame_ops);
     put_u16(out, pack_state(p.state));
     put_u64(out, p.fragments.size());
     for (const Fragment& f : p.fragments) {
@@ -93,6 +130,7 @@ std::string serialize_trace(const Trace& t) {
       put_u32(out, f.prim);
     }
   }
+  put_ops(out, t.final_ops);
   return out;
 }
 
@@ -140,6 +178,7 @@ Trace parse_trace(const std::string& bytes, const std::string& name) {
     const uint64_t len = r.get(4, "a pass name length");
     if (len > kMaxNameLength) r.fail(at_name, fmt::format("pass name of {} bytes", len));
     pass.name = r.get_string(size_t(len), "a pass name");
+    pass.frame_ops = get_ops(r, fmt::format("pass {}", p + 1));
     const size_t at_state = r.offset();
     if (!unpack_state(uint16_t(r.get(2, "a pass state")), pass.state))
       r.fail(at_state, fmt::format("pass {}: invalid pass state", p + 1));
@@ -174,6 +213,7 @@ Trace parse_trace(const std::string& bytes, const std::string& name) {
     }
     t.passes.push_back(std::move(pass));
   }
+  t.final_ops = get_ops(r, "after the last pass");
   if (r.remaining() != 0) r.fail(r.offset(), fmt::format("{} bytes after the last pass", r.remaining()));
   return t;
 }
@@ -191,11 +231,13 @@ std::vector<PassStats> replay_trace(const Trace& trace, Backend& backend) {
                       trace.coverage_samples);
   std::vector<PassStats> stats;
   for (const TracePass& p : trace.passes) {
+    for (const FrameOp& op : p.frame_ops) backend.frame_op(op);
     backend.label_pass(p.name);
     backend.begin_pass(p.state);
     backend.draw(p.fragments);
     stats.push_back(backend.end_pass());
   }
+  for (const FrameOp& op : trace.final_ops) backend.frame_op(op);
   return stats;
 }
 

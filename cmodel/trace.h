@@ -14,6 +14,7 @@ namespace zb {
 
 struct TracePass {
   std::string name;
+  std::vector<FrameOp> frame_ops;  // done before the pass (background already substituted)
   RopState state;
   std::vector<Fragment> fragments;
 };
@@ -25,6 +26,7 @@ struct Trace {
   int coverage_samples = kDefaultCoverageSamples;
   Rgba8 clear_color;
   std::vector<TracePass> passes;
+  std::vector<FrameOp> final_ops;  // after the last pass
 };
 
 // A malformed trace file; what() names the file, the byte offset and what is wrong.

@@ -2,12 +2,14 @@
 //
 // Three-stage pipeline, one fragment per clock, no interlock (docs/rtl.md has the diagram):
 //   S0  accept (frag_valid_i && frag_ready_o); issue the depth- and coverage-memory reads.
-//   S1  depth and coverage read data; their forwarding; depth test, or in coverage mode the
-//       four-case decision (zb_coverage_composite); depth and coverage writes; colour read.
+//   S1  depth, peel and coverage read data; depth and coverage forwarding; depth test and the
+//       peel test (z > peel), or in coverage mode the four-case decision
+//       (zb_coverage_composite); depth and coverage writes; colour read.
 //   S2  colour read data; colour forwarding; blend; write mask; colour write.
 // Each memory is read one edge before it is written, so a fragment's read can miss only the
 // write landing on the same edge (the previous fragment's); one forwarding register per
-// memory holds that write's post-state.
+// memory holds that write's post-state. The peel memory is written only through the tile port,
+// never by a fragment, so it needs no forwarding.
 // Reset: rst_ni, asynchronous, active low. Memories are not reset (load the tile).
 module zb_rop #(
   parameter int unsigned DEPTH_BITS = 24,   // 8..32
@@ -21,7 +23,7 @@ module zb_rop #(
   input  logic                  clk_i,
   input  logic                  rst_ni,
   input  logic                  state_we_i,
-  input  logic [10:0]           state_i,
+  input  logic [12:0]           state_i,
   input  logic [15:0]           tile_x0_i,
   input  logic [15:0]           tile_y0_i,
   input  logic                  frag_valid_i,
@@ -38,9 +40,11 @@ module zb_rop #(
   input  logic [31:0]           tile_wcolor_i,
   input  logic [DEPTH_BITS-1:0] tile_wdepth_i,
   input  logic [CovW-1:0]       tile_wcov_i,
+  input  logic [DEPTH_BITS-1:0] tile_wpeel_i,
   output logic [31:0]           tile_rcolor_o,
   output logic [DEPTH_BITS-1:0] tile_rdepth_o,
   output logic [CovW-1:0]       tile_rcov_o,
+  output logic [DEPTH_BITS-1:0] tile_rpeel_o,
   output logic                  busy_o,
   input  logic                  cnt_clear_i,
   output logic [CNT_W-1:0]      cnt_frag_in_o,
@@ -74,10 +78,10 @@ module zb_rop #(
   // ---------------------------------------------------------------------------------------
   // Pass state register (docs/datapath.md "The pass state"); loaded only while idle.
   // ---------------------------------------------------------------------------------------
-  logic [10:0] state_d, state_q;
-  logic        st_depth_test, st_depth_write;
+  logic [12:0] state_d, state_q;
+  logic        st_depth_test, st_depth_write, st_peel_test;
   logic [2:0]  st_depth_func;
-  logic [1:0]  st_blend;
+  logic [2:0]  st_blend;
   logic [3:0]  st_color_mask;
 
   always_comb begin
@@ -90,11 +94,12 @@ module zb_rop #(
   assign st_depth_test  = state_q[0];
   assign st_depth_func  = state_q[3:1];
   assign st_depth_write = state_q[4];
-  assign st_blend       = state_q[6:5];
-  assign st_color_mask  = state_q[10:7];
+  assign st_blend       = state_q[7:5];
+  assign st_color_mask  = state_q[11:8];
+  assign st_peel_test   = state_q[12];
 
   logic st_cov;  // coverage mode: blend code 3 (docs/datapath.md "Coverage blend")
-  assign st_cov = st_blend == 2'd3;
+  assign st_cov = st_blend == 3'd3;
 
   // ---------------------------------------------------------------------------------------
   // Tile port decode
@@ -205,9 +210,36 @@ module zb_rop #(
     .cov_o       (s1_cov_new)
   );
 
-  // Test off: every fragment passes and depth is never written. Coverage mode: every fragment
-  // passes to the compositing; depth is written only in the nearer case.
-  assign s1_pass = st_cov | ~st_depth_test | s1_cmp;
+  // Peel memory (docs/datapath.md "Peel test"): read in S0 with the depth memory, written only
+  // by the tile port. Its word is constant during a pass, so the read is never stale.
+  logic                  pmem_re, pmem_we;
+  logic [AddrW-1:0]      pmem_raddr;
+  logic [DEPTH_BITS-1:0] pmem_rdata;
+  logic                  s1_peel_ok;
+
+  assign pmem_re    = accept | tile_rd;
+  assign pmem_raddr = tile_req_i ? tile_addr_i : s0_addr;
+  assign pmem_we    = tile_wr;
+  assign s1_peel_ok = s1_z_q > pmem_rdata;   // strictly behind the previous layer
+
+  zb_tile_mem #(
+    .WIDTH(DEPTH_BITS),
+    .WORDS(Words)
+  ) u_peel_mem (
+    .clk_i  (clk_i),
+    .re_i   (pmem_re),
+    .raddr_i(pmem_raddr),
+    .rdata_o(pmem_rdata),
+    .we_i   (pmem_we),
+    .waddr_i(tile_addr_i),
+    .wdata_i(tile_wpeel_i)
+  );
+
+  // Test off: every fragment passes the depth test and depth is never written. Peel test on:
+  // a fragment must also lie strictly behind the peel plane. Coverage mode: every fragment
+  // passes to the compositing (the peel test is not used); depth is written only in the
+  // nearer case.
+  assign s1_pass = st_cov | ((~st_depth_test | s1_cmp) & (~st_peel_test | s1_peel_ok));
   assign s1_dwe  = s1_valid_q & s1_pass & st_depth_test & st_depth_write &
                    (~st_cov | s1_nearer);
   assign s1_vwe  = s1_valid_q & st_cov;
@@ -359,6 +391,7 @@ module zb_rop #(
   assign tile_rcolor_o = cmem_rdata;
   assign tile_rdepth_o = dmem_rdata;
   assign tile_rcov_o   = vmem_rdata;
+  assign tile_rpeel_o  = pmem_rdata;
   assign busy_o        = s1_valid_q | s2_valid_q;
 
   // ---------------------------------------------------------------------------------------
@@ -422,7 +455,7 @@ module zb_rop #(
   assign s1_color_on   = s1_valid_q & s1_pass & (st_color_mask != 4'h0);
   // Replace with all four channels written needs no destination colour; the other modes
   // (alpha, additive, coverage) blend with it.
-  assign s1_reads_dest = (st_blend != 2'd0) | (st_color_mask != 4'hf);
+  assign s1_reads_dest = (st_blend != 3'd0) | (st_color_mask != 4'hf);
 
   always_comb begin
     cnt_inc    = '0;
@@ -517,6 +550,15 @@ module zb_rop #(
       (s1_valid_q && st_cov && s1_dwe) |-> (s1_z_q < s1_zs));
   CovNeverShrinks: assert property (@(posedge clk_i) disable iff (!rst_ni)
       (s1_valid_q && st_cov) |-> (s1_cov_new >= s1_cs));
+
+  // The peel plane is read-only during a pass: pmem_we is the tile port's write alone
+  // (structural), and TilePortIdle keeps the tile port away from fragments in flight.
+  // A fragment that passes with the peel test on lies strictly behind the peel plane.
+  PeelPassBehind: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (s1_valid_q && s1_pass && st_peel_test && !st_cov) |-> (s1_z_q > pmem_rdata));
+  // Only the five blend codes are loaded.
+  BlendCodeValid: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      state_we_i |-> (state_i[7:5] <= 3'd4));
 
   // A fragment in S1 moves to S2 on the next edge: the pipeline never holds or drops one.
   NoPipelineBubble: assert property (@(posedge clk_i) disable iff (!rst_ni)

@@ -25,7 +25,8 @@ std::string state_text(const RopState& s) {
   std::ostringstream o;
   o << "depth_test=" << s.depth_test << " func=" << to_string(s.depth_func)
     << " depth_write=" << s.depth_write << " blend=" << to_string(s.blend)
-    << " color_mask=" << hex(s.color_mask, 1) << " (packed " << hex(pack_state(s), 3) << ")";
+    << " color_mask=" << hex(s.color_mask, 1) << " peel_test=" << s.peel_test
+    << " (packed " << hex(pack_state(s), 4) << ")";
   return o.str();
 }
 
@@ -67,12 +68,21 @@ PassStats Cosim::end_pass() {
   const PassStats g = golden_.end_pass();
   const PassStats r = rtl_.end_pass();
   ++passes_;
+  compare_frames();
+  if (g.fragments_in != r.fragments_in || g.fragments_passed != r.fragments_passed ||
+      g.depth_reads != r.depth_reads || g.depth_writes != r.depth_writes ||
+      g.color_reads != r.color_reads || g.color_writes != r.color_writes)
+    report_counters(r, g);
+  return r;
+}
+
+void Cosim::compare_frames() {
   const Framebuffer& gf = golden_.framebuffer();
   const Framebuffer& rf = rtl_.framebuffer();
   size_t differing = 0, first = 0;
   for (size_t i = 0; i < gf.color.size(); ++i)
     if (gf.color[i] != rf.color[i] || gf.depth[i] != rf.depth[i] ||
-        gf.coverage[i] != rf.coverage[i]) {
+        gf.coverage[i] != rf.coverage[i] || gf.peel[i] != rf.peel[i]) {
       if (differing++ == 0) first = i;
     }
   pixels_compared_ += gf.color.size();
@@ -80,11 +90,14 @@ PassStats Cosim::end_pass() {
     mismatches_ += differing;
     report_pixel(int(first % gf.width), int(first / gf.width), differing);
   }
-  if (g.fragments_in != r.fragments_in || g.fragments_passed != r.fragments_passed ||
-      g.depth_reads != r.depth_reads || g.depth_writes != r.depth_writes ||
-      g.color_reads != r.color_reads || g.color_writes != r.color_writes)
-    report_counters(r, g);
-  return r;
+}
+
+void Cosim::frame_op(const FrameOp& op) {
+  before_ = golden_.framebuffer();
+  golden_.frame_op(op);
+  rtl_.frame_op(op);
+  pass_name_ = std::string("frame op ") + to_string(op.kind);
+  compare_frames();
 }
 
 void Cosim::report_pixel(int x, int y, size_t differing) {
@@ -99,6 +112,8 @@ void Cosim::report_pixel(int x, int y, size_t differing) {
     << hex(rf.depth_at(x, y), zd) << " cov=" << rf.coverage_at(x, y)
     << " golden=" << rgba(gf.color_at(x, y)) << " z=" << hex(gf.depth_at(x, y), zd)
     << " cov=" << gf.coverage_at(x, y) << "\n";
+  o << "  peel: rtl=" << hex(rf.peel_at(x, y), zd) << " golden=" << hex(gf.peel_at(x, y), zd)
+    << "\n";
   o << "  before the pass: " << rgba(before_.color_at(x, y)) << " z=" << hex(before_.depth_at(x, y), zd)
     << " cov=" << before_.coverage_at(x, y) << "\n";
   o << "  state: " << state_text(state_) << "\n";

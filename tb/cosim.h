@@ -1,5 +1,5 @@
 // Co-simulation: the golden model and the RTL in lockstep on the same calls; after every pass
-// every colour, depth and coverage bit of the frame is compared, and the pass counters too. The first
+// and frame operation every colour, depth, coverage and peel bit of the frame is compared, and the pass counters too. The first
 // mismatch stops the run with a report naming both sides and an FST of the cycles around it.
 #pragma once
 
@@ -46,6 +46,8 @@ class Cosim final : public Backend {
   void draw(const Fragment* fragments, size_t count) override;
   // Compares the frames and counters; returns the RTL's stats (with cycles).
   PassStats end_pass() override;
+  // Applies the frame operation on both sides and compares every plane after it.
+  void frame_op(const FrameOp& op) override;
   const Framebuffer& framebuffer() const override { return rtl_.framebuffer(); }
 
   void label_pass(const std::string& name) override { next_pass_name_ = name; }
@@ -61,6 +63,8 @@ class Cosim final : public Backend {
 
  private:
   [[noreturn]] void report_pixel(int x, int y, size_t differing);
+  // Compares every plane of the two frames; throws MismatchError on the first difference.
+  void compare_frames();
   [[noreturn]] void report_counters(const PassStats& rtl, const PassStats& golden);
   std::string pass_label() const;
 

@@ -194,6 +194,7 @@ struct RtlRop::Impl {
         t.tile_wcolor_i = pack_rgba(src.color[i]);
         t.tile_wdepth_i = src.depth[i];
         t.tile_wcov_i = src.coverage[i];
+        t.tile_wpeel_i = src.peel[i];
         s.tick();
       }
     t.tile_req_i = 0;
@@ -276,6 +277,7 @@ struct RtlRop::Impl {
         dst.color[i] = unpack_rgba(t.tile_rcolor_o);
         dst.depth[i] = t.tile_rdepth_o;
         dst.coverage[i] = t.tile_rcov_o;
+        dst.peel[i] = t.tile_rpeel_o;
       }
     t.tile_req_i = 0;
     run.store_end = s.cycle;
@@ -360,6 +362,14 @@ PassStats RtlRop::end_pass() {
   }
   ++m.pass_no;
   return stats;
+}
+
+// The host's frame operation on the driver's frame copy; the next pass loads it into the
+// tile memory (colour, depth, coverage and peel planes).
+void RtlRop::frame_op(const FrameOp& op) {
+  if (impl_->fb.width == 0) throw std::logic_error("rtl backend: frame_op before begin_frame");
+  if (impl_->in_pass) throw std::logic_error("rtl backend: frame_op inside a pass");
+  apply_frame_op(impl_->fb, op);
 }
 
 const Framebuffer& RtlRop::framebuffer() const { return impl_->fb; }

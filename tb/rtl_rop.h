@@ -56,6 +56,7 @@ class RtlRop final : public Backend {
   void draw(const Fragment* fragments, size_t count) override;
   // PassStats summed over tiles; `cycles` counts streaming cycles (first offer to drain).
   PassStats end_pass() override;
+  void frame_op(const FrameOp& op) override;
   const Framebuffer& framebuffer() const override;
 
   // Cumulative cycles spent loading and storing tiles, and every cycle since reset.

@@ -79,8 +79,11 @@ Tally suite_scenes(const Config& c) {
         const bool ok = run_iteration("scenes", c, seed, t, [&](Cosim& cs) {
           cs.begin_frame(rs.viewport.width, rs.viewport.height, rs.viewport.depth_bits,
                          rs.background, rs.viewport.coverage_samples);
-          for (const PassState& p : plan.passes)
+          for (const PassState& p : plan.passes) {
+            for (const FrameOp& op : p.frame_ops) cs.frame_op(resolve_op(op, rs.background));
             draw_pass(cs, sname + "/" + plan.name + "/" + p.name, p.rop, pass_fragments(rs, p));
+          }
+          for (const FrameOp& op : plan.final_ops) cs.frame_op(resolve_op(op, rs.background));
         });
         if (!ok) return t;
       }
@@ -95,9 +98,10 @@ RopState random_state(Rng& r) {
   s.depth_test = !r.chance(0.15);
   s.depth_func = DepthFunc(r.below(8));
   s.depth_write = r.chance(0.6);
-  s.blend = BlendMode(r.below(4));  // replace, alpha, additive, coverage
+  s.blend = BlendMode(r.below(kBlendModes));  // replace, alpha, additive, coverage, under
   const uint32_t m = r.below(4);
   s.color_mask = m == 0 ? uint8_t(r.below(16)) : uint8_t(kMaskRgba);
+  s.peel_test = r.chance(0.3);
   return s;
 }
 
@@ -179,6 +183,17 @@ Tally suite_random(const Config& c) {
       const int passes = 2 + int(r.below(4));
       const size_t per_pass = std::max<size_t>(1, 6000 / passes);
       for (int p = 0; p < passes; ++p) {
+        // Frame operations between passes: random peel planes (the depth of the frame so
+        // far, copied), depth and colour clears.
+        if (r.chance(0.4)) cs.frame_op({FrameOpKind::kCopyDepthToPeel, {}, 0, false});
+        if (r.chance(0.2))
+          cs.frame_op({FrameOpKind::kClearDepth, {}, zpool[r.below(uint32_t(zpool.size()))], false});
+        if (r.chance(0.15))
+          cs.frame_op({FrameOpKind::kClearColor,
+                       {pick_channel(r), pick_channel(r), pick_channel(r), pick_alpha(r)}, 0, false});
+        if (r.chance(0.1))
+          cs.frame_op({FrameOpKind::kResolveUnder,
+                       {pick_channel(r), pick_channel(r), pick_channel(r), pick_alpha(r)}, 0, false});
         const RopState st = random_state(r);
         draw_pass(cs, "random-" + std::to_string(p + 1), st,
                   random_stream(r, w, h, per_pass, 4, 0.3, zpool));
@@ -201,8 +216,8 @@ RopState HazardStimulus::next_state() {
                                      DepthFunc::kNotequal};
     st.depth_func = busy[rng_.below(4)];
     static const BlendMode rmw[] = {BlendMode::kAlpha, BlendMode::kAdditive,
-                                    BlendMode::kCoverage};
-    st.blend = rmw[rng_.below(3)];
+                                    BlendMode::kCoverage, BlendMode::kUnder};
+    st.blend = rmw[rng_.below(4)];
   }
   return st;
 }

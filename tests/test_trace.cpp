@@ -23,7 +23,8 @@ TEST(Trace, StatePackingRoundTripsEveryValidWord) {
     ++valid;
     EXPECT_EQ(zb::pack_state(s), bits);
   }
-  EXPECT_EQ(valid, 1 << zb::kStateBits);  // every blend code is valid: 3 is coverage
+  // Blend codes 0..4 of the 3-bit field are valid (4 is under): 5 of 8.
+  EXPECT_EQ(valid, 5 << (zb::kStateBits - 3));
   zb::RopState s;
   EXPECT_FALSE(zb::unpack_state(1u << zb::kStateBits, s));
 }
@@ -85,11 +86,13 @@ TEST(Trace, DamagedFieldsNameTheProblem) {
   expect_rejected(patched(20, {40}), "depth width 40");
   expect_rejected(patched(24, {3}), "coverage samples 3");
   expect_rejected(patched(24, {32}), "coverage samples 32");
-  // First pass: name length at 36, name, then the state word.
+  // First pass: name length at 36, name, frame op count (0 here), then the state word.
   const size_t name_len = uint8_t(good[36]);
-  expect_rejected(patched(40 + name_len, {0x00, 0x08}), "invalid pass state");
-  expect_rejected(patched(42 + name_len, {0xff, 0xff, 0xff, 0xff}), "fragments announced");
-  const size_t first_fragment = 50 + name_len;
+  expect_rejected(patched(40 + name_len, {0xff}), "frame ops is more than");
+  expect_rejected(patched(44 + name_len, {0x00, 0x20}), "invalid pass state");
+  expect_rejected(patched(44 + name_len, {0xa0, 0x00}), "invalid pass state");  // blend 5
+  expect_rejected(patched(46 + name_len, {0xff, 0xff, 0xff, 0xff}), "fragments announced");
+  const size_t first_fragment = 54 + name_len;
   expect_rejected(patched(first_fragment, {0xff, 0x00}), "outside the 4x4 frame");
   expect_rejected(patched(first_fragment + 4, {0xff, 0xff, 0xff, 0xff}), "exceeds 24 bits");
   // Flags: bit 0 front, bits 8..15 coverage (at most the header's 16), the rest reserved.
