@@ -156,10 +156,6 @@ const char* to_string(FrameOpKind k) {
 // mask, write. "If the depth test is disabled ... the depth buffer is not updated" (GL 4.6,
 // 14.9.4): a disabled test passes every fragment and never writes depth.
 void GoldenRop::process(const Fragment& f) {
-  if (f.coverage > fb_.coverage_samples)
-    throw std::invalid_argument("golden: fragment coverage " + std::to_string(f.coverage) +
-                                " exceeds the " + std::to_string(fb_.coverage_samples) +
-                                " samples of the frame");
   if (state_.blend == BlendMode::kCoverage) return process_coverage(f);
   const size_t i = fb_.index(f.x, f.y);
   ++stats_.fragments_in;
@@ -187,14 +183,14 @@ void GoldenRop::process(const Fragment& f) {
   ++stats_.color_writes;
 }
 
-}  // namespace zb
-
-namespace zb {
-
 // Coverage mode (datapath.md "Coverage blend"): the depth unit compares three ways instead of
 // testing, so every fragment passes and is composited; depth is written (when depth_test and
 // depth_write) only in the nearer case; coverage always; colour under the write mask.
 void GoldenRop::process_coverage(const Fragment& f) {
+  if (f.coverage > fb_.coverage_samples)
+    throw std::invalid_argument("golden: fragment coverage " + std::to_string(f.coverage) +
+                                " exceeds the " + std::to_string(fb_.coverage_samples) +
+                                " samples of the frame");
   const size_t i = fb_.index(f.x, f.y);
   ++stats_.fragments_in;
   ++stats_.fragments_passed;
