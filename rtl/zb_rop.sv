@@ -552,7 +552,10 @@ module zb_rop #(
       (s1_valid_q && st_cov) |-> (s1_cov_new >= s1_cs));
 
   // The peel plane is read-only during a pass: pmem_we is the tile port's write alone
-  // (structural), and TilePortIdle keeps the tile port away from fragments in flight.
+  // (structural), and TilePortIdle keeps the tile port away from fragments in flight. So the
+  // word a fragment read at accept is still the memory's word when it is compared.
+  PeelStable: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      s1_valid_q |-> (u_peel_mem.mem_q[s1_addr_q] == pmem_rdata));
   // A fragment that passes with the peel test on lies strictly behind the peel plane.
   PeelPassBehind: assert property (@(posedge clk_i) disable iff (!rst_ni)
       (s1_valid_q && s1_pass && st_peel_test && !st_cov) |-> (s1_z_q > pmem_rdata));
