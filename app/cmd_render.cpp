@@ -25,6 +25,7 @@ using Clock = std::chrono::steady_clock;
 
 struct RenderOptions {
   std::string scene = "cad";
+  std::string camera;
   std::string methods = "three-pass";
   int width = 640;
   int height = 480;
@@ -106,7 +107,7 @@ void run_plan(const RenderOptions& o, const RasterizedScene& rs, const PassPlan&
 }
 
 void run_render(const RenderOptions& o) {
-  const Scene scene = resolve_scene(o.scene);
+  const Scene scene = resolve_scene(o.scene, o.camera);
   const std::vector<std::string> methods = parse_methods(o.methods);
   const Viewport vp = check_viewport(o.width, o.height, o.depth_bits);
   check_options(o, methods.size());
@@ -164,8 +165,13 @@ void add_render_command(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
   CLI::App* cmd = app.add_subcommand(
       "render", "Render a scene with one or more methods on the golden model, the RTL or both");
-  cmd->add_option("--scene,-s", o->scene, "Built-in scene (see 'zblend scenes')")
+  cmd->add_option("--scene,-s", o->scene,
+                  "Built-in scene (see 'zblend scenes') or a file: .obj (+.mtl), .gltf, .glb "
+                  "(docs/scenes.md)")
       ->capture_default_str();
+  cmd->add_option("--camera", o->camera,
+                  "Camera eye=x,y,z,at=x,y,z,fov=deg (default: the scene's own; files: fitted "
+                  "to the bounds)");
   cmd->add_option("--method,-m", o->methods,
                   "Method, a comma-separated list, or 'all' (see 'zblend methods')")
       ->capture_default_str();

@@ -14,6 +14,7 @@ namespace {
 
 struct TraceOptions {
   std::string scene = "cad";
+  std::string camera;
   std::string method = "three-pass";
   int width = 640;
   int height = 480;
@@ -22,7 +23,7 @@ struct TraceOptions {
 };
 
 void run_trace(const TraceOptions& o) {
-  const Scene scene = resolve_scene(o.scene);
+  const Scene scene = resolve_scene(o.scene, o.camera);
   const PassPlan* plan = find_plan(o.method);
   if (!plan) {
     std::vector<std::string> names;
@@ -46,8 +47,13 @@ void add_trace_command(CLI::App& app) {
   auto o = std::make_shared<TraceOptions>();
   CLI::App* cmd = app.add_subcommand(
       "trace", "Write a render's fragment streams and pass states to a trace file (.zbt)");
-  cmd->add_option("--scene,-s", o->scene, "Built-in scene (see 'zblend scenes')")
+  cmd->add_option("--scene,-s", o->scene,
+                  "Built-in scene (see 'zblend scenes') or a file: .obj (+.mtl), .gltf, .glb "
+                  "(docs/scenes.md)")
       ->capture_default_str();
+  cmd->add_option("--camera", o->camera,
+                  "Camera eye=x,y,z,at=x,y,z,fov=deg (default: the scene's own; files: fitted "
+                  "to the bounds)");
   cmd->add_option("--method,-m", o->method, "Method with a pass plan (see 'zblend methods')")
       ->capture_default_str();
   cmd->add_option("--width,-W", o->width, "Frame width in pixels")->capture_default_str();

@@ -27,7 +27,9 @@ void add_trace_command(CLI::App& app);
 void add_info_commands(CLI::App& app);  // methods, scenes, plan
 
 // Option checks shared by the subcommands; each throws UsageError naming the option.
-Scene resolve_scene(const std::string& name);
+// A built-in scene name or a scene file (scene_file.h, is_scene_path); `camera`, when not empty,
+// is the text of --camera.
+Scene resolve_scene(const std::string& name, const std::string& camera = "");
 std::vector<std::string> parse_methods(const std::string& list);  // "a,b" or "all"
 Viewport check_viewport(int width, int height, int depth_bits);
 // Fails early, before any work, when `path` lacks `extension` or its directory is not writable.

@@ -7,17 +7,47 @@
 
 #include "commands.h"
 #include "passes.h"
+#include "scene_file.h"
 #include "scenes.h"
 
 namespace zb::app {
 
 namespace fs = std::filesystem;
 
-Scene resolve_scene(const std::string& name) {
-  if (std::optional<Scene> scene = builtin_scene(name)) return *scene;
-  std::vector<std::string> names;
-  for (const SceneInfo& s : builtin_scenes()) names.push_back(s.name);
-  throw UsageError(fmt::format("--scene: unknown scene '{}' (choose from {})", name, join(names)));
+Scene resolve_scene(const std::string& name, const std::string& camera) {
+  // Checked first: a bad --camera fails before a large file is read.
+  std::optional<CameraSpec> spec;
+  if (!camera.empty()) {
+    try {
+      spec = parse_camera_spec(camera);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
+  }
+  std::optional<Scene> scene;
+  if (is_scene_path(name)) {
+    try {
+      scene = load_scene_file(name);
+    } catch (const SceneFileError& e) {
+      throw UsageError(fmt::format("--scene: {}", e.what()));
+    }
+  } else {
+    scene = builtin_scene(name);
+  }
+  if (!scene) {
+    std::vector<std::string> names;
+    for (const SceneInfo& s : builtin_scenes()) names.push_back(s.name);
+    throw UsageError(fmt::format("--scene: unknown scene '{}' (choose from {}, or a .obj, .gltf or "
+                                 ".glb file)", name, join(names)));
+  }
+  if (spec) {
+    try {
+      aim_camera(*scene, *spec);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
+  }
+  return std::move(*scene);
 }
 
 std::vector<std::string> parse_methods(const std::string& list) {

@@ -7,6 +7,7 @@ packages=(
   libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libbenchmark-dev
   verilator zlib1g-dev
+  libtinyobjloader-dev libtinygltf-dev assimp-testmodels glmark2-data
 )
 
 missing=()

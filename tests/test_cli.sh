@@ -67,6 +67,18 @@ else
   bad "render --backend both"
 fi
 
+# A real scene file from Debian's assimp-testmodels on both backends, and a file trace.
+regr01=/usr/share/assimp/models/OBJ/regr01.obj
+if "$zblend" render -q --scene "$regr01" --method all --width 40 --height 30 --backend both \
+     --out-dir "$tmp/regr01"; then
+  grep -qE '^three-pass,3,.*,0$' "$tmp/regr01/summary.csv" && ok || bad "regr01 both: mismatches"
+else
+  bad "render regr01.obj --backend both"
+fi
+if "$zblend" render -q --scene "$regr01" --method three-pass --width 40 --height 30 --backend rtl \
+     --camera eye=-1200,-1400,700,at=620,380,120,fov=45 --out "$tmp/out/r.png"; then ok; else bad "render regr01 rtl --camera"; fi
+rm -f "$tmp/out/r.png"
+
 # A trace file.
 if "$zblend" trace --scene quads --method unsorted --width 32 --height 24 --out "$tmp/out/q.zbt" >/dev/null &&
    [[ $(head -c 7 "$tmp/out/q.zbt") == ZBTRACE ]]; then ok; else bad "trace write"; fi
@@ -92,6 +104,12 @@ expect_error "plan of reference" "no pass plan" plan --method reference
 expect_error "trace of reference" "no pass plan" trace --method reference --out "$tmp/out/t.zbt"
 expect_error "trace extension" "must end in .zbt" trace --out "$tmp/out/t.bin"
 expect_error "trace size" "--width: 9000 is out of range" trace --width 9000 --out "$tmp/out/t.zbt"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n' >"$tmp/bad.obj"
+expect_error "obj index" "bad.obj: line 4: vertex index 9 out of range" render --scene "$tmp/bad.obj" --out "$tmp/out/a.png"
+printf '{"asset": {"version": "2.0"}, "nodes": [' >"$tmp/trunc.gltf"
+expect_error "truncated gltf" "trunc.gltf: JSON: malformed" trace --scene "$tmp/trunc.gltf" --out "$tmp/out/t.zbt"
+expect_error "missing scene file" "no/such.obj: open: no such file" render --scene "$tmp/no/such.obj" --out "$tmp/out/a.png"
+expect_error "camera field" "--camera: field 'fov'" render --camera eye=0,0,5,at=0,0,0,fov=x --out "$tmp/out/a.png"
 if [[ $(id -u) -ne 0 ]]; then
   expect_error "unwritable" "not writable" render --out "$tmp/ro/a.png"
 else

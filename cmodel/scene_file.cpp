@@ -1,0 +1,807 @@
+// Scene files (docs/scenes.md). tinyobjloader and tinygltf come from Debian as shared libraries
+// (libtinyobjloader.so, libtinygltf.so, the latter built with Debian's nlohmann-json and stb):
+// their implementations are compiled there, so no *_IMPLEMENTATION macro is defined here.
+//
+// Both loaders are lenient ("v abc" reads as 0, a short face is dropped), so each file is first
+// checked here line by line (OBJ, MTL) or structurally (GLB header, JSON syntax, accessors,
+// indices, node hierarchy), and every problem is reported with its place.
+#include "scene_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <unordered_map>
+
+#include <fmt/core.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <nlohmann/json.hpp>
+#include <tiny_gltf.h>
+#include <tiny_obj_loader.h>
+
+namespace zb {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+[[noreturn]] void fail(const std::string& file, const std::string& place, const std::string& what) {
+  throw SceneFileError(fmt::format("{}: {}: {}", file, place, what));
+}
+
+// Newlines and runs of blanks folded into "; " and " ": the message stays one line.
+std::string one_line(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '\n' || c == '\r') {
+      if (!out.empty() && out.back() != ' ') out += "; ";
+    } else {
+      out += c;
+    }
+  }
+  while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
+  return out.empty() ? "unknown error" : out;
+}
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+bool read_whole_file(const std::string& path, std::string& out) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return false;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  out = ss.str();
+  return static_cast<bool>(in) || in.eof();
+}
+
+std::string read_or_fail(const std::string& path, const std::string& what) {
+  std::string text;
+  std::error_code ec;
+  if (!fs::exists(path, ec)) fail(path, what, "no such file");
+  if (!read_whole_file(path, text)) fail(path, what, "cannot read the file");
+  return text;
+}
+
+// ---- numbers ---------------------------------------------------------------------------------
+
+// The whole token as a number; `finite` tells infinities and NaN apart from garbage.
+bool parse_number(const std::string& tok, double& out) {
+  if (tok.empty()) return false;
+  char* end = nullptr;
+  out = std::strtod(tok.c_str(), &end);
+  return end == tok.c_str() + tok.size();
+}
+
+bool parse_int(const std::string& tok, long& out) {
+  if (tok.empty()) return false;
+  char* end = nullptr;
+  errno = 0;
+  out = std::strtol(tok.c_str(), &end, 10);
+  return errno == 0 && end == tok.c_str() + tok.size();
+}
+
+std::vector<std::string> split_blanks(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream in(line);
+  std::string tok;
+  while (in >> tok) out.push_back(tok);
+  return out;
+}
+
+std::vector<std::string> split(const std::string& text, char sep) {
+  std::vector<std::string> out;
+  size_t start = 0;
+  while (true) {
+    const size_t at = text.find(sep, start);
+    out.push_back(text.substr(start, at == std::string::npos ? std::string::npos : at - start));
+    if (at == std::string::npos) return out;
+    start = at + 1;
+  }
+}
+
+// Lines without comments and carriage returns, numbered from 1.
+template <typename F>
+void for_each_line(const std::string& text, F&& f) {
+  std::istringstream in(text);
+  std::string line;
+  int number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    if (const size_t hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+    std::replace(line.begin(), line.end(), '\r', ' ');
+    std::replace(line.begin(), line.end(), '\t', ' ');
+    const std::vector<std::string> tok = split_blanks(line);
+    if (!tok.empty()) f(number, tok);
+  }
+}
+
+// Checks that fields [first, first + n) of `tok` are finite numbers, optionally in [0, 1].
+void expect_numbers(const std::string& file, int line, const std::vector<std::string>& tok,
+                    size_t first, size_t n, bool unit_range) {
+  const std::string place = fmt::format("line {}", line);
+  if (tok.size() < first + n)
+    fail(file, place, fmt::format("'{}' needs {} number{}, has {}", tok[0], n, n > 1 ? "s" : "",
+                                  tok.size() - first));
+  for (size_t i = first; i < first + n; ++i) {
+    double v = 0;
+    if (!parse_number(tok[i], v)) fail(file, place, fmt::format("'{}': '{}' is not a number", tok[0], tok[i]));
+    if (!std::isfinite(static_cast<float>(v)))  // read as float: 1e39 is infinite too
+      fail(file, place, fmt::format("'{}': {} is not finite", tok[0], tok[i]));
+    if (unit_range && (v < 0 || v > 1))
+      fail(file, place, fmt::format("'{}': {} is outside 0 to 1", tok[0], tok[i]));
+  }
+}
+
+// ---- OBJ and MTL -----------------------------------------------------------------------------
+
+// The statements zblend reads (newmtl, Kd, d, Tr); the others are left to tinyobjloader.
+void check_mtl(const std::string& path) {
+  const std::string text = read_or_fail(path, "mtllib");
+  bool have_material = false;
+  for_each_line(text, [&](int line, const std::vector<std::string>& tok) {
+    const std::string& key = tok[0];
+    if (key == "newmtl") {
+      if (tok.size() < 2) fail(path, fmt::format("line {}", line), "'newmtl' without a name");
+      have_material = true;
+    } else if (key == "Kd" || key == "d" || key == "Tr") {
+      if (!have_material) fail(path, fmt::format("line {}", line), fmt::format("'{}' before any 'newmtl'", key));
+      expect_numbers(path, line, tok, 1, key == "Kd" ? 3 : 1, true);
+    }
+  });
+}
+
+// Vertices, normals and faces with their indices, and the material libraries, line by line.
+void check_obj(const std::string& path, const std::string& text) {
+  size_t nv = 0, nvt = 0, nvn = 0;
+  const fs::path dir = fs::path(path).parent_path();
+  for_each_line(text, [&](int line, const std::vector<std::string>& tok) {
+    const std::string place = fmt::format("line {}", line);
+    const std::string& key = tok[0];
+    if (key == "v") {
+      expect_numbers(path, line, tok, 1, 3, false);
+      ++nv;
+    } else if (key == "vn") {
+      expect_numbers(path, line, tok, 1, 3, false);
+      ++nvn;
+    } else if (key == "vt") {
+      expect_numbers(path, line, tok, 1, 1, false);
+      ++nvt;
+    } else if (key == "f") {
+      if (tok.size() < 4) fail(path, place, fmt::format("a face needs 3 vertices, has {}", tok.size() - 1));
+      for (size_t i = 1; i < tok.size(); ++i) {
+        const std::vector<std::string> parts = split(tok[i], '/');
+        const size_t counts[3] = {nv, nvt, nvn};
+        const char* names[3] = {"vertex", "texture coordinate", "normal"};
+        if (parts.size() > 3) fail(path, place, fmt::format("bad face vertex '{}'", tok[i]));
+        for (size_t k = 0; k < parts.size(); ++k) {
+          if (k > 0 && parts[k].empty()) continue;  // v//vn
+          long idx = 0;
+          if (!parse_int(parts[k], idx) || idx == 0)
+            fail(path, place, fmt::format("bad face vertex '{}'", tok[i]));
+          const long n = static_cast<long>(counts[k]);
+          if ((idx > 0 && idx > n) || (idx < 0 && -idx > n))
+            fail(path, place, fmt::format("{} index {} out of range (1 to {})", names[k], idx, n));
+        }
+      }
+    } else if (key == "mtllib") {
+      if (tok.size() < 2) fail(path, place, "'mtllib' without a file name");
+      for (size_t i = 1; i < tok.size(); ++i) {
+        const fs::path mtl = dir / tok[i];
+        std::error_code ec;
+        if (!fs::is_regular_file(mtl, ec))
+          fail(path, place, fmt::format("material library '{}' not found", mtl.string()));
+        check_mtl(mtl.string());
+      }
+    } else if (key == "usemtl") {
+      if (tok.size() < 2) fail(path, place, "'usemtl' without a name");
+    }
+  });
+}
+
+uint8_t to_unorm8(double v) {
+  return static_cast<uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+}
+
+// Builds a mesh from triangles over shared position and normal arrays. A corner with a usable
+// normal from the file shares its vertex with the other corners of the same (position, normal);
+// a triangle without usable normals for all three corners gets its own vertices and the flat
+// face normal ((0, 0, 1) when the triangle has zero area).
+struct MeshBuilder {
+  const std::vector<glm::vec3>& positions;
+  const std::vector<glm::vec3>& normals;
+  Mesh mesh;
+  std::unordered_map<uint64_t, uint32_t> shared;
+
+  void add(const uint32_t p[3], const int64_t n[3]) {
+    bool smooth = true;
+    for (int k = 0; k < 3; ++k)
+      smooth = smooth && n[k] >= 0 && static_cast<size_t>(n[k]) < normals.size() &&
+               glm::length(normals[n[k]]) > 0.0f;
+    glm::uvec3 tri;
+    if (smooth) {
+      for (int k = 0; k < 3; ++k) {
+        const uint64_t key = (uint64_t{p[k]} << 32) | static_cast<uint32_t>(n[k]);
+        auto [it, inserted] = shared.try_emplace(key, static_cast<uint32_t>(mesh.positions.size()));
+        if (inserted) {
+          mesh.positions.push_back(positions[p[k]]);
+          mesh.normals.push_back(glm::normalize(normals[n[k]]));
+        }
+        tri[k] = it->second;
+      }
+    } else {
+      const glm::vec3 a = positions[p[0]], b = positions[p[1]], c = positions[p[2]];
+      glm::vec3 fn = glm::cross(b - a, c - a);
+      const float len = glm::length(fn);
+      fn = (len > 0.0f && std::isfinite(len)) ? fn / len : glm::vec3(0.0f, 0.0f, 1.0f);
+      for (int k = 0; k < 3; ++k) {
+        tri[k] = static_cast<uint32_t>(mesh.positions.size());
+        mesh.positions.push_back(positions[p[k]]);
+        mesh.normals.push_back(fn);
+      }
+    }
+    mesh.triangles.push_back(tri);
+  }
+};
+
+Scene load_obj(const std::string& path) {
+  const std::string text = read_or_fail(path, "open");
+  check_obj(path, text);
+
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> mats;
+  std::string warn, err;
+  std::string base = fs::path(path).parent_path().string();
+  if (!base.empty()) base += '/';
+  if (!tinyobj::LoadObj(&attrib, &shapes, &mats, &warn, &err, path.c_str(), base.c_str(), true))
+    fail(path, "tinyobjloader", one_line(err));
+
+  Scene scene;
+  scene.name = path;
+  // tinyobjloader: `d` is the dissolve; `Tr` alone sets dissolve = 1 - Tr.
+  for (const tinyobj::material_t& m : mats) {
+    Material mat;
+    mat.name = m.name;
+    mat.color = {to_unorm8(m.diffuse[0]), to_unorm8(m.diffuse[1]), to_unorm8(m.diffuse[2]),
+                 to_unorm8(m.dissolve)};
+    scene.materials.push_back(mat);
+  }
+  const auto default_material = static_cast<uint32_t>(scene.materials.size());
+  bool used_default = false;
+
+  std::vector<glm::vec3> positions(attrib.vertices.size() / 3), normals(attrib.normals.size() / 3);
+  for (size_t i = 0; i < positions.size(); ++i)
+    positions[i] = {attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]};
+  for (size_t i = 0; i < normals.size(); ++i)
+    normals[i] = {attrib.normals[3 * i], attrib.normals[3 * i + 1], attrib.normals[3 * i + 2]};
+
+  for (size_t s = 0; s < shapes.size(); ++s) {
+    const tinyobj::mesh_t& m = shapes[s].mesh;
+    // One object per shape, split further by material (Object has one material).
+    std::vector<int> order;
+    std::map<int, MeshBuilder> builders;
+    size_t offset = 0;
+    for (size_t f = 0; f < m.num_face_vertices.size(); ++f) {
+      const size_t nfv = m.num_face_vertices[f];
+      if (nfv == 3) {
+        int mat = f < m.material_ids.size() ? m.material_ids[f] : -1;
+        if (mat < 0 || static_cast<size_t>(mat) >= mats.size()) mat = -1;
+        auto it = builders.find(mat);
+        if (it == builders.end()) {
+          it = builders.emplace(mat, MeshBuilder{positions, normals, {}, {}}).first;
+          order.push_back(mat);
+        }
+        uint32_t p[3];
+        int64_t n[3];
+        for (int k = 0; k < 3; ++k) {
+          const tinyobj::index_t& ix = m.indices[offset + k];
+          if (ix.vertex_index < 0 || static_cast<size_t>(ix.vertex_index) >= positions.size())
+            fail(path, fmt::format("shape '{}'", shapes[s].name), "vertex index out of range");
+          p[k] = static_cast<uint32_t>(ix.vertex_index);
+          n[k] = ix.normal_index;
+        }
+        it->second.add(p, n);
+      }
+      offset += nfv;
+    }
+    for (int mat : order) {
+      Object obj;
+      obj.name = shapes[s].name.empty() ? fmt::format("shape {}", s) : shapes[s].name;
+      if (order.size() > 1) obj.name += "/" + (mat < 0 ? std::string("default") : mats[mat].name);
+      obj.mesh = std::move(builders.at(mat).mesh);
+      obj.material = mat < 0 ? default_material : static_cast<uint32_t>(mat);
+      used_default = used_default || mat < 0;
+      scene.objects.push_back(std::move(obj));
+    }
+  }
+  if (used_default) scene.materials.push_back(Material{"default", {255, 255, 255, 255}});
+  scene.description = fmt::format("OBJ file, {} shapes, {} materials", shapes.size(), mats.size());
+  return scene;
+}
+
+// ---- glTF and GLB ----------------------------------------------------------------------------
+
+uint32_t read_u32(const std::string& data, size_t at) {
+  uint32_t v = 0;
+  std::memcpy(&v, data.data() + at, 4);
+  return v;  // GLB is little-endian, as is every target zblend builds for
+}
+
+// The JSON chunk of a GLB file, after checking the header and chunk lengths.
+std::string glb_json_chunk(const std::string& path, const std::string& data) {
+  if (data.size() < 12) fail(path, "byte 0", fmt::format("GLB header needs 12 bytes, file has {}", data.size()));
+  if (data.compare(0, 4, "glTF") != 0) fail(path, "byte 0", "not a GLB file (magic is not 'glTF')");
+  if (read_u32(data, 4) != 2) fail(path, "byte 4", fmt::format("GLB version {}, expected 2", read_u32(data, 4)));
+  const uint32_t length = read_u32(data, 8);
+  if (length != data.size())
+    fail(path, "byte 8", fmt::format("GLB length {} but the file has {} bytes (truncated?)", length, data.size()));
+  size_t at = 12;
+  std::string json;
+  for (int chunk = 0; at < data.size(); ++chunk) {
+    if (data.size() - at < 8) fail(path, fmt::format("byte {}", at), "truncated chunk header");
+    const uint32_t clen = read_u32(data, at), type = read_u32(data, at + 4);
+    if (clen > data.size() - at - 8)
+      fail(path, fmt::format("byte {}", at),
+           fmt::format("chunk {} of {} bytes runs past the end of the file", chunk, clen));
+    if (chunk == 0) {
+      if (type != 0x4E4F534Au) fail(path, fmt::format("byte {}", at + 4), "first chunk is not JSON");
+      json = data.substr(at + 8, clen);
+    }
+    at += 8 + clen;
+  }
+  if (at == 12) fail(path, "byte 12", "no JSON chunk");
+  return json;
+}
+
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                const unsigned char*, int, void*) {
+  return true;  // textures are not sampled (docs/scenes.md)
+}
+
+int component_size(int type) {
+  switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+    case TINYGLTF_COMPONENT_TYPE_INT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+    default: return 0;
+  }
+}
+
+int component_count(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return 1;
+    case TINYGLTF_TYPE_VEC2: return 2;
+    case TINYGLTF_TYPE_VEC3: return 3;
+    case TINYGLTF_TYPE_VEC4: return 4;
+    default: return 0;
+  }
+}
+
+// An accessor's elements, bounds-checked against its buffer view and buffer.
+struct AccessorView {
+  const unsigned char* data = nullptr;
+  size_t stride = 0;
+  size_t count = 0;
+  int component = 0;
+};
+
+class GltfReader {
+ public:
+  GltfReader(const std::string& path, const tinygltf::Model& model) : path_(path), model_(model) {}
+
+  Scene read() {
+    scene_.name = path_;
+    for (size_t i = 0; i < model_.materials.size(); ++i) add_material(i);
+    std::vector<int> roots;
+    if (!model_.scenes.empty()) {
+      int s = model_.defaultScene >= 0 ? model_.defaultScene : 0;
+      if (static_cast<size_t>(s) >= model_.scenes.size())
+        fail(path_, "scene", fmt::format("default scene {} does not exist", s));
+      roots = model_.scenes[s].nodes;
+    } else {
+      std::vector<bool> child(model_.nodes.size(), false);
+      for (const tinygltf::Node& n : model_.nodes)
+        for (int c : n.children)
+          if (c >= 0 && static_cast<size_t>(c) < child.size()) child[c] = true;
+      for (size_t i = 0; i < child.size(); ++i)
+        if (!child[i]) roots.push_back(static_cast<int>(i));
+    }
+    for (int r : roots) visit(r, glm::mat4(1.0f), "scene");
+    if (default_used_) scene_.materials.push_back(Material{"default", {255, 255, 255, 255}});
+    scene_.description = fmt::format("glTF file, {} nodes, {} meshes, {} materials", model_.nodes.size(),
+                                      model_.meshes.size(), model_.materials.size());
+    if (ignored_) scene_.description += fmt::format("; {} point or line primitives ignored", ignored_);
+    if (masked_) scene_.description += fmt::format("; {} MASK primitives below alphaCutoff dropped", masked_);
+    return std::move(scene_);
+  }
+
+ private:
+  void add_material(size_t i) {
+    const tinygltf::Material& m = model_.materials[i];
+    const std::string place = fmt::format("materials[{}]", i);
+    std::vector<double> f = m.pbrMetallicRoughness.baseColorFactor;
+    if (f.empty()) f = {1, 1, 1, 1};
+    if (f.size() != 4) fail(path_, place, "baseColorFactor needs 4 numbers");
+    for (double v : f)
+      if (!std::isfinite(v) || v < 0 || v > 1) fail(path_, place, fmt::format("baseColorFactor {} is outside 0 to 1", v));
+    Material mat;
+    mat.name = m.name.empty() ? fmt::format("material {}", i) : m.name;
+    mat.color = {to_unorm8(f[0]), to_unorm8(f[1]), to_unorm8(f[2]), to_unorm8(f[3])};
+    bool drop = false;
+    if (m.alphaMode.empty() || m.alphaMode == "OPAQUE") {
+      mat.color.a = 255;
+    } else if (m.alphaMode == "MASK") {
+      // Without textures every fragment has the factor's alpha: all kept (opaque) or all discarded.
+      drop = !(f[3] >= m.alphaCutoff);
+      mat.color.a = 255;
+    } else if (m.alphaMode != "BLEND") {
+      fail(path_, place, fmt::format("unknown alphaMode '{}'", m.alphaMode));
+    }
+    scene_.materials.push_back(mat);
+    dropped_.push_back(drop);
+  }
+
+  glm::mat4 local_matrix(const tinygltf::Node& n, const std::string& place) const {
+    glm::mat4 m(1.0f);
+    if (!n.matrix.empty()) {
+      if (n.matrix.size() != 16) fail(path_, place, "matrix needs 16 numbers");
+      for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = static_cast<float>(n.matrix[i]);  // column-major
+    } else {
+      glm::vec3 t(0.0f), s(1.0f);
+      glm::quat r(1.0f, 0.0f, 0.0f, 0.0f);
+      if (n.translation.size() == 3) t = {n.translation[0], n.translation[1], n.translation[2]};
+      if (n.scale.size() == 3) s = {n.scale[0], n.scale[1], n.scale[2]};
+      if (n.rotation.size() == 4)  // glTF: x, y, z, w
+        r = glm::quat(static_cast<float>(n.rotation[3]), static_cast<float>(n.rotation[0]),
+                      static_cast<float>(n.rotation[1]), static_cast<float>(n.rotation[2]));
+      m = glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), s);
+    }
+    for (int i = 0; i < 16; ++i)
+      if (!std::isfinite(glm::value_ptr(m)[i])) fail(path_, place, "non-finite transform");
+    return m;
+  }
+
+  void visit(int index, const glm::mat4& parent, const std::string& from) {
+    if (index < 0 || static_cast<size_t>(index) >= model_.nodes.size())
+      fail(path_, from, fmt::format("node {} does not exist", index));
+    const std::string place = fmt::format("nodes[{}]", index);
+    if (std::find(stack_.begin(), stack_.end(), index) != stack_.end())
+      fail(path_, place, "cycle in the node hierarchy");
+    stack_.push_back(index);
+    const tinygltf::Node& n = model_.nodes[index];
+    const glm::mat4 world = parent * local_matrix(n, place);
+    if (n.mesh >= 0) {
+      if (static_cast<size_t>(n.mesh) >= model_.meshes.size())
+        fail(path_, place, fmt::format("mesh {} does not exist", n.mesh));
+      const tinygltf::Mesh& mesh = model_.meshes[n.mesh];
+      for (size_t p = 0; p < mesh.primitives.size(); ++p)
+        add_primitive(mesh, mesh.primitives[p], fmt::format("meshes[{}].primitives[{}]", n.mesh, p),
+                      world, n.name.empty() ? place : n.name);
+    }
+    for (int c : n.children) visit(c, world, place);
+    stack_.pop_back();
+  }
+
+  AccessorView view(int index, const std::string& from) const {
+    if (index < 0 || static_cast<size_t>(index) >= model_.accessors.size())
+      fail(path_, from, fmt::format("accessor {} does not exist", index));
+    const tinygltf::Accessor& a = model_.accessors[index];
+    const std::string place = fmt::format("accessors[{}]", index);
+    if (a.sparse.isSparse) fail(path_, place, "sparse accessors are not supported");
+    if (a.bufferView < 0 || static_cast<size_t>(a.bufferView) >= model_.bufferViews.size())
+      fail(path_, place, fmt::format("bufferView {} does not exist", a.bufferView));
+    const tinygltf::BufferView& bv = model_.bufferViews[a.bufferView];
+    const std::string bv_place = fmt::format("bufferViews[{}]", a.bufferView);
+    if (bv.buffer < 0 || static_cast<size_t>(bv.buffer) >= model_.buffers.size())
+      fail(path_, bv_place, fmt::format("buffer {} does not exist", bv.buffer));
+    const std::vector<unsigned char>& buf = model_.buffers[bv.buffer].data;
+    if (bv.byteOffset > buf.size() || bv.byteLength > buf.size() - bv.byteOffset)
+      fail(path_, bv_place, fmt::format("bytes {} to {} lie outside buffer {} ({} bytes)", bv.byteOffset,
+                                        bv.byteOffset + bv.byteLength, bv.buffer, buf.size()));
+    const int cs = component_size(a.componentType), cc = component_count(a.type);
+    if (cs == 0 || cc == 0) fail(path_, place, "unsupported componentType or type");
+    const size_t elem = static_cast<size_t>(cs) * cc;
+    const size_t stride = bv.byteStride ? bv.byteStride : elem;
+    if (stride < elem) fail(path_, bv_place, fmt::format("byteStride {} is less than the element size {}", stride, elem));
+    AccessorView v;
+    v.count = a.count;
+    v.stride = stride;
+    v.component = a.componentType;
+    if (a.count > 0) {
+      if (a.byteOffset > bv.byteLength || bv.byteLength - a.byteOffset < elem ||
+          (a.count - 1) > (bv.byteLength - a.byteOffset - elem) / stride)
+        fail(path_, place, fmt::format("{} elements run past the end of bufferView {}", a.count, a.bufferView));
+      v.data = buf.data() + bv.byteOffset + a.byteOffset;
+    }
+    return v;
+  }
+
+  std::vector<glm::vec3> read_vec3(int index, const std::string& from) const {
+    const AccessorView v = view(index, from);
+    const tinygltf::Accessor& a = model_.accessors[index];
+    const std::string place = fmt::format("accessors[{}]", index);
+    if (a.type != TINYGLTF_TYPE_VEC3 || a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+      fail(path_, place, "expected VEC3 of FLOAT");
+    std::vector<glm::vec3> out(v.count);
+    for (size_t i = 0; i < v.count; ++i) {
+      std::memcpy(&out[i], v.data + i * v.stride, 12);
+      if (!std::isfinite(out[i].x) || !std::isfinite(out[i].y) || !std::isfinite(out[i].z))
+        fail(path_, place, fmt::format("element {} is not finite", i));
+    }
+    return out;
+  }
+
+  std::vector<uint32_t> read_indices(int index, size_t vertex_count, const std::string& from) const {
+    const AccessorView v = view(index, from);
+    const std::string place = fmt::format("accessors[{}]", index);
+    if (model_.accessors[index].type != TINYGLTF_TYPE_SCALAR ||
+        (v.component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+         v.component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+         v.component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+      fail(path_, place, "indices must be SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+    std::vector<uint32_t> out(v.count);
+    for (size_t i = 0; i < v.count; ++i) {
+      const unsigned char* p = v.data + i * v.stride;
+      uint32_t x = 0;
+      if (v.component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
+        x = *p;
+      } else if (v.component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
+        uint16_t s = 0;
+        std::memcpy(&s, p, 2);
+        x = s;
+      } else {
+        std::memcpy(&x, p, 4);
+      }
+      if (x >= vertex_count)
+        fail(path_, place, fmt::format("element {}: index {} out of range ({} vertices)", i, x, vertex_count));
+      out[i] = x;
+    }
+    return out;
+  }
+
+  void add_primitive(const tinygltf::Mesh& mesh, const tinygltf::Primitive& prim, const std::string& place,
+                     const glm::mat4& world, const std::string& node_name) {
+    const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+    if (mode <= TINYGLTF_MODE_LINE_STRIP) {
+      ++ignored_;  // points and lines: no triangles to draw
+      return;
+    }
+    if (mode > TINYGLTF_MODE_TRIANGLE_FAN) fail(path_, place, fmt::format("unknown mode {}", mode));
+    uint32_t material;
+    if (prim.material < 0) {
+      material = static_cast<uint32_t>(model_.materials.size());
+      default_used_ = true;
+    } else if (static_cast<size_t>(prim.material) >= model_.materials.size()) {
+      fail(path_, place, fmt::format("material {} does not exist", prim.material));
+    } else {
+      material = static_cast<uint32_t>(prim.material);
+      if (dropped_[material]) {
+        ++masked_;
+        return;
+      }
+    }
+    const auto pos_it = prim.attributes.find("POSITION");
+    if (pos_it == prim.attributes.end()) fail(path_, place, "no POSITION attribute");
+    const std::vector<glm::vec3> positions = read_vec3(pos_it->second, place);
+    std::vector<glm::vec3> normals;
+    if (const auto n = prim.attributes.find("NORMAL"); n != prim.attributes.end()) {
+      normals = read_vec3(n->second, place);
+      if (normals.size() != positions.size())
+        fail(path_, fmt::format("accessors[{}]", n->second),
+             fmt::format("NORMAL has {} elements, POSITION {}", normals.size(), positions.size()));
+    }
+    std::vector<uint32_t> idx;
+    if (prim.indices >= 0) {
+      idx = read_indices(prim.indices, positions.size(), place);
+    } else {
+      idx.resize(positions.size());
+      for (size_t i = 0; i < idx.size(); ++i) idx[i] = static_cast<uint32_t>(i);
+    }
+    MeshBuilder b{positions, normals, {}, {}};
+    const bool have_n = !normals.empty();
+    auto emit = [&](uint32_t i0, uint32_t i1, uint32_t i2) {
+      const uint32_t p[3] = {i0, i1, i2};
+      const int64_t n[3] = {have_n ? i0 : -1, have_n ? i1 : -1, have_n ? i2 : -1};
+      b.add(p, n);
+    };
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+      if (idx.size() % 3 != 0)
+        fail(path_, place, fmt::format("{} indices is not a multiple of 3", idx.size()));
+      for (size_t i = 0; i + 2 < idx.size(); i += 3) emit(idx[i], idx[i + 1], idx[i + 2]);
+    } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+      for (size_t i = 0; i + 2 < idx.size(); ++i)
+        emit(idx[i], idx[i + 1 + i % 2], idx[i + 2 - i % 2]);
+    } else {
+      for (size_t i = 1; i + 1 < idx.size(); ++i) emit(idx[i], idx[i + 1], idx[0]);
+    }
+    if (b.mesh.triangles.empty()) return;
+    for (const glm::vec3& p : b.mesh.positions) {
+      const glm::vec4 w = world * glm::vec4(p, 1.0f);
+      if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z))
+        fail(path_, place, "the node transform gives non-finite coordinates");
+    }
+    Object obj;
+    obj.name = mesh.name.empty() ? node_name : node_name + "/" + mesh.name;
+    obj.mesh = std::move(b.mesh);
+    obj.material = material;
+    obj.transform = world;
+    scene_.objects.push_back(std::move(obj));
+  }
+
+  const std::string& path_;
+  const tinygltf::Model& model_;
+  Scene scene_;
+  std::vector<bool> dropped_;
+  std::vector<int> stack_;
+  bool default_used_ = false;
+  size_t ignored_ = 0;
+  size_t masked_ = 0;
+};
+
+Scene load_gltf(const std::string& path, bool binary) {
+  const std::string data = read_or_fail(path, "open");
+  const std::string json = binary ? glb_json_chunk(path, data) : data;
+  try {
+    const nlohmann::json parsed = nlohmann::json::parse(json);  // syntax only: the error has line and column
+    (void)parsed;
+  } catch (const nlohmann::json::exception& e) {
+    std::string what = e.what();
+    if (const size_t b = what.find("] "); b != std::string::npos) what.erase(0, b + 2);
+    fail(path, binary ? "JSON chunk" : "JSON", "malformed: " + one_line(what));
+  }
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(skip_image, nullptr);
+  tinygltf::Model model;
+  std::string err, warn;
+  const std::string base = fs::path(path).parent_path().string();
+  const bool ok =
+      binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                           reinterpret_cast<const unsigned char*>(data.data()),
+                                           static_cast<unsigned int>(data.size()), base)
+             : loader.LoadASCIIFromString(&model, &err, &warn, data.c_str(),
+                                          static_cast<unsigned int>(data.size()), base);
+  if (!ok) fail(path, "tinygltf", one_line(err));
+  return GltfReader(path, model).read();
+}
+
+// ---- the camera ------------------------------------------------------------------------------
+
+// Centre and radius of the bounding sphere (the axis-aligned box's centre and half diagonal)
+// of every world-space vertex; radius 1 for a single point.
+void bounding_sphere(const Scene& scene, glm::vec3& centre, float& radius) {
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+  for (const Object& o : scene.objects)
+    for (const glm::vec3& p : o.mesh.positions) {
+      const glm::vec3 w = glm::vec3(o.transform * glm::vec4(p, 1.0f));
+      lo = glm::min(lo, w);
+      hi = glm::max(hi, w);
+    }
+  if (lo.x > hi.x) lo = hi = glm::vec3(0.0f);
+  centre = (lo + hi) * 0.5f;
+  radius = glm::length(hi - lo) * 0.5f;
+  if (!(radius > 0.0f)) radius = 1.0f;
+}
+
+constexpr float kFitFovDeg = 45.0f;
+constexpr float kDepthMargin = 1.01f;  // near and far: the sphere widened by 1% of its radius
+
+}  // namespace
+
+bool is_scene_path(const std::string& name) {
+  const std::string ext = lower_extension(name);
+  return name.find('/') != std::string::npos || ext == ".obj" || ext == ".gltf" || ext == ".glb";
+}
+
+Scene load_scene_file(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  Scene scene;
+  if (ext == ".obj") {
+    scene = load_obj(path);
+  } else if (ext == ".gltf" || ext == ".glb") {
+    scene = load_gltf(path, ext == ".glb");
+  } else {
+    fail(path, "name", fmt::format("unsupported file type '{}' (expected .obj, .gltf or .glb)", ext));
+  }
+  if (scene.triangle_count() == 0) throw SceneFileError(fmt::format("scene '{}': no triangles", path));
+  scene.background = {255, 255, 255, 255};
+  fit_camera(scene);
+  return scene;
+}
+
+void fit_camera(Scene& scene) {
+  glm::vec3 c;
+  float r = 0;
+  bounding_sphere(scene, c, r);
+  const float d = r / std::sin(glm::radians(kFitFovDeg * 0.5f));
+  Camera& cam = scene.camera;
+  cam.eye = c + glm::vec3(0.0f, 0.0f, d);
+  cam.at = c;
+  cam.up = {0.0f, 1.0f, 0.0f};
+  cam.fov_y_deg = kFitFovDeg;
+  cam.near = d - kDepthMargin * r;
+  cam.far = d + kDepthMargin * r;
+}
+
+void aim_camera(Scene& scene, const CameraSpec& spec) {
+  const glm::vec3 dir = spec.at - spec.eye;
+  if (!(glm::length(dir) > 0.0f)) throw std::invalid_argument("--camera: 'eye' and 'at' are the same point");
+  const glm::vec3 fwd = glm::normalize(dir);
+  glm::vec3 c;
+  float r = 0;
+  bounding_sphere(scene, c, r);
+  const float dist = glm::dot(c - spec.eye, fwd);
+  const float far = dist + kDepthMargin * r;
+  if (!(far > 0.0f)) throw std::invalid_argument("--camera: the whole scene lies behind the eye");
+  Camera& cam = scene.camera;
+  cam.eye = spec.eye;
+  cam.at = spec.at;
+  cam.up = glm::length(glm::cross(fwd, glm::vec3(0.0f, 1.0f, 0.0f))) < 1e-6f ? glm::vec3(0.0f, 0.0f, -1.0f)
+                                                                          : glm::vec3(0.0f, 1.0f, 0.0f);
+  cam.fov_y_deg = spec.fov_y_deg;
+  cam.far = far;
+  cam.near = std::max(dist - kDepthMargin * r, far * 1e-4f);
+}
+
+CameraSpec parse_camera_spec(const std::string& text) {
+  // Fields start at tokens holding '='; the tokens after one, up to the next, are its numbers.
+  std::map<std::string, std::vector<std::string>> fields;
+  std::string current;
+  for (const std::string& tok : split(text, ',')) {
+    if (const size_t eq = tok.find('='); eq != std::string::npos) {
+      current = tok.substr(0, eq);
+      if (current != "eye" && current != "at" && current != "fov")
+        throw std::invalid_argument(fmt::format("--camera: unknown field '{}' (expected eye, at, fov)", current));
+      if (fields.count(current)) throw std::invalid_argument(fmt::format("--camera: field '{}' given twice", current));
+      fields[current].push_back(tok.substr(eq + 1));
+    } else if (current.empty()) {
+      throw std::invalid_argument(fmt::format("--camera: '{}' is not a field (expected eye=x,y,z,at=x,y,z,fov=deg)", tok));
+    } else {
+      fields[current].push_back(tok);
+    }
+  }
+  auto numbers = [&](const std::string& name, size_t n) {
+    const auto it = fields.find(name);
+    if (it == fields.end()) throw std::invalid_argument(fmt::format("--camera: field '{}' is missing", name));
+    if (it->second.size() != n)
+      throw std::invalid_argument(fmt::format("--camera: field '{}' needs {} number{}, has {}", name, n,
+                                              n > 1 ? "s" : "", it->second.size()));
+    std::vector<float> out;
+    for (const std::string& s : it->second) {
+      double v = 0;
+      if (!parse_number(s, v) || !std::isfinite(static_cast<float>(v)))
+        throw std::invalid_argument(fmt::format("--camera: field '{}': '{}' is not a finite number", name, s));
+      out.push_back(static_cast<float>(v));
+    }
+    return out;
+  };
+  CameraSpec spec;
+  const std::vector<float> eye = numbers("eye", 3), at = numbers("at", 3), fov = numbers("fov", 1);
+  spec.eye = {eye[0], eye[1], eye[2]};
+  spec.at = {at[0], at[1], at[2]};
+  spec.fov_y_deg = fov[0];
+  if (!(fov[0] >= 1.0f && fov[0] <= 179.0f))
+    throw std::invalid_argument(fmt::format("--camera: field 'fov': {} is out of range (1 to 179)", fov[0]));
+  if (spec.eye == spec.at) throw std::invalid_argument("--camera: 'eye' and 'at' are the same point");
+  return spec;
+}
+
+}  // namespace zb

@@ -1,0 +1,361 @@
+// Scene file tests: small OBJ, MTL, glTF and GLB files written here with hand-derived
+// expectations, every malformed case, the camera, and real files from Debian packages
+// (assimp-testmodels, glmark2-data; scripts/setup.sh installs them).
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene_file.h"
+
+namespace zb {
+namespace {
+
+namespace fs = std::filesystem;
+
+class SceneFileTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string tmpl = (fs::temp_directory_path() / "zb-scene-XXXXXX").string();
+    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
+    dir_ = tmpl;
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string write(const std::string& name, const std::string& text) const {
+    const std::string path = (dir_ / name).string();
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+
+  // The SceneFileError message of loading `path`; empty (and a failure) if it loads.
+  static std::string error_of(const std::string& path) {
+    try {
+      load_scene_file(path);
+    } catch (const SceneFileError& e) {
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+      return e.what();
+    }
+    ADD_FAILURE() << path << " loaded";
+    return "";
+  }
+
+  fs::path dir_;
+};
+
+#define EXPECT_CONTAINS(text, part) EXPECT_NE((text).find(part), std::string::npos) << (text)
+
+// ---- OBJ and MTL -----------------------------------------------------------------------------
+
+const char* kMtl =
+    "# two materials\n"
+    "newmtl red\nKd 1 0 0\nd 0.5\n"
+    "newmtl blue\nKd 0 0 1\nTr 0.25\n";
+
+const char* kObj =
+    "mtllib t.mtl\n"
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+    "o tri\nusemtl red\nf 1 2 3\n"
+    "o quad\nusemtl blue\nf 1 2 4 3\n";
+
+TEST_F(SceneFileTest, ObjPositionsColoursAlphas) {
+  write("t.mtl", kMtl);
+  const Scene s = load_scene_file(write("t.obj", kObj));
+  ASSERT_EQ(s.objects.size(), 2u);
+  EXPECT_EQ(s.objects[0].name, "tri");
+  EXPECT_EQ(s.objects[1].name, "quad");
+  EXPECT_EQ(s.triangle_count(), 3u);  // the quad triangulated into 2
+  const Material& red = s.materials.at(s.objects[0].material);
+  const Material& blue = s.materials.at(s.objects[1].material);
+  // Kd 1 0 0, d 0.5 -> alpha round(127.5) = 128; Tr 0.25 -> d 0.75 -> round(191.25) = 191.
+  EXPECT_EQ(red.color, (Rgba8{255, 0, 0, 128}));
+  EXPECT_EQ(blue.color, (Rgba8{0, 0, 255, 191}));
+  // No normals in the file: flat, each triangle its own vertices, normal +z (CCW in z = 0).
+  const Mesh& tri = s.objects[0].mesh;
+  ASSERT_EQ(tri.positions.size(), 3u);
+  EXPECT_EQ(tri.positions[0], glm::vec3(0, 0, 0));
+  EXPECT_EQ(tri.positions[1], glm::vec3(1, 0, 0));
+  EXPECT_EQ(tri.positions[2], glm::vec3(0, 1, 0));
+  for (const glm::vec3& n : tri.normals) EXPECT_EQ(n, glm::vec3(0, 0, 1));
+  EXPECT_EQ(s.background, (Rgba8{255, 255, 255, 255}));
+}
+
+TEST_F(SceneFileTest, ObjNormalsFromTheFileAreShared) {
+  const Scene s = load_scene_file(write("n.obj",
+      "v 0 0 0\nv 2 0 0\nv 0 2 0\nv 2 2 0\nvn 0 0 3\nf 1//1 2//1 4//1\nf 1//1 4//1 3//1\n"));
+  ASSERT_EQ(s.objects.size(), 1u);
+  const Mesh& m = s.objects[0].mesh;
+  EXPECT_EQ(m.positions.size(), 4u);  // shared (position, normal) pairs
+  EXPECT_EQ(m.triangles.size(), 2u);
+  for (const glm::vec3& n : m.normals) EXPECT_EQ(n, glm::vec3(0, 0, 1));  // normalized
+  // No mtllib: the default white opaque material.
+  EXPECT_EQ(s.materials.at(s.objects[0].material).color, (Rgba8{255, 255, 255, 255}));
+}
+
+TEST_F(SceneFileTest, FittedCameraFramesTheBounds) {
+  // A 2 x 2 quad in z = 0 around (3, 4, 0): sphere centre (3, 4, 0), radius sqrt(2).
+  const Scene s = load_scene_file(write("q.obj", "v 2 3 0\nv 4 3 0\nv 4 5 0\nv 2 5 0\nf 1 2 3 4\n"));
+  const float r = std::sqrt(2.0f);
+  const float d = r / std::sin(glm::radians(22.5f));
+  EXPECT_EQ(s.camera.at, glm::vec3(3, 4, 0));
+  EXPECT_NEAR(s.camera.eye.x, 3.0f, 1e-6f);
+  EXPECT_NEAR(s.camera.eye.y, 4.0f, 1e-6f);
+  EXPECT_NEAR(s.camera.eye.z, d, 1e-5f);
+  EXPECT_FLOAT_EQ(s.camera.fov_y_deg, 45.0f);
+  EXPECT_NEAR(s.camera.near, d - 1.01f * r, 1e-5f);
+  EXPECT_NEAR(s.camera.far, d + 1.01f * r, 1e-5f);
+  // Every corner inside the view volume at aspect 1; the sphere touches the top and bottom.
+  const glm::mat4 vp = s.camera.projection(1.0f) * s.camera.view();
+  for (const glm::vec3& p : s.objects[0].mesh.positions) {
+    const glm::vec4 c = vp * glm::vec4(p, 1.0f);
+    for (int k = 0; k < 3; ++k) EXPECT_LE(std::fabs(c[k] / c.w), 1.0f) << k;
+  }
+}
+
+TEST_F(SceneFileTest, ObjErrorsNameFileLineAndProblem) {
+  const std::string missing = (dir_ / "nope.obj").string();
+  EXPECT_EQ(error_of(missing), missing + ": open: no such file");
+  std::string p = write("a.obj", "v 0 0 0\nv 1 2\n");  // truncated
+  EXPECT_EQ(error_of(p), p + ": line 2: 'v' needs 3 numbers, has 2");
+  p = write("b.obj", "v nan 0 0\n");
+  EXPECT_EQ(error_of(p), p + ": line 1: 'v': nan is not finite");
+  p = write("c.obj", "v 0 0 0\nv 1e39 0 0\n");
+  EXPECT_EQ(error_of(p), p + ": line 2: 'v': 1e39 is not finite");
+  p = write("d.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+  EXPECT_EQ(error_of(p), p + ": line 4: vertex index 9 out of range (1 to 3)");
+  p = write("e.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n");
+  EXPECT_EQ(error_of(p), p + ": line 4: a face needs 3 vertices, has 2");
+  p = write("f.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 x 3\n");
+  EXPECT_EQ(error_of(p), p + ": line 4: bad face vertex 'x'");
+  p = write("g.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+  EXPECT_EQ(error_of(p), "scene '" + p + "': no triangles");
+  p = write("h.obj", "v 0 0 0\nvn 0 inf 0\n");
+  EXPECT_EQ(error_of(p), p + ": line 2: 'vn': inf is not finite");
+}
+
+TEST_F(SceneFileTest, MtlErrorsNameTheMaterialFile) {
+  const std::string obj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  std::string p = write("m.obj", obj);
+  EXPECT_EQ(error_of(p), p + ": line 1: material library '" + (dir_ / "m.mtl").string() + "' not found");
+  const std::string mtl = write("m.mtl", "newmtl a\nKd 1 x 0\n");
+  EXPECT_EQ(error_of(p), mtl + ": line 2: 'Kd': 'x' is not a number");
+  write("m.mtl", "newmtl a\nKd 1 1\n");  // truncated
+  EXPECT_EQ(error_of(p), mtl + ": line 2: 'Kd' needs 3 numbers, has 2");
+  write("m.mtl", "newmtl a\nd 1.5\n");
+  EXPECT_EQ(error_of(p), mtl + ": line 2: 'd': 1.5 is outside 0 to 1");
+  write("m.mtl", "Kd 1 1 1\n");
+  EXPECT_EQ(error_of(p), mtl + ": line 1: 'Kd' before any 'newmtl'");
+}
+
+TEST_F(SceneFileTest, UnsupportedExtension) {
+  const std::string p = write("x.ply", "ply\n");
+  EXPECT_EQ(error_of(p), p + ": name: unsupported file type '.ply' (expected .obj, .gltf or .glb)");
+  EXPECT_TRUE(is_scene_path("a/b"));
+  EXPECT_TRUE(is_scene_path("X.GLB"));
+  EXPECT_FALSE(is_scene_path("cad"));
+}
+
+// ---- glTF and GLB ----------------------------------------------------------------------------
+
+// The binary buffer: 4 positions (48 bytes) then 6 unsigned short indices (12 bytes).
+std::string test_buffer(float x1 = 1.0f, uint16_t last_index = 3) {
+  const float pos[12] = {0, 0, 0, x1, 0, 0, 0, 1, 0, 1, 1, 0};
+  const uint16_t idx[6] = {0, 1, 2, 1, 3, last_index};
+  std::string b(60, '\0');
+  std::memcpy(b.data(), pos, 48);
+  std::memcpy(b.data() + 48, idx, 12);
+  return b;
+}
+
+// Node 0 (translation 1,2,3) has child node 1 (scale 2) with mesh 0; node 2 (a matrix that
+// translates by 10 in x) has mesh 1. Mesh 0: an indexed BLEND primitive, a non-indexed OPAQUE
+// one, a MASK one kept and a MASK one dropped, and a line primitive (ignored).
+std::string test_gltf(const std::string& buffer_json, int idx_count = 6, const std::string& extra = "") {
+  return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 2]}],
+  "nodes": [{"translation": [1, 2, 3], "children": [1]}, {"scale": [2, 2, 2], "mesh": 0},
+            {"matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 10,0,0,1], "mesh": 1}],
+  "meshes": [{"primitives": [
+      {"attributes": {"POSITION": 0}, "indices": 1, "material": 0},
+      {"attributes": {"POSITION": 2}, "material": 1},
+      {"attributes": {"POSITION": 2}, "material": 2},
+      {"attributes": {"POSITION": 2}, "material": 3},
+      {"attributes": {"POSITION": 0}, "mode": 1}]},
+    {"primitives": [{"attributes": {"POSITION": 2}}]}],
+  "materials": [
+    {"name": "glass", "alphaMode": "BLEND", "pbrMetallicRoughness": {"baseColorFactor": [1, 0, 0, 0.5]}},
+    {"name": "solid", "pbrMetallicRoughness": {"baseColorFactor": [0, 1, 0, 0.3]}, "doubleSided": true},
+    {"name": "kept", "alphaMode": "MASK", "alphaCutoff": 0.5, "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 1, 0.6]}},
+    {"name": "cut", "alphaMode": "MASK", "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 1, 0.4]}}],
+  "buffers": [)" + buffer_json + R"(],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 12}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3"},
+                {"bufferView": 1, "componentType": 5123, "count": )" + std::to_string(idx_count) +
+         R"(, "type": "SCALAR"},
+                {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}])" + extra + "}";
+}
+
+void expect_test_scene(const Scene& s) {
+  // Kept: the BLEND, OPAQUE and kept MASK primitives of mesh 0, and mesh 1.
+  ASSERT_EQ(s.objects.size(), 4u);
+  EXPECT_EQ(s.triangle_count(), 2u + 1 + 1 + 1);
+  EXPECT_EQ(s.materials.at(s.objects[0].material).color, (Rgba8{255, 0, 0, 128}));  // BLEND
+  EXPECT_EQ(s.materials.at(s.objects[1].material).color, (Rgba8{0, 255, 0, 255}));  // OPAQUE
+  EXPECT_EQ(s.materials.at(s.objects[2].material).color, (Rgba8{0, 0, 255, 255}));  // MASK 0.6 >= 0.5
+  EXPECT_EQ(s.materials.at(s.objects[3].material).color, (Rgba8{255, 255, 255, 255}));  // default
+  // Node 1's world transform: translate(1, 2, 3) * scale(2): vertex (1, 1, 0) -> (3, 4, 3).
+  const glm::vec4 w = s.objects[0].transform * glm::vec4(1, 1, 0, 1);
+  EXPECT_EQ(glm::vec3(w), glm::vec3(3, 4, 3));
+  const glm::vec4 m = s.objects[3].transform * glm::vec4(0, 1, 0, 1);
+  EXPECT_EQ(glm::vec3(m), glm::vec3(10, 1, 0));
+  EXPECT_EQ(s.objects[0].mesh.triangles.size(), 2u);
+  EXPECT_EQ(s.objects[0].mesh.positions[0], glm::vec3(0, 0, 0));
+  EXPECT_CONTAINS(s.description, "1 point or line primitives ignored");
+  EXPECT_CONTAINS(s.description, "1 MASK primitives below alphaCutoff dropped");
+}
+
+TEST_F(SceneFileTest, GltfTransformsMaterialsAndModes) {
+  write("t.bin", test_buffer());
+  expect_test_scene(load_scene_file(write("t.gltf", test_gltf(R"({"uri": "t.bin", "byteLength": 60})"))));
+}
+
+std::string make_glb(const std::string& json_in, const std::string& bin) {
+  std::string json = json_in;
+  while (json.size() % 4) json += ' ';
+  auto u32 = [](uint32_t v) { std::string s(4, '\0'); std::memcpy(s.data(), &v, 4); return s; };
+  std::string out = "glTF" + u32(2) + u32(static_cast<uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
+  out += u32(static_cast<uint32_t>(json.size())) + u32(0x4E4F534A) + json;
+  out += u32(static_cast<uint32_t>(bin.size())) + u32(0x004E4942) + bin;
+  return out;
+}
+
+TEST_F(SceneFileTest, GlbLoadsTheSameScene) {
+  const std::string glb = make_glb(test_gltf(R"({"byteLength": 60})"), test_buffer());
+  expect_test_scene(load_scene_file(write("t.glb", glb)));
+}
+
+TEST_F(SceneFileTest, GltfErrorsNameFilePlaceAndProblem) {
+  write("t.bin", test_buffer());
+  const std::string buf = R"({"uri": "t.bin", "byteLength": 60})";
+  const std::string good = test_gltf(buf);
+  std::string p = write("trunc.gltf", good.substr(0, good.size() / 2));
+  EXPECT_CONTAINS(error_of(p), p + ": JSON: malformed: ");
+  write("oob.bin", test_buffer(1.0f, 7));
+  p = write("oob.gltf", test_gltf(R"({"uri": "oob.bin", "byteLength": 60})"));
+  EXPECT_EQ(error_of(p), p + ": accessors[1]: element 5: index 7 out of range (4 vertices)");
+  write("nan.bin", test_buffer(NAN));
+  p = write("nan.gltf", test_gltf(R"({"uri": "nan.bin", "byteLength": 60})"));
+  EXPECT_EQ(error_of(p), p + ": accessors[0]: element 1 is not finite");
+  write("inf.bin", test_buffer(INFINITY));
+  p = write("inf.gltf", test_gltf(R"({"uri": "inf.bin", "byteLength": 60})"));
+  EXPECT_EQ(error_of(p), p + ": accessors[0]: element 1 is not finite");
+  p = write("long.gltf", test_gltf(buf, 9));
+  EXPECT_EQ(error_of(p), p + ": accessors[1]: 9 elements run past the end of bufferView 1");
+  p = write("nobin.gltf", test_gltf(R"({"uri": "missing.bin", "byteLength": 60})"));
+  EXPECT_CONTAINS(error_of(p), p + ": tinygltf: ");
+  p = write("lines.gltf", R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 0}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "mode": 1}]}],
+    "buffers": [{"uri": "t.bin", "byteLength": 60}],
+    "bufferViews": [{"buffer": 0, "byteLength": 48}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3"}]})");
+  EXPECT_EQ(error_of(p), "scene '" + p + "': no triangles");
+  p = write("cycle.gltf", R"({"asset": {"version": "2.0"}, "nodes": [{"children": [1]}, {"children": [0]}],
+    "scenes": [{"nodes": [0]}]})");
+  EXPECT_EQ(error_of(p), p + ": nodes[0]: cycle in the node hierarchy");
+}
+
+TEST_F(SceneFileTest, GlbErrorsNameTheByte) {
+  const std::string glb = make_glb(test_gltf(R"({"byteLength": 60})"), test_buffer());
+  std::string p = write("short.glb", glb.substr(0, glb.size() - 10));
+  EXPECT_EQ(error_of(p), p + ": byte 8: GLB length " + std::to_string(glb.size()) + " but the file has " +
+                             std::to_string(glb.size() - 10) + " bytes (truncated?)");
+  p = write("tiny.glb", "glTF");
+  EXPECT_EQ(error_of(p), p + ": byte 0: GLB header needs 12 bytes, file has 4");
+  std::string bad = glb;
+  bad[0] = 'X';
+  p = write("magic.glb", bad);
+  EXPECT_EQ(error_of(p), p + ": byte 0: not a GLB file (magic is not 'glTF')");
+  bad = make_glb("{\"asset\": ", test_buffer());
+  p = write("json.glb", bad);
+  EXPECT_CONTAINS(error_of(p), p + ": JSON chunk: malformed: ");
+}
+
+// ---- the camera ------------------------------------------------------------------------------
+
+TEST(CameraSpec, ParsesStrictly) {
+  const CameraSpec c = parse_camera_spec("eye=1,2,3,at=0,0.5,-1,fov=30");
+  EXPECT_EQ(c.eye, glm::vec3(1, 2, 3));
+  EXPECT_EQ(c.at, glm::vec3(0, 0.5f, -1));
+  EXPECT_EQ(c.fov_y_deg, 30.0f);
+  EXPECT_EQ(parse_camera_spec("fov=60,at=0,0,0,eye=0,0,5").fov_y_deg, 60.0f);
+  auto message = [](const std::string& text) {
+    try {
+      parse_camera_spec(text);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("parsed");
+  };
+  EXPECT_EQ(message("eye=1,2,at=0,0,0,fov=30"), "--camera: field 'eye' needs 3 numbers, has 2");
+  EXPECT_EQ(message("eye=1,2,3,at=0,0,0"), "--camera: field 'fov' is missing");
+  EXPECT_EQ(message("eye=1,2,3,at=0,0,0,fov=abc"), "--camera: field 'fov': 'abc' is not a finite number");
+  EXPECT_EQ(message("eye=1,2,3,at=0,0,0,fov=180"), "--camera: field 'fov': 180 is out of range (1 to 179)");
+  EXPECT_EQ(message("eye=1,2,3,up=0,1,0,fov=30"), "--camera: unknown field 'up' (expected eye, at, fov)");
+  EXPECT_EQ(message("eye=1,2,3,at=1,2,3,fov=30"), "--camera: 'eye' and 'at' are the same point");
+  EXPECT_EQ(message("eye=1,2,3,eye=1,2,3,fov=30"), "--camera: field 'eye' given twice");
+  EXPECT_EQ(message("1,2,3"), "--camera: '1' is not a field (expected eye=x,y,z,at=x,y,z,fov=deg)");
+}
+
+TEST_F(SceneFileTest, AimedCameraFitsNearAndFar) {
+  Scene s = load_scene_file(write("q.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n"));
+  aim_camera(s, parse_camera_spec("eye=0,0,10,at=0,0,0,fov=30"));
+  const float r = std::sqrt(2.0f);
+  EXPECT_EQ(s.camera.eye, glm::vec3(0, 0, 10));
+  EXPECT_EQ(s.camera.fov_y_deg, 30.0f);
+  EXPECT_NEAR(s.camera.near, 10 - 1.01f * r, 1e-5f);
+  EXPECT_NEAR(s.camera.far, 10 + 1.01f * r, 1e-5f);
+  aim_camera(s, parse_camera_spec("eye=0,5,0,at=0,0,0,fov=30"));  // straight down: up is -z
+  EXPECT_EQ(s.camera.up, glm::vec3(0, 0, -1));
+  EXPECT_THROW(aim_camera(s, parse_camera_spec("eye=0,0,10,at=0,0,20,fov=30")), std::invalid_argument);
+}
+
+// ---- real files from Debian packages ---------------------------------------------------------
+
+TEST(RealSceneFiles, Regr01HouseHasTransparentWindows) {
+  const Scene s = load_scene_file("/usr/share/assimp/models/OBJ/regr01.obj");
+  EXPECT_GT(s.triangle_count(), 1000u);
+  bool transparent_used = false;
+  for (const Object& o : s.objects) transparent_used |= s.materials.at(o.material).transparent();
+  EXPECT_TRUE(transparent_used);
+  bool windows = false;
+  for (const Material& m : s.materials)
+    if (m.name == "Windows") {
+      windows = true;
+      EXPECT_EQ(m.color.a, 128);  // d 0.5
+    }
+  EXPECT_TRUE(windows);
+}
+
+TEST(RealSceneFiles, ClearCoatGltfLoads) {
+  const Scene s = load_scene_file("/usr/share/assimp/models/glTF2/ClearCoat-glTF/ClearCoatTest.gltf");
+  EXPECT_GT(s.triangle_count(), 0u);
+  bool blend = false;
+  for (const Material& m : s.materials) blend |= m.name == "Partial_Coating";  // alphaMode BLEND
+  EXPECT_TRUE(blend);
+}
+
+TEST(RealSceneFiles, GlmarkBunny) {
+  const Scene s = load_scene_file("/usr/share/glmark2/models/bunny.obj");
+  EXPECT_EQ(s.triangle_count(), 69666u);
+}
+
+}  // namespace
+}  // namespace zb
