@@ -24,12 +24,8 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 struct RenderOptions {
-  std::string scene = "cad";
-  std::string camera;
+  FrameOptions frame;
   std::string methods = "three-pass";
-  int width = 640;
-  int height = 480;
-  int depth_bits = kDefaultDepthBits;
   std::string out;
   std::string out_dir;
   std::string stats;
@@ -52,9 +48,9 @@ void check_options(const RenderOptions& o, size_t method_count) {
   if (o.backend != "golden" && o.backend != "rtl" && o.backend != "both")
     throw UsageError(fmt::format("--backend: unknown backend '{}' (choose from golden, rtl, both)",
                                  o.backend));
-  if (o.backend != "golden" && o.depth_bits != kRtlDepthBits)
+  if (o.backend != "golden" && o.frame.depth_bits != kRtlDepthBits)
     throw UsageError(fmt::format("--depth-bits: the RTL model is built with {} bits, not {}",
-                                 kRtlDepthBits, o.depth_bits));
+                                 kRtlDepthBits, o.frame.depth_bits));
   if (!(o.backpressure >= 0 && o.backpressure < 1))
     throw UsageError(fmt::format("--backpressure: {} is out of range (0 to below 1)", o.backpressure));
   if (!o.waves.empty()) {
@@ -107,9 +103,9 @@ void run_plan(const RenderOptions& o, const RasterizedScene& rs, const PassPlan&
 }
 
 void run_render(const RenderOptions& o) {
-  const Scene scene = resolve_scene(o.scene, o.camera);
+  const Scene scene = resolve_scene(o.frame.scene, o.frame.camera);
   const std::vector<std::string> methods = parse_methods(o.methods);
-  const Viewport vp = check_viewport(o.width, o.height, o.depth_bits);
+  const Viewport vp = check_viewport(o.frame.width, o.frame.height, o.frame.depth_bits);
   check_options(o, methods.size());
 
   const auto t0 = Clock::now();
@@ -120,8 +116,8 @@ void run_render(const RenderOptions& o) {
   const double reference_ms = ms_since(t1);
   if (!o.quiet)
     fmt::print(stderr, "{}: {} triangles, {} fragments at {}x{} ({:.1f} ms geometry and raster), "
-               "backend {}\n", o.scene, rs.triangles.size(), rs.fragments.size(), o.width,
-               o.height, raster_ms, o.backend);
+               "backend {}\n", o.frame.scene, rs.triangles.size(), rs.fragments.size(),
+               o.frame.width, o.frame.height, raster_ms, o.backend);
 
   std::vector<MethodRun> runs;
   uint64_t mismatches = 0;
@@ -147,13 +143,16 @@ void run_render(const RenderOptions& o) {
         o.out.empty() ? (fs::path(o.out_dir) / (r.method + ".png")).string() : o.out, r.image));
   if (!o.out_dir.empty())
     write_or_fail(write_file_atomic((fs::path(o.out_dir) / "summary.csv").string(),
-                                    summary_csv(runs, o.depth_bits)));
+                                    summary_csv(runs, o.frame.depth_bits)));
   if (!o.stats.empty()) {
-    const nlohmann::json header = {{"scene", o.scene},          {"width", o.width},
-                                   {"height", o.height},        {"depth_bits", o.depth_bits},
-                                   {"backend", o.backend},      {"triangles", rs.triangles.size()},
+    const nlohmann::json header = {{"scene", o.frame.scene},
+                                   {"width", o.frame.width},
+                                   {"height", o.frame.height},
+                                   {"depth_bits", o.frame.depth_bits},
+                                   {"backend", o.backend},
+                                   {"triangles", rs.triangles.size()},
                                    {"fragments", rs.fragments.size()}};
-    write_or_fail(write_file_atomic(o.stats, stats_json(runs, o.depth_bits, header.dump())));
+    write_or_fail(write_file_atomic(o.stats, stats_json(runs, o.frame.depth_bits, header.dump())));
   }
   if (!o.quiet) print_table(runs);
   if (mismatches) throw VerificationError("RTL and golden model differ (report above)");
@@ -165,19 +164,9 @@ void add_render_command(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
   CLI::App* cmd = app.add_subcommand(
       "render", "Render a scene with one or more methods on the golden model, the RTL or both");
-  cmd->add_option("--scene,-s", o->scene,
-                  "Built-in scene (see 'zblend scenes') or a file: .obj (+.mtl), .gltf, .glb "
-                  "(docs/scenes.md)")
-      ->capture_default_str();
-  cmd->add_option("--camera", o->camera,
-                  "Camera eye=x,y,z,at=x,y,z,fov=deg (default: the scene's own; files: fitted "
-                  "to the bounds)");
+  add_frame_options(cmd, o->frame);
   cmd->add_option("--method,-m", o->methods,
                   "Method, a comma-separated list, or 'all' (see 'zblend methods')")
-      ->capture_default_str();
-  cmd->add_option("--width,-W", o->width, "Frame width in pixels")->capture_default_str();
-  cmd->add_option("--height,-H", o->height, "Frame height in pixels")->capture_default_str();
-  cmd->add_option("--depth-bits", o->depth_bits, "Depth buffer width in bits")
       ->capture_default_str();
   cmd->add_option("--out,-o", o->out, "Output PNG (one method)");
   cmd->add_option("--out-dir", o->out_dir,

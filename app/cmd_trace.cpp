@@ -13,17 +13,13 @@ namespace zb::app {
 namespace {
 
 struct TraceOptions {
-  std::string scene = "cad";
-  std::string camera;
+  FrameOptions frame;
   std::string method = "three-pass";
-  int width = 640;
-  int height = 480;
-  int depth_bits = kDefaultDepthBits;
   std::string out;
 };
 
 void run_trace(const TraceOptions& o) {
-  const Scene scene = resolve_scene(o.scene, o.camera);
+  const Scene scene = resolve_scene(o.frame.scene, o.frame.camera);
   const PassPlan* plan = find_plan(o.method);
   if (!plan) {
     std::vector<std::string> names;
@@ -31,7 +27,7 @@ void run_trace(const TraceOptions& o) {
     throw UsageError(fmt::format("--method: '{}' has no pass plan (choose from {})", o.method,
                                  join(names)));
   }
-  const Viewport vp = check_viewport(o.width, o.height, o.depth_bits);
+  const Viewport vp = check_viewport(o.frame.width, o.frame.height, o.frame.depth_bits);
   check_writable("--out", o.out, ".zbt");
   const Trace trace = make_trace(rasterize_scene(scene, vp), *plan);
   write_or_fail(write_trace(o.out, trace));
@@ -47,18 +43,8 @@ void add_trace_command(CLI::App& app) {
   auto o = std::make_shared<TraceOptions>();
   CLI::App* cmd = app.add_subcommand(
       "trace", "Write a render's fragment streams and pass states to a trace file (.zbt)");
-  cmd->add_option("--scene,-s", o->scene,
-                  "Built-in scene (see 'zblend scenes') or a file: .obj (+.mtl), .gltf, .glb "
-                  "(docs/scenes.md)")
-      ->capture_default_str();
-  cmd->add_option("--camera", o->camera,
-                  "Camera eye=x,y,z,at=x,y,z,fov=deg (default: the scene's own; files: fitted "
-                  "to the bounds)");
+  add_frame_options(cmd, o->frame);
   cmd->add_option("--method,-m", o->method, "Method with a pass plan (see 'zblend methods')")
-      ->capture_default_str();
-  cmd->add_option("--width,-W", o->width, "Frame width in pixels")->capture_default_str();
-  cmd->add_option("--height,-H", o->height, "Frame height in pixels")->capture_default_str();
-  cmd->add_option("--depth-bits", o->depth_bits, "Depth buffer width in bits")
       ->capture_default_str();
   cmd->add_option("--out,-o", o->out, "Output trace file (.zbt)")->required();
   cmd->callback([o] { run_trace(*o); });

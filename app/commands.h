@@ -26,6 +26,18 @@ void add_render_command(CLI::App& app);
 void add_trace_command(CLI::App& app);
 void add_info_commands(CLI::App& app);  // methods, scenes, plan
 
+// What every subcommand that renders takes: the scene, its camera and the frame.
+struct FrameOptions {
+  std::string scene = "cad";
+  std::string camera;
+  int width = 640;
+  int height = 480;
+  int depth_bits = kDefaultDepthBits;
+};
+
+// Registers --scene, --camera, --width, --height and --depth-bits on `cmd`.
+void add_frame_options(CLI::App* cmd, FrameOptions& o);
+
 // Option checks shared by the subcommands; each throws UsageError naming the option.
 // A built-in scene name or a scene file (scene_file.h, is_scene_path); `camera`, when not empty,
 // is the text of --camera.

@@ -76,6 +76,20 @@ void check_range(const char* option, int value, int lo, int hi) {
 
 }  // namespace
 
+void add_frame_options(CLI::App* cmd, FrameOptions& o) {
+  cmd->add_option("--scene,-s", o.scene,
+                  "Built-in scene (see 'zblend scenes') or a file: .obj (+.mtl), .gltf, .glb "
+                  "(docs/scenes.md)")
+      ->capture_default_str();
+  cmd->add_option("--camera", o.camera,
+                  "Camera eye=x,y,z,at=x,y,z,fov=deg (default: the scene's own; files: fitted "
+                  "to the bounds)");
+  cmd->add_option("--width,-W", o.width, "Frame width in pixels")->capture_default_str();
+  cmd->add_option("--height,-H", o.height, "Frame height in pixels")->capture_default_str();
+  cmd->add_option("--depth-bits", o.depth_bits, "Depth buffer width in bits")
+      ->capture_default_str();
+}
+
 Viewport check_viewport(int width, int height, int depth_bits) {
   check_range("--width", width, 1, kMaxFrameSize);
   check_range("--height", height, 1, kMaxFrameSize);
