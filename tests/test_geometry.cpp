@@ -19,14 +19,6 @@ namespace {
 
 constexpr int32_t kOne = 256;
 
-Viewport VP(int w, int h, int bits = kDefaultDepthBits) {
-  Viewport vp;
-  vp.width = w;
-  vp.height = h;
-  vp.depth_bits = bits;
-  return vp;
-}
-
 // Camera at +z looking at the origin, 90 degree vertical field of view.
 Scene one_triangle(glm::vec3 a, glm::vec3 b, glm::vec3 c, Rgba8 color = {200, 40, 8, 255}) {
   Scene s;
@@ -76,7 +68,7 @@ TEST(Geometry, TriangleCount) {
 TEST(Geometry, ViewportMappingKnownPoints) {
   // A vertex on the camera axis lands exactly at the window centre; with fov 90 and the
   // vertex at distance 5, a vertex at (5 * aspect, 5, 0) is on the top-right frustum corner.
-  const Viewport vp = VP(640, 480);
+  const Viewport vp = Viewport{640, 480};
   const float aspect = 640.0f / 480.0f;
   const Scene s = one_triangle({0, 0, 0}, {5 * aspect, 0, 0}, {0, 5, 0});
   const std::vector<ScreenTriangle> tris = setup_triangles(s, vp);
@@ -97,7 +89,7 @@ TEST(Geometry, ViewportMappingKnownPoints) {
 
 TEST(Geometry, DepthUnormRounding) {
   for (int bits : {16, 24, 32}) {
-    const Viewport vp = VP(64, 64, bits);
+    const Viewport vp = Viewport{64, 64, bits};
     const Scene s = one_triangle({0, 0, 1}, {1, 0, -20}, {0, 1, -50});
     const std::vector<ScreenTriangle> tris = setup_triangles(s, vp);
     ASSERT_EQ(tris.size(), 1u);
@@ -112,7 +104,7 @@ TEST(Geometry, DepthUnormRounding) {
 
 TEST(Geometry, NearPlaneCrossingIsClippedNotDropped) {
   // One vertex behind the eye (z = 8 > 5), two in front.
-  const Viewport vp = VP(200, 100);
+  const Viewport vp = Viewport{200, 100};
   const Scene s = one_triangle({-1, -1, 0}, {1, -1, 0}, {0, -1, 8});
   const std::vector<ScreenTriangle> tris = setup_triangles(s, vp);
   ASSERT_FALSE(tris.empty());
@@ -142,7 +134,7 @@ TEST(Geometry, NearPlaneCrossingIsClippedNotDropped) {
 }
 
 TEST(Geometry, OutsideFrustumDropped) {
-  const Viewport vp = VP(64, 64);
+  const Viewport vp = Viewport{64, 64};
   EXPECT_TRUE(setup_triangles(one_triangle({0, 0, 6}, {1, 0, 6}, {0, 1, 7}), vp).empty());
   EXPECT_TRUE(setup_triangles(one_triangle({0, 0, -200}, {1, 0, -200}, {0, 1, -200}), vp).empty());
   EXPECT_TRUE(setup_triangles(one_triangle({50, 0, 0}, {51, 0, 0}, {50, 1, 0}), vp).empty());
@@ -151,7 +143,7 @@ TEST(Geometry, OutsideFrustumDropped) {
 TEST(Geometry, GuardBandClippedTriangleCoversWindowOnce) {
   // A huge triangle in front of the camera covers the whole window; it is clipped against the
   // guard band into a fan that must cover each pixel exactly once.
-  const Viewport vp = VP(80, 60);
+  const Viewport vp = Viewport{80, 60};
   const Scene s = one_triangle({-1000, -1000, 0}, {1000, -1000, 0}, {0, 1500, 0});
   const std::vector<ScreenTriangle> tris = setup_triangles(s, vp);
   ASSERT_GE(tris.size(), 2u);
@@ -171,7 +163,7 @@ TEST(Geometry, GuardBandClippedTriangleCoversWindowOnce) {
 }
 
 TEST(Geometry, FacingFromWinding) {
-  const Viewport vp = VP(64, 64);
+  const Viewport vp = Viewport{64, 64};
   // Counter-clockwise seen from +z, where the camera is: front.
   Scene s = one_triangle({-1, -1, 0}, {1, -1, 0}, {0, 1, 0});
   std::vector<ScreenTriangle> tris = setup_triangles(s, vp);
@@ -203,7 +195,7 @@ TEST(Geometry, FacingFromWinding) {
 }
 
 TEST(Geometry, LambertFacingEyeIsMaterialColour) {
-  const Viewport vp = VP(64, 64);
+  const Viewport vp = Viewport{64, 64};
   const Rgba8 mat{200, 100, 50, 128};
   // Centroid on the camera axis, normal toward the eye.
   Scene s = one_triangle({-1, -1, 0}, {1, -1, 0}, {0, 2, 0}, mat);
@@ -229,7 +221,7 @@ TEST(Geometry, LambertFacingEyeIsMaterialColour) {
 
 TEST(Geometry, LambertOblique) {
   // Rotated 60 degrees about y: |n . l| = 0.5, shade = 0.25 + 0.75 * 0.5 = 0.625.
-  const Viewport vp = VP(64, 64);
+  const Viewport vp = Viewport{64, 64};
   Scene s = one_triangle({-1, -1, 0}, {1, -1, 0}, {0, 2, 0}, Rgba8{200, 40, 8, 77});
   s.objects[0].transform = glm::rotate(glm::mat4(1.0f), glm::radians(60.0f), glm::vec3(0, 1, 0));
   const std::vector<ScreenTriangle> tris = setup_triangles(s, vp);
@@ -240,7 +232,7 @@ TEST(Geometry, LambertOblique) {
 TEST(Geometry, NormalMatrixIsInverseTranspose) {
   // Non-uniform scale of a slanted triangle: the shading normal must be the transformed
   // surface's normal, computed here from the transformed positions in double.
-  const Viewport vp = VP(64, 64);
+  const Viewport vp = Viewport{64, 64};
   const glm::vec3 p[3] = {{-1, -1, 1}, {1, -1, -1}, {0, 1, 0}};
   Scene s = one_triangle(p[0], p[1], p[2], Rgba8{255, 255, 255, 255});
   const glm::mat4 m = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 1.0f, 4.0f));
@@ -257,7 +249,7 @@ TEST(Geometry, NormalMatrixIsInverseTranspose) {
 }
 
 TEST(Geometry, NonFiniteVerticesDropped) {
-  const Viewport vp = VP(64, 64);
+  const Viewport vp = Viewport{64, 64};
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const float inf = std::numeric_limits<float>::infinity();
   Scene s = one_triangle({-1, -1, 0}, {1, -1, 0}, {0, 1, 0});
@@ -290,7 +282,7 @@ TEST(Geometry, NonFiniteVerticesDropped) {
 }
 
 TEST(Geometry, PrimIdsFollowSceneOrder) {
-  const Viewport vp = VP(64, 64);
+  const Viewport vp = Viewport{64, 64};
   Scene s = one_triangle({-1, -1, 0}, {1, -1, 0}, {0, 1, 0});
   s.objects[0].mesh.triangles = {{0, 1, 2}, {0, 0, 1}, {0, 2, 1}};  // middle one zero-area
   s.objects.push_back(s.objects[0]);
@@ -308,15 +300,15 @@ TEST(Geometry, PrimIdsFollowSceneOrder) {
 
 TEST(Geometry, InvalidInputsRejected) {
   const Scene s = one_triangle({-1, -1, 0}, {1, -1, 0}, {0, 1, 0});
-  EXPECT_THROW(setup_triangles(s, VP(0, 64)), std::invalid_argument);
-  EXPECT_THROW(setup_triangles(s, VP(64, kMaxFrameSize + 1)), std::invalid_argument);
-  EXPECT_THROW(setup_triangles(s, VP(64, 64, 7)), std::invalid_argument);
+  EXPECT_THROW(setup_triangles(s, Viewport{0, 64}), std::invalid_argument);
+  EXPECT_THROW(setup_triangles(s, Viewport{64, kMaxFrameSize + 1}), std::invalid_argument);
+  EXPECT_THROW(setup_triangles(s, Viewport{64, 64, 7}), std::invalid_argument);
   Scene bad = s;
   bad.objects[0].mesh.triangles = {{0, 1, 3}};
-  EXPECT_THROW(setup_triangles(bad, VP(64, 64)), std::invalid_argument);
+  EXPECT_THROW(setup_triangles(bad, Viewport{64, 64}), std::invalid_argument);
   bad = s;
   bad.objects[0].material = 4;
-  EXPECT_THROW(setup_triangles(bad, VP(64, 64)), std::invalid_argument);
+  EXPECT_THROW(setup_triangles(bad, Viewport{64, 64}), std::invalid_argument);
 }
 
 }  // namespace

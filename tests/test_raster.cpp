@@ -43,14 +43,6 @@ ScreenTriangle T(ScreenVertex a, ScreenVertex b, ScreenVertex c, uint32_t prim =
   return t;
 }
 
-Viewport VP(int w, int h, int bits = kDefaultDepthBits) {
-  Viewport vp;
-  vp.width = w;
-  vp.height = h;
-  vp.depth_bits = bits;
-  return vp;
-}
-
 // Brute force: is the centre of pixel (px, py) inside the convex polygon `p` (any winding)?
 bool centre_inside(const std::vector<ScreenVertex>& p, int px, int py) {
   const int64_t sx = int64_t{px} * kOne + kHalf, sy = int64_t{py} * kOne + kHalf;
@@ -123,7 +115,7 @@ void expect_exact_cover(const std::vector<ScreenTriangle>& tris,
 int64_t C(int64_t i) { return i * kOne + kHalf; }
 
 TEST(Raster, SharedDiagonalEdgeHitOnce) {
-  const Viewport vp = VP(24, 24);
+  const Viewport vp = Viewport{24, 24};
   const int lo = 3, hi = 19;  // square corners at pixel centres; diagonals through centres
   const ScreenVertex tl = V(C(lo), C(lo)), tr = V(C(hi), C(lo)), br = V(C(hi), C(hi)),
                      bl = V(C(lo), C(hi));
@@ -160,7 +152,7 @@ TEST(Raster, SharedDiagonalEdgeHitOnce) {
 }
 
 TEST(Raster, SharedVertexFanHitOnce) {
-  const Viewport vp = VP(40, 40);
+  const Viewport vp = Viewport{40, 40};
   const int64_t cx = C(20), cy = C(20);
   // Rings around the centre vertex, with edges from the centre that are horizontal, vertical,
   // diagonal through pixel centres, and arbitrary.
@@ -230,7 +222,7 @@ std::vector<ScreenTriangle> jittered_grid(std::mt19937& rng, ScreenVertex p, int
 
 TEST(Raster, JitteredGridMeshWatertight) {
   std::mt19937 rng(20240611u);
-  const Viewport vp = VP(96, 80);
+  const Viewport vp = Viewport{96, 80};
   struct Case { ScreenVertex p; int64_t ux, uy, vx, vy; int n; int64_t jitter; };
   const std::vector<Case> cases = {
       // Axis-aligned, outline between pixel centres.
@@ -260,7 +252,7 @@ TEST(Raster, SliverStripWatertight) {
   // A strip between two horizontal lines zipped into long thin triangles: vertices a few
   // sub-pixels apart along lines 60 pixels apart.
   std::mt19937 rng(7u);
-  const Viewport vp = VP(64, 72);
+  const Viewport vp = Viewport{64, 72};
   for (int round = 0; round < 4; ++round) {
     SCOPED_TRACE(round);
     const int64_t x0 = 2 * kOne + 77, x1 = 61 * kOne + 3;
@@ -293,7 +285,7 @@ TEST(Raster, MatchesBruteForceRule) {
   // Random triangles with vertices on a half-pixel grid (so edges and vertices often pass
   // exactly through pixel centres) and on the full sub-pixel grid.
   std::mt19937 rng(12345u);
-  const Viewport vp = VP(32, 28);
+  const Viewport vp = Viewport{32, 28};
   for (int n = 0; n < 3000; ++n) {
     const int64_t unit = (n % 3 == 0) ? 1 : (n % 3 == 1) ? kHalf : kOne / 4;
     std::uniform_int_distribution<int64_t> d(-4 * kOne / unit, 36 * kOne / unit);
@@ -312,7 +304,7 @@ TEST(Raster, MatchesBruteForceRule) {
 TEST(Raster, FragmentOrderRowsThenColumns) {
   std::mt19937 rng(99u);
   std::uniform_int_distribution<int64_t> d(-2 * kOne, 50 * kOne);
-  const Viewport vp = VP(48, 48);
+  const Viewport vp = Viewport{48, 48};
   for (int n = 0; n < 200; ++n) {
     ScreenTriangle t = T(V(d(rng), d(rng)), V(d(rng), d(rng)), V(d(rng), d(rng)), 77);
     t.front = n & 1;
@@ -330,7 +322,7 @@ TEST(Raster, FragmentOrderRowsThenColumns) {
 }
 
 TEST(Raster, ConstantDepthPlane) {
-  const Viewport vp = VP(40, 40, 24);
+  const Viewport vp = Viewport{40, 40, 24};
   const uint32_t z = 0x5a5a5a;
   const ScreenTriangle t = T(V(3 * kOne + 17, 2 * kOne + 100, z, 0.37),
                              V(38 * kOne + 1, 9 * kOne + 3, z, 0.37),
@@ -368,7 +360,7 @@ TEST(Raster, DepthInterpolationExact) {
   std::mt19937 rng(4242u);
   for (int bits : {16, 24, 32}) {
     SCOPED_TRACE(bits);
-    const Viewport vp = VP(40, 36, bits);
+    const Viewport vp = Viewport{40, 36, bits};
     std::uniform_int_distribution<uint32_t> dz(0, depth_max(bits));
     for (int n = 0; n < 300; ++n) {
       // Small triangles, and huge ones (scissored) that need 128-bit products.
@@ -394,7 +386,7 @@ TEST(Raster, DepthInterpolationExact) {
 }
 
 TEST(Raster, VertexPixelGetsVertexDepth) {
-  const Viewport vp = VP(32, 32, 24);
+  const Viewport vp = Viewport{32, 32, 24};
   // Vertex at the centre of pixel (5, 6), where a top edge and a left edge meet: covered.
   const uint32_t z0 = 1234567, z1 = 99, z2 = 16000000;
   for (int flip = 0; flip < 2; ++flip) {
@@ -412,7 +404,7 @@ TEST(Raster, VertexPixelGetsVertexDepth) {
 }
 
 TEST(Raster, ScissorAndDegenerateInputs) {
-  const Viewport vp = VP(16, 12);
+  const Viewport vp = Viewport{16, 12};
   // Mostly outside: only viewport pixels, matching the brute force.
   const ScreenTriangle big = T(V(-40 * kOne, -30 * kOne), V(10 * kOne + 3, 50 * kOne),
                                V(60 * kOne, -5 * kOne));
@@ -473,7 +465,7 @@ TEST(Raster, NearClippedGroundPlaneWatertight) {
       {{0.0f, 0.02f, 0.0f}, {0.5f, 0.02f, -10.0f}, false},  // eye just above: near cut visible
       {{1.0f, 3.0f, 1.0f}, {1.0f, 0.0f, 0.5f}, true},       // looking almost straight down
   };
-  const Viewport vp = VP(160, 120);
+  const Viewport vp = Viewport{160, 120};
   for (size_t k = 0; k < cases.size(); ++k) {
     SCOPED_TRACE(k);
     const Scene s = ground_scene(cases[k].eye, cases[k].at, 16, 40.0f);
