@@ -6,7 +6,7 @@ ZBLEND     := $(BUILD)/zblend
 RUN_SIZE   ?= --width 640 --height 480
 
 .DEFAULT_GOAL := build
-.PHONY: help setup build run test test-asan bench lint soak waves coverage clean
+.PHONY: help setup build run test test-asan bench lint soak waves coverage fuzz fuzz-ci fuzz-build clean
 
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 12
@@ -26,9 +26,10 @@ run: build ## Render `cad` with every method on golden model and RTL, compared: 
 	  --stats out/run/stats.json
 	@echo "images and table: out/run/"
 
-test: build ## Run every test (CTest), then again under ASan and UBSan
+test: build ## Run every test (CTest), then again under ASan and UBSan, then the fuzzers briefly
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 	@$(MAKE) --no-print-directory test-asan
+	@$(MAKE) --no-print-directory fuzz-ci
 
 test-asan: setup ## The tests built with AddressSanitizer and UndefinedBehaviorSanitizer
 	@[ -f $(ASAN_BUILD)/CMakeCache.txt ] || cmake -S . -B $(ASAN_BUILD) \
@@ -81,6 +82,24 @@ coverage: setup ## RTL line and toggle coverage of the suites, annotated: out/co
 	    k "s", hit[k], n[k], 100 * hit[k] / n[k] }' | sort
 	@echo "open: $(COV_DIR)/annotated/zb_rop.sv (and the other .sv there); lines marked %00 never ran"
 
+# libFuzzer (clang) in a build tree of its own: docs/fuzzing.md.
+FUZZ_BUILD      ?= build-fuzz
+FUZZ_SECONDS    ?= 60
+FUZZ_CI_SECONDS ?= 15
+
+$(FUZZ_BUILD)/CMakeCache.txt:
+	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DZBLEND_FUZZ=ON
+
+fuzz-build: setup $(FUZZ_BUILD)/CMakeCache.txt
+	@cmake --build $(FUZZ_BUILD) -j $(JOBS)
+
+fuzz: fuzz-build ## Fuzz loaders, trace reader, rasterizer FUZZ_SECONDS each: out/fuzz/, crashes/
+	@JOBS=$(JOBS) scripts/fuzz.sh $(FUZZ_BUILD) $(FUZZ_SECONDS) out/fuzz out/fuzz/crashes
+
+fuzz-ci: fuzz-build ## The fuzzers FUZZ_CI_SECONDS each, from the seeds only (part of `make test`)
+	@rm -rf out/fuzz-ci
+	@JOBS=$(JOBS) scripts/fuzz.sh $(FUZZ_BUILD) $(FUZZ_CI_SECONDS) out/fuzz-ci out/fuzz/crashes
+
 RTL       := $(sort $(wildcard rtl/*.sv))
 LINT_ARGS := --lint-only -Wall rtl/lint_waivers.vlt $(RTL) --top-module zb_rop
 
@@ -93,4 +112,4 @@ lint: setup ## Verilator lint of the RTL (-Wall), for several parameter sets
 	@echo "lint: clean"
 
 clean: ## Remove build trees and outputs
-	rm -rf $(BUILD) $(ASAN_BUILD) $(COV_BUILD) out
+	rm -rf $(BUILD) $(ASAN_BUILD) $(COV_BUILD) $(FUZZ_BUILD) out

@@ -7,12 +7,6 @@
 
 namespace zb::app {
 
-std::string join(const std::vector<std::string>& items, const char* sep) {
-  std::string out;
-  for (const std::string& s : items) out += (out.empty() ? "" : sep) + s;
-  return out;
-}
-
 namespace {
 
 void print_methods() {

@@ -14,6 +14,12 @@ namespace zb::app {
 
 namespace fs = std::filesystem;
 
+std::string join(const std::vector<std::string>& items, const char* sep) {
+  std::string out;
+  for (const std::string& s : items) out += (out.empty() ? "" : sep) + s;
+  return out;
+}
+
 Scene resolve_scene(const std::string& name, const std::string& camera) {
   // Checked first: a bad --camera fails before a large file is read.
   std::optional<CameraSpec> spec;
@@ -24,15 +30,16 @@ Scene resolve_scene(const std::string& name, const std::string& camera) {
       throw UsageError(e.what());
     }
   }
-  std::optional<Scene> scene;
-  if (is_scene_path(name)) {
+  // A built-in name wins; any other name that exists on disk (a directory, a file without a
+  // known extension) goes to the loader, which says what is wrong with it.
+  std::optional<Scene> scene = is_scene_path(name) ? std::nullopt : builtin_scene(name);
+  std::error_code ec;
+  if (!scene && (is_scene_path(name) || fs::exists(name, ec))) {
     try {
       scene = load_scene_file(name);
     } catch (const SceneFileError& e) {
       throw UsageError(fmt::format("--scene: {}", e.what()));
     }
-  } else {
-    scene = builtin_scene(name);
   }
   if (!scene) {
     std::vector<std::string> names;
@@ -82,8 +89,8 @@ void add_frame_options(CLI::App* cmd, FrameOptions& o) {
                   "(docs/scenes.md)")
       ->capture_default_str();
   cmd->add_option("--camera", o.camera,
-                  "Camera eye=x,y,z,at=x,y,z,fov=deg (default: the scene's own; files: fitted "
-                  "to the bounds)");
+                  "Camera eye=x,y,z,at=x,y,z,fov=deg[,up=x,y,z] (default: the scene's own; "
+                  "files: fitted to the bounds; up: +y, or -z looking straight up or down)");
   cmd->add_option("--width,-W", o.width, "Frame width in pixels")->capture_default_str();
   cmd->add_option("--height,-H", o.height, "Frame height in pixels")->capture_default_str();
   cmd->add_option("--depth-bits", o.depth_bits, "Depth buffer width in bits")

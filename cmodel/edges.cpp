@@ -104,9 +104,9 @@ std::vector<ScreenLine> setup_lines(const Scene& scene, const Viewport& vp,
         if (!in0 && !in1) {
           keep = false;
         } else if (in0) {
-          c[1] = clip_crossing(c[0], d0, c[1], d1);
+          c[1] = clip_crossing(plane, c[0], d0, c[1], d1);
         } else {
-          c[0] = clip_crossing(c[1], d1, c[0], d0);
+          c[0] = clip_crossing(plane, c[1], d1, c[0], d0);
         }
       }
       ScreenLine line;

@@ -44,9 +44,21 @@ float plane_distance(int plane, const glm::vec4& c) {
 // The point where segment (in, out) crosses the plane, always interpolated from the inside
 // end toward the outside end, so that the two triangles sharing an edge compute the same
 // bits for the same crossing whatever their winding.
-glm::vec4 crossing(const glm::vec4& in, float d_in, const glm::vec4& out, float d_out) {
+glm::vec4 crossing(int plane, const glm::vec4& in, float d_in, const glm::vec4& out,
+                   float d_out) {
   const float t = d_in / (d_in - d_out);
-  return in + t * (out - in);
+  glm::vec4 c = in + t * (out - in);
+  // On the plane exactly: with huge coordinates the interpolated point can miss it by far more
+  // than the frame, and a later plane would then cut the polygon away.
+  switch (plane) {
+    case 0: c.z = -c.w; break;
+    case 1: c.z = c.w; break;
+    case 2: c.x = -kGuardBand * c.w; break;
+    case 3: c.x = kGuardBand * c.w; break;
+    case 4: c.y = -kGuardBand * c.w; break;
+    default: c.y = kGuardBand * c.w; break;
+  }
+  return c;
 }
 
 // Sutherland-Hodgman against one plane.
@@ -65,8 +77,8 @@ void clip_polygon(int plane, const Polygon& src, Polygon& dst) {
     }
     if (in_i != in_j) {
       dst.facing[dst.n] = in_i ? src.facing[i] : src.facing[j];
-      dst.v[dst.n++] = in_i ? crossing(src.v[i], d[i], src.v[j], d[j])
-                            : crossing(src.v[j], d[j], src.v[i], d[i]);
+      dst.v[dst.n++] = in_i ? crossing(plane, src.v[i], d[i], src.v[j], d[j])
+                            : crossing(plane, src.v[j], d[j], src.v[i], d[i]);
     }
   }
 }
@@ -177,15 +189,18 @@ bool vertex_faces_eye(const glm::vec3& normal_world, const glm::vec3& vertex_wor
 
 float clip_plane_distance(int plane, const glm::vec4& c) { return plane_distance(plane, c); }
 
-glm::vec4 clip_crossing(const glm::vec4& in, float d_in, const glm::vec4& out, float d_out) {
-  return crossing(in, d_in, out, d_out);
+glm::vec4 clip_crossing(int plane, const glm::vec4& in, float d_in, const glm::vec4& out,
+                        float d_out) {
+  return crossing(plane, in, d_in, out, d_out);
 }
 
 bool clip_to_window(const glm::vec4& c, const Viewport& vp, ScreenVertex& out) {
   return to_window(c, vp, out);
 }
 
-std::vector<ScreenTriangle> setup_triangles(const Scene& scene, const Viewport& vp) {
+namespace {
+
+void check_viewport(const Viewport& vp) {
   if (vp.width < 1 || vp.width > kMaxFrameSize || vp.height < 1 || vp.height > kMaxFrameSize)
     throw std::invalid_argument("viewport " + std::to_string(vp.width) + "x" +
                                 std::to_string(vp.height) + " outside 1.." +
@@ -194,12 +209,18 @@ std::vector<ScreenTriangle> setup_triangles(const Scene& scene, const Viewport& 
     throw std::invalid_argument("depth bits " + std::to_string(vp.depth_bits) + " outside " +
                                 std::to_string(kMinDepthBits) + ".." +
                                 std::to_string(kMaxDepthBits));
+}
 
+}  // namespace
+
+std::vector<ClipTriangle> transform_triangles(const Scene& scene, const Viewport& vp) {
+  check_viewport(vp);
   const glm::mat4 view_proj =
       scene.camera.projection(float(vp.width) / float(vp.height)) * scene.camera.view();
   const glm::vec3 eye = scene.camera.eye;
 
-  std::vector<ScreenTriangle> out;
+  std::vector<ClipTriangle> out;
+  out.reserve(scene.triangle_count());
   std::vector<glm::vec3> world;
   std::vector<glm::vec4> clip;
   uint32_t prim = 0;
@@ -221,60 +242,72 @@ std::vector<ScreenTriangle> setup_triangles(const Scene& scene, const Viewport& 
         throw std::invalid_argument("object '" + obj.name + "': triangle " +
                                     std::to_string(this_prim) + " indexes a missing vertex");
       const uint32_t idx[3] = {t.x, t.y, t.z};
-      const glm::vec4 c[3] = {clip[idx[0]], clip[idx[1]], clip[idx[2]]};
-      if (!finite4(c[0]) || !finite4(c[1]) || !finite4(c[2])) continue;  // NaN/inf: dropped
+      ClipTriangle ct;
+      for (int k = 0; k < 3; ++k) ct.clip[k] = clip[idx[k]];
+      if (!finite4(ct.clip[0]) || !finite4(ct.clip[1]) || !finite4(ct.clip[2])) continue;
 
       // Per-vertex facing (CN 103021015), before clipping: the vertex normal in world space
       // (the face normal when the mesh has none) against the direction to the eye.
-      bool facing[3];
-      {
-        const bool have_normals = idx[0] < mesh.normals.size() && idx[1] < mesh.normals.size() &&
-                                  idx[2] < mesh.normals.size();
-        const glm::vec3 face_n = glm::cross(world[idx[1]] - world[idx[0]], world[idx[2]] - world[idx[0]]);
-        for (int k = 0; k < 3; ++k)
-          facing[k] = vertex_faces_eye(have_normals ? normal_matrix * mesh.normals[idx[k]] : face_n,
-                                       world[idx[k]], eye);
-      }
-      const Polygon poly = clip_triangle(c[0], c[1], c[2], facing);
-      if (poly.n < 3) continue;
-      ScreenVertex sv[kMaxPolygon];
-      bool ok = true;
-      for (int i = 0; i < poly.n && ok; ++i) ok = to_window(poly.v[i], vp, sv[i]);
-      if (!ok) continue;
-
-      // Facing of the whole polygon from its fixed-point signed area (the sum of its fan
-      // triangles). Front = counter-clockwise as seen = negative area2 on the y-down screen.
-      int64_t total = 0;
-      int64_t fan_area[kMaxPolygon];
-      for (int i = 1; i + 1 < poly.n; ++i) {
-        fan_area[i] = area2(sv[0], sv[i], sv[i + 1]);
-        total += fan_area[i];
-      }
-      if (total == 0) continue;
+      const bool have_normals = idx[0] < mesh.normals.size() && idx[1] < mesh.normals.size() &&
+                                idx[2] < mesh.normals.size();
+      const glm::vec3 face_n =
+          glm::cross(world[idx[1]] - world[idx[0]], world[idx[2]] - world[idx[0]]);
+      for (int k = 0; k < 3; ++k)
+        ct.facing[k] = vertex_faces_eye(have_normals ? normal_matrix * mesh.normals[idx[k]] : face_n,
+                                        world[idx[k]], eye);
 
       const glm::vec3 w[3] = {world[idx[0]], world[idx[1]], world[idx[2]]};
       const glm::vec3* nrm[3];
       for (int k = 0; k < 3; ++k)
         nrm[k] = idx[k] < mesh.normals.size() ? &mesh.normals[idx[k]] : nullptr;
       const Material& mat = scene.materials[obj.material];
+      ct.color = shade_triangle(mat, w, nrm, normal_matrix, eye);
+      ct.transparent = mat.transparent();
+      ct.prim = this_prim;
+      out.push_back(ct);
+    }
+  }
+  return out;
+}
 
-      ScreenTriangle st;
-      st.color = shade_triangle(mat, w, nrm, normal_matrix, eye);
-      st.front = total < 0;
-      st.transparent = mat.transparent();
-      st.prim = this_prim;
-      for (int i = 1; i + 1 < poly.n; ++i) {
-        // Zero-area fan triangles, and rounding slivers that turn against the polygon, are
-        // dropped.
-        if (fan_area[i] == 0 || (fan_area[i] < 0) != (total < 0)) continue;
-        st.v[0] = sv[0];
-        st.v[1] = sv[i];
-        st.v[2] = sv[i + 1];
-        st.facing[0] = poly.facing[0];
-        st.facing[1] = poly.facing[i];
-        st.facing[2] = poly.facing[i + 1];
-        out.push_back(st);
-      }
+std::vector<ScreenTriangle> setup_triangles(const Scene& scene, const Viewport& vp) {
+  const std::vector<ClipTriangle> clipped = transform_triangles(scene, vp);
+  std::vector<ScreenTriangle> out;
+  out.reserve(clipped.size());
+  for (const ClipTriangle& ct : clipped) {
+    const Polygon poly = clip_triangle(ct.clip[0], ct.clip[1], ct.clip[2], ct.facing);
+    if (poly.n < 3) continue;
+    ScreenVertex sv[kMaxPolygon];
+    bool ok = true;
+    for (int i = 0; i < poly.n && ok; ++i) ok = to_window(poly.v[i], vp, sv[i]);
+    if (!ok) continue;
+
+    // Facing of the whole polygon from its fixed-point signed area (the sum of its fan
+    // triangles). Front = counter-clockwise as seen = negative area2 on the y-down screen.
+    int64_t total = 0;
+    int64_t fan_area[kMaxPolygon];
+    for (int i = 1; i + 1 < poly.n; ++i) {
+      fan_area[i] = area2(sv[0], sv[i], sv[i + 1]);
+      total += fan_area[i];
+    }
+    if (total == 0) continue;
+
+    ScreenTriangle st;
+    st.color = ct.color;
+    st.front = total < 0;
+    st.transparent = ct.transparent;
+    st.prim = ct.prim;
+    for (int i = 1; i + 1 < poly.n; ++i) {
+      // Zero-area fan triangles, and rounding slivers that turn against the polygon, are
+      // dropped.
+      if (fan_area[i] == 0 || (fan_area[i] < 0) != (total < 0)) continue;
+      st.v[0] = sv[0];
+      st.v[1] = sv[i];
+      st.v[2] = sv[i + 1];
+      st.facing[0] = poly.facing[0];
+      st.facing[1] = poly.facing[i];
+      st.facing[2] = poly.facing[i + 1];
+      out.push_back(st);
     }
   }
   return out;

@@ -57,20 +57,6 @@ RasterizedScene rasterize_triangles(std::vector<ScreenTriangle> triangles, const
 
 namespace {
 
-bool pass_draws(const PassState& pass, const ScreenTriangle& t) {
-  switch (pass.filter) {
-    case PrimFilter::kOpaque: if (t.transparent) return false; break;
-    case PrimFilter::kTransparent: if (!t.transparent) return false; break;
-    case PrimFilter::kAll: break;
-    case PrimFilter::kEdges: return false;  // lines, not triangles (feed_pass)
-  }
-  switch (pass.cull) {
-    case Cull::kFront: return !t.front;
-    case Cull::kBack: return t.front;
-    case Cull::kNone: return true;
-  }
-  return true;
-}
 
 // Calls draw(first, count) for each run of consecutive fragments the pass draws.
 template <class Draw>
@@ -168,6 +154,21 @@ void feed_pass(const RasterizedScene& rs, const PassState& pass, Draw&& draw) {
 }
 
 }  // namespace
+
+bool pass_draws(const PassState& pass, const ScreenTriangle& t) {
+  switch (pass.filter) {
+    case PrimFilter::kOpaque: if (t.transparent) return false; break;
+    case PrimFilter::kTransparent: if (!t.transparent) return false; break;
+    case PrimFilter::kAll: break;
+    case PrimFilter::kEdges: return false;  // lines, not triangles (feed_pass)
+  }
+  switch (pass.cull) {
+    case Cull::kFront: return !t.front;
+    case Cull::kBack: return t.front;
+    case Cull::kNone: return true;
+  }
+  return true;
+}
 
 FrameOp resolve_op(FrameOp op, Rgba8 background) {
   if (op.background) {

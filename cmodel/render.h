@@ -38,6 +38,9 @@ RasterizedScene rasterize_triangles(std::vector<ScreenTriangle> triangles, const
 // setup_lines; tests may give their own).
 void add_lines(RasterizedScene& rs, std::vector<ScreenLine> lines);
 
+// The feeder's primitive filter and cull: true when `pass` draws triangle `t`.
+bool pass_draws(const PassState& pass, const ScreenTriangle& t);
+
 // The fragments a pass draws, in primitive order, as the feeder sends them to the datapath
 // (filtered, culled and rewritten by the pass's feeder rules).
 std::vector<Fragment> pass_fragments(const RasterizedScene& rs, const PassState& pass);

@@ -17,20 +17,6 @@ PassStats& PassStats::operator+=(const PassStats& o) {
   return *this;
 }
 
-bool depth_test(DepthFunc func, uint32_t z, uint32_t stored) {
-  switch (func) {
-    case DepthFunc::kNever: return false;
-    case DepthFunc::kLess: return z < stored;
-    case DepthFunc::kEqual: return z == stored;
-    case DepthFunc::kLequal: return z <= stored;
-    case DepthFunc::kGreater: return z > stored;
-    case DepthFunc::kNotequal: return z != stored;
-    case DepthFunc::kGequal: return z >= stored;
-    case DepthFunc::kAlways: return true;
-  }
-  return false;
-}
-
 Rgba8 blend(BlendMode mode, Rgba8 s, Rgba8 d) {
   switch (mode) {
     case BlendMode::kReplace:

@@ -8,8 +8,26 @@
 
 namespace zb {
 
-// True when the fragment depth `z` passes `func` against the stored depth `stored`.
-bool depth_test(DepthFunc func, uint32_t z, uint32_t stored);
+// True when depth `z` passes `func` against the stored depth `stored`: the datapath's compare
+// on unorm depths, and the same on exact depths (the OpenGL oracle's replay).
+template <class Depth>
+constexpr bool depth_compare(DepthFunc func, Depth z, Depth stored) {
+  switch (func) {
+    case DepthFunc::kNever: return false;
+    case DepthFunc::kLess: return z < stored;
+    case DepthFunc::kEqual: return z == stored;
+    case DepthFunc::kLequal: return z <= stored;
+    case DepthFunc::kGreater: return z > stored;
+    case DepthFunc::kNotequal: return z != stored;
+    case DepthFunc::kGequal: return z >= stored;
+    case DepthFunc::kAlways: return true;
+  }
+  return false;
+}
+
+inline bool depth_test(DepthFunc func, uint32_t z, uint32_t stored) {
+  return depth_compare(func, z, stored);
+}
 
 // The colour the blend unit produces from source `s` and destination `d`.
 Rgba8 blend(BlendMode mode, Rgba8 s, Rgba8 d);

@@ -34,8 +34,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
+constexpr size_t kMaxJsonDepth = 64;  // arrays and objects in glTF JSON
+
+// Control characters (from a file name, a JSON key, a token) shown as '?': one line, always.
+std::string printable(std::string text) {
+  for (char& c : text)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  return text;
+}
+
 [[noreturn]] void fail(const std::string& file, const std::string& place, const std::string& what) {
-  throw SceneFileError(fmt::format("{}: {}: {}", file, place, what));
+  throw SceneFileError(printable(fmt::format("{}: {}: {}", file, place, what)));
 }
 
 // Newlines and runs of blanks folded into "; " and " ": the message stays one line.
@@ -58,23 +67,9 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-bool read_whole_file(const std::string& path, std::string& out) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) return false;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  out = ss.str();
-  return static_cast<bool>(in) || in.eof();
-}
-
-std::string read_or_fail(const std::string& path, const std::string& what) {
-  std::string text;
-  std::error_code ec;
-  if (!fs::exists(path, ec)) fail(path, what, "no such file");
-  if (!read_whole_file(path, text)) fail(path, what, "cannot read the file");
-  return text;
+// A file the scene names, joined to the scene's directory.
+std::string beside(const std::string& scene, const std::string& name) {
+  return (fs::path(scene).parent_path() / name).string();
 }
 
 // ---- numbers ---------------------------------------------------------------------------------
@@ -114,17 +109,18 @@ std::vector<std::string> split(const std::string& text, char sep) {
   }
 }
 
-// Lines without comments and carriage returns, numbered from 1.
+// The blank-separated tokens of each line without its comment, numbered from 1. A line ends at
+// "\n", "\r\n" or a lone "\r", as tinyobjloader ends them.
 template <typename F>
 void for_each_line(const std::string& text, F&& f) {
-  std::istringstream in(text);
-  std::string line;
   int number = 0;
-  while (std::getline(in, line)) {
+  for (size_t start = 0; start < text.size();) {
+    size_t end = text.find_first_of("\r\n", start);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(start, end - start);
+    start = end + (text.compare(end, 2, "\r\n") == 0 ? 2 : 1);
     ++number;
     if (const size_t hash = line.find('#'); hash != std::string::npos) line.erase(hash);
-    std::replace(line.begin(), line.end(), '\r', ' ');
-    std::replace(line.begin(), line.end(), '\t', ' ');
     const std::vector<std::string> tok = split_blanks(line);
     if (!tok.empty()) f(number, tok);
   }
@@ -149,10 +145,26 @@ void expect_numbers(const std::string& file, int line, const std::vector<std::st
 
 // ---- OBJ and MTL -----------------------------------------------------------------------------
 
-// The statements zblend reads (newmtl, Kd, d, Tr); the others are left to tinyobjloader.
-void check_mtl(const std::string& path) {
-  const std::string text = read_or_fail(path, "mtllib");
+// What tinyobjloader is given: only the statements zblend reads, each line as the checks split
+// it (blank lines keep the numbering), so that its own parser meets nothing the checks have not
+// seen. Found by fuzzing: it converts a `vw` joint id to int unchecked (undefined when huge),
+// and it ends a line at a lone '\r', where the checks do not.
+struct CheckedText {
+  std::string text;
+  int lines = 0;
+
+  void add(int line, const std::vector<std::string>& tok) {
+    for (; lines < line - 1; ++lines) text += '\n';
+    for (size_t i = 0; i < tok.size(); ++i) text += (i ? " " : "") + tok[i];
+    text += '\n';
+    ++lines;
+  }
+};
+
+// The statements zblend reads (newmtl, Kd, d, Tr); returns them alone.
+std::string check_mtl(const std::string& path, const std::string& text) {
   bool have_material = false;
+  CheckedText kept;
   for_each_line(text, [&](int line, const std::vector<std::string>& tok) {
     const std::string& key = tok[0];
     if (key == "newmtl") {
@@ -161,19 +173,33 @@ void check_mtl(const std::string& path) {
     } else if (key == "Kd" || key == "d" || key == "Tr") {
       if (!have_material) fail(path, fmt::format("line {}", line), fmt::format("'{}' before any 'newmtl'", key));
       expect_numbers(path, line, tok, 1, key == "Kd" ? 3 : 1, true);
+    } else {
+      return;
     }
+    kept.add(line, tok);
   });
+  return kept.text;
 }
 
+// What check_obj learnt: the statements for tinyobjloader, each material library's (checked
+// statements) by its name in the OBJ, and the line of each vertex.
+struct ObjCheck {
+  std::string text;
+  std::map<std::string, std::string> mtl_texts;
+  std::vector<int> vertex_lines;
+};
+
 // Vertices, normals and faces with their indices, and the material libraries, line by line.
-void check_obj(const std::string& path, const std::string& text) {
+ObjCheck check_obj(const std::string& path, const std::string& text, const SceneFileReader& read) {
+  ObjCheck out;
+  CheckedText kept;
   size_t nv = 0, nvt = 0, nvn = 0;
-  const fs::path dir = fs::path(path).parent_path();
   for_each_line(text, [&](int line, const std::vector<std::string>& tok) {
     const std::string place = fmt::format("line {}", line);
     const std::string& key = tok[0];
     if (key == "v") {
       expect_numbers(path, line, tok, 1, 3, false);
+      out.vertex_lines.push_back(line);
       ++nv;
     } else if (key == "vn") {
       expect_numbers(path, line, tok, 1, 3, false);
@@ -201,20 +227,45 @@ void check_obj(const std::string& path, const std::string& text) {
     } else if (key == "mtllib") {
       if (tok.size() < 2) fail(path, place, "'mtllib' without a file name");
       for (size_t i = 1; i < tok.size(); ++i) {
-        const fs::path mtl = dir / tok[i];
-        std::error_code ec;
-        if (!fs::is_regular_file(mtl, ec))
-          fail(path, place, fmt::format("material library '{}' not found", mtl.string()));
-        check_mtl(mtl.string());
+        if (out.mtl_texts.count(tok[i])) continue;
+        const std::string mtl = beside(path, tok[i]);
+        std::string mtl_text;
+        const FileRead r = read(mtl, mtl_text);
+        if (r == FileRead::kMissing) fail(path, place, fmt::format("material library '{}' not found", mtl));
+        if (r != FileRead::kOk) fail(mtl, "mtllib", "cannot read the file");
+        out.mtl_texts.emplace(tok[i], check_mtl(mtl, mtl_text));
       }
     } else if (key == "usemtl") {
       if (tok.size() < 2) fail(path, place, "'usemtl' without a name");
+    } else if (key != "o" && key != "g") {
+      return;  // not read: smoothing groups, lines, points, free-form geometry, skin weights
     }
+    kept.add(line, tok);
   });
+  out.text = std::move(kept.text);
+  return out;
 }
 
+// Gives tinyobjloader the material libraries check_obj has read and checked, nothing else.
+class CheckedMtlReader : public tinyobj::MaterialReader {
+ public:
+  explicit CheckedMtlReader(const std::map<std::string, std::string>& texts) : texts_(texts) {}
+  bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                  std::map<std::string, int>* by_name, std::string* warn, std::string* err) override {
+    const auto it = texts_.find(name);
+    if (it == texts_.end()) return false;  // a name tinyobjloader splits otherwise (escaped blanks)
+    std::istringstream in(it->second);
+    tinyobj::LoadMtl(by_name, materials, &in, warn, err);
+    return true;
+  }
+
+ private:
+  const std::map<std::string, std::string>& texts_;
+};
+
 uint8_t to_unorm8(double v) {
-  return static_cast<uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+  if (!(v >= 0.0)) return 0;  // NaN too
+  return static_cast<uint8_t>(std::lround(std::min(v, 1.0) * 255.0));
 }
 
 // Builds a mesh from triangles over shared position and normal arrays. A corner with a usable
@@ -258,17 +309,16 @@ struct MeshBuilder {
   }
 };
 
-Scene load_obj(const std::string& path) {
-  const std::string text = read_or_fail(path, "open");
-  check_obj(path, text);
+Scene load_obj(const std::string& path, const std::string& text, const SceneFileReader& read) {
+  const ObjCheck checked = check_obj(path, text, read);
 
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
   std::vector<tinyobj::material_t> mats;
   std::string warn, err;
-  std::string base = fs::path(path).parent_path().string();
-  if (!base.empty()) base += '/';
-  if (!tinyobj::LoadObj(&attrib, &shapes, &mats, &warn, &err, path.c_str(), base.c_str(), true))
+  std::istringstream in(checked.text);
+  CheckedMtlReader mtl_reader(checked.mtl_texts);
+  if (!tinyobj::LoadObj(&attrib, &shapes, &mats, &warn, &err, &in, &mtl_reader, true))
     fail(path, "tinyobjloader", one_line(err));
 
   Scene scene;
@@ -285,10 +335,18 @@ Scene load_obj(const std::string& path) {
   bool used_default = false;
 
   std::vector<glm::vec3> positions(attrib.vertices.size() / 3), normals(attrib.normals.size() / 3);
-  for (size_t i = 0; i < positions.size(); ++i)
+  for (size_t i = 0; i < positions.size(); ++i) {
     positions[i] = {attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]};
-  for (size_t i = 0; i < normals.size(); ++i)
+    // tinyobjloader has its own number parser: what it reads is checked again.
+    if (!std::isfinite(positions[i].x) || !std::isfinite(positions[i].y) || !std::isfinite(positions[i].z))
+      fail(path, i < checked.vertex_lines.size() ? fmt::format("line {}", checked.vertex_lines[i]) : "tinyobjloader",
+           "vertex coordinate is not finite");
+  }
+  for (size_t i = 0; i < normals.size(); ++i) {
     normals[i] = {attrib.normals[3 * i], attrib.normals[3 * i + 1], attrib.normals[3 * i + 2]};
+    if (!std::isfinite(normals[i].x) || !std::isfinite(normals[i].y) || !std::isfinite(normals[i].z))
+      normals[i] = glm::vec3(0.0f);  // unusable: the flat face normal is used instead
+  }
 
   for (size_t s = 0; s < shapes.size(); ++s) {
     const tinyobj::mesh_t& m = shapes[s].mesh;
@@ -298,6 +356,8 @@ Scene load_obj(const std::string& path) {
     size_t offset = 0;
     for (size_t f = 0; f < m.num_face_vertices.size(); ++f) {
       const size_t nfv = m.num_face_vertices[f];
+      if (nfv > m.indices.size() - offset)
+        fail(path, fmt::format("shape '{}'", shapes[s].name), "face indices out of range");
       if (nfv == 3) {
         int mat = f < m.material_ids.size() ? m.material_ids[f] : -1;
         if (mat < 0 || static_cast<size_t>(mat) >= mats.size()) mat = -1;
@@ -425,7 +485,7 @@ class GltfReader {
       for (size_t i = 0; i < child.size(); ++i)
         if (!child[i]) roots.push_back(static_cast<int>(i));
     }
-    for (int r : roots) visit(r, glm::mat4(1.0f), "scene");
+    for (int r : roots) visit(r);
     if (default_used_) scene_.materials.push_back(Material{"default", {255, 255, 255, 255}});
     scene_.description = fmt::format("glTF file, {} nodes, {} meshes, {} materials", model_.nodes.size(),
                                       model_.meshes.size(), model_.materials.size());
@@ -480,25 +540,53 @@ class GltfReader {
     return m;
   }
 
-  void visit(int index, const glm::mat4& parent, const std::string& from) {
-    if (index < 0 || static_cast<size_t>(index) >= model_.nodes.size())
-      fail(path_, from, fmt::format("node {} does not exist", index));
-    const std::string place = fmt::format("nodes[{}]", index);
-    if (std::find(stack_.begin(), stack_.end(), index) != stack_.end())
-      fail(path_, place, "cycle in the node hierarchy");
-    stack_.push_back(index);
-    const tinygltf::Node& n = model_.nodes[index];
-    const glm::mat4 world = parent * local_matrix(n, place);
-    if (n.mesh >= 0) {
-      if (static_cast<size_t>(n.mesh) >= model_.meshes.size())
-        fail(path_, place, fmt::format("mesh {} does not exist", n.mesh));
-      const tinygltf::Mesh& mesh = model_.meshes[n.mesh];
-      for (size_t p = 0; p < mesh.primitives.size(); ++p)
-        add_primitive(mesh, mesh.primitives[p], fmt::format("meshes[{}].primitives[{}]", n.mesh, p),
-                      world, n.name.empty() ? place : n.name);
+  // Walks the tree under `root` depth first, parents before children, with a stack of its own:
+  // a recursion as deep as the file's hierarchy could exhaust the thread's stack.
+  void visit(int root) {
+    struct Level {
+      int node;
+      glm::mat4 world;
+      size_t next_child;
+    };
+    std::vector<Level> path;
+    if (on_path_.empty()) {
+      on_path_.resize(model_.nodes.size(), false);
+      visited_.resize(model_.nodes.size(), false);
     }
-    for (int c : n.children) visit(c, world, place);
-    stack_.pop_back();
+    auto enter = [&](int index, const glm::mat4& parent, const std::string& from) {
+      if (index < 0 || static_cast<size_t>(index) >= model_.nodes.size())
+        fail(path_, from, fmt::format("node {} does not exist", index));
+      const std::string place = fmt::format("nodes[{}]", index);
+      if (on_path_[index]) fail(path_, place, "cycle in the node hierarchy");
+      // Nodes form trees (glTF 2.0, 3.5.3): a node met twice would be drawn twice, and shared
+      // children would multiply the work exponentially.
+      if (visited_[index]) fail(path_, place, "node reached twice (a node has at most one parent and is no root besides)");
+      visited_[index] = on_path_[index] = true;
+      const tinygltf::Node& n = model_.nodes[index];
+      const glm::mat4 world = parent * local_matrix(n, place);
+      if (n.mesh >= 0) {
+        if (static_cast<size_t>(n.mesh) >= model_.meshes.size())
+          fail(path_, place, fmt::format("mesh {} does not exist", n.mesh));
+        const tinygltf::Mesh& mesh = model_.meshes[n.mesh];
+        for (size_t p = 0; p < mesh.primitives.size(); ++p)
+          add_primitive(mesh, mesh.primitives[p], fmt::format("meshes[{}].primitives[{}]", n.mesh, p),
+                        world, n.name.empty() ? place : n.name);
+      }
+      path.push_back(Level{index, world, 0});
+    };
+    enter(root, glm::mat4(1.0f), "scene");
+    while (!path.empty()) {
+      Level& top = path.back();
+      const std::vector<int>& children = model_.nodes[top.node].children;
+      if (top.next_child < children.size()) {
+        const int child = children[top.next_child++];
+        const glm::mat4 world = top.world;  // `top` moves when enter() grows `path`
+        enter(child, world, fmt::format("nodes[{}]", top.node));
+      } else {
+        on_path_[top.node] = false;
+        path.pop_back();
+      }
+    }
   }
 
   AccessorView view(int index, const std::string& from) const {
@@ -651,25 +739,275 @@ class GltfReader {
   const tinygltf::Model& model_;
   Scene scene_;
   std::vector<bool> dropped_;
-  std::vector<int> stack_;
+  std::vector<bool> on_path_;
+  std::vector<bool> visited_;
   bool default_used_ = false;
   size_t ignored_ = 0;
   size_t masked_ = 0;
 };
 
-Scene load_gltf(const std::string& path, bool binary) {
-  const std::string data = read_or_fail(path, "open");
-  const std::string json = binary ? glb_json_chunk(path, data) : data;
-  try {
-    const nlohmann::json parsed = nlohmann::json::parse(json);  // syntax only: the error has line and column
-    (void)parsed;
-  } catch (const nlohmann::json::exception& e) {
-    std::string what = e.what();
-    if (const size_t b = what.find("] "); b != std::string::npos) what.erase(0, b + 2);
-    fail(path, binary ? "JSON chunk" : "JSON", "malformed: " + one_line(what));
+// Syntax and nesting depth of JSON text, without building it. tinygltf turns `extras` into
+// values recursively: deep nesting would exhaust the stack there.
+class JsonCheck : public nlohmann::json_sax<nlohmann::json> {
+ public:
+  std::string error;  // the parser's message when malformed
+  bool too_deep = false;
+
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t) override { return true; }
+  bool number_unsigned(number_unsigned_t) override { return true; }
+  bool number_float(number_float_t, const string_t&) override { return true; }
+  bool string(string_t&) override { return true; }
+  bool binary(binary_t&) override { return true; }
+  bool start_object(std::size_t) override { return enter(); }
+  bool key(string_t&) override { return true; }
+  bool end_object() override { return leave(); }
+  bool start_array(std::size_t) override { return enter(); }
+  bool end_array() override { return leave(); }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override {
+    error = e.what();
+    return false;
   }
+
+ private:
+  bool enter() {
+    too_deep = ++depth_ > kMaxJsonDepth;
+    return !too_deep;
+  }
+  bool leave() {
+    --depth_;
+    return true;
+  }
+  size_t depth_ = 0;
+};
+
+// "%20" and the like, as tinygltf decodes a buffer's uri.
+std::string percent_decode(const std::string& uri) {
+  std::string out;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+        std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+      out += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
+
+// ---- glTF property types: tinygltf silently skips a property of the wrong type ----
+
+enum class JsonKind { kIndex, kSize, kNumber, kString, kBool, kObject };
+
+// One property: `array` -1 for a single value, 0 for an array of any length, n for exactly n.
+struct JsonField {
+  const char* name;
+  JsonKind kind;
+  int array = -1;
+};
+
+bool json_is(const nlohmann::json& v, JsonKind k) {
+  switch (k) {
+    case JsonKind::kIndex: return v.is_number_unsigned() && v.get<uint64_t>() <= uint64_t{INT32_MAX};
+    case JsonKind::kSize: return v.is_number_unsigned();
+    case JsonKind::kNumber: return v.is_number();
+    case JsonKind::kString: return v.is_string();
+    case JsonKind::kBool: return v.is_boolean();
+    case JsonKind::kObject: return v.is_object();
+  }
+  return false;
+}
+
+const char* json_kind_name(JsonKind k) {
+  switch (k) {
+    case JsonKind::kIndex: return "an index (an integer from 0 to 2^31 - 1)";
+    case JsonKind::kSize: return "a non-negative integer";
+    case JsonKind::kNumber: return "a number";
+    case JsonKind::kString: return "a string";
+    case JsonKind::kBool: return "true or false";
+    case JsonKind::kObject: return "an object";
+  }
+  return "?";
+}
+
+// "string \"abc\"", "number -1", "array": what was found instead.
+std::string json_found(const nlohmann::json& v) {
+  if (v.is_array() || v.is_object()) return v.type_name();
+  std::string text = v.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  if (text.size() > 24) text = text.substr(0, 21) + "...";
+  return fmt::format("{} {}", v.type_name(), text);
+}
+
+void check_fields(const std::string& path, const nlohmann::json& obj, const std::string& place,
+                  std::initializer_list<JsonField> fields) {
+  for (const JsonField& f : fields) {
+    const auto it = obj.find(f.name);
+    if (it == obj.end()) continue;
+    const std::string at = place.empty() ? f.name : place + "." + f.name;
+    auto expect = [&](const nlohmann::json& v, const std::string& where) {
+      if (!json_is(v, f.kind))
+        fail(path, where, fmt::format("expected {}, not {}", json_kind_name(f.kind), json_found(v)));
+    };
+    if (f.array < 0) {
+      expect(*it, at);
+      continue;
+    }
+    if (!it->is_array()) fail(path, at, fmt::format("expected an array, not {}", json_found(*it)));
+    if (f.array > 0 && it->size() != size_t(f.array))
+      fail(path, at, fmt::format("expected {} numbers, has {}", f.array, it->size()));
+    for (size_t i = 0; i < it->size(); ++i) expect((*it)[i], fmt::format("{}[{}]", at, i));
+  }
+}
+
+// Calls f(element, place) for each element of the array property `name`, each an object.
+template <typename F>
+void for_each_object(const std::string& path, const nlohmann::json& parent, const std::string& place,
+                     const char* name, F&& f) {
+  const auto it = parent.find(name);
+  if (it == parent.end()) return;
+  const std::string at = place.empty() ? name : place + "." + name;
+  if (!it->is_array()) fail(path, at, fmt::format("expected an array, not {}", json_found(*it)));
+  for (size_t i = 0; i < it->size(); ++i) {
+    const std::string item = fmt::format("{}[{}]", at, i);
+    if (!(*it)[i].is_object()) fail(path, item, fmt::format("expected an object, not {}", json_found((*it)[i])));
+    f((*it)[i], item);
+  }
+}
+
+// The types of every property zblend reads (glTF 2.0 schema).
+void check_gltf_types(const std::string& path, const char* json_place, const nlohmann::json& doc) {
+  using K = JsonKind;
+  if (!doc.is_object()) fail(path, json_place, fmt::format("expected an object, not {}", json_found(doc)));
+  const auto asset = doc.find("asset");
+  if (asset == doc.end() || !asset->is_object()) fail(path, "asset", "missing (glTF 2.0 needs \"asset\": {\"version\": \"2.0\"})");
+  const auto version = asset->find("version");
+  if (version == asset->end() || !version->is_string() || version->get_ref<const std::string&>().rfind("2.", 0) != 0)
+    fail(path, "asset.version", fmt::format("{} is not supported (expected \"2.0\")",
+                                            version == asset->end() ? "no version" : json_found(*version)));
+  check_fields(path, doc, "", {{"scene", K::kIndex}});
+  for_each_object(path, doc, "", "scenes", [&](const nlohmann::json& o, const std::string& at) {
+    check_fields(path, o, at, {{"nodes", K::kIndex, 0}});
+  });
+  for_each_object(path, doc, "", "nodes", [&](const nlohmann::json& o, const std::string& at) {
+    check_fields(path, o, at,
+                 {{"children", K::kIndex, 0}, {"mesh", K::kIndex}, {"matrix", K::kNumber, 16},
+                  {"translation", K::kNumber, 3}, {"rotation", K::kNumber, 4}, {"scale", K::kNumber, 3},
+                  {"name", K::kString}});
+  });
+  for_each_object(path, doc, "", "meshes", [&](const nlohmann::json& o, const std::string& at) {
+    check_fields(path, o, at, {{"name", K::kString}});
+    for_each_object(path, o, at, "primitives", [&](const nlohmann::json& p, const std::string& pat) {
+      check_fields(path, p, pat, {{"attributes", K::kObject}, {"indices", K::kIndex}, {"material", K::kIndex},
+                                  {"mode", K::kIndex}});
+      if (const auto a = p.find("attributes"); a != p.end())
+        for (const auto& [key, value] : a->items())
+          if (!json_is(value, K::kIndex))
+            fail(path, pat + ".attributes." + key,
+                 fmt::format("expected {}, not {}", json_kind_name(K::kIndex), json_found(value)));
+    });
+  });
+  for_each_object(path, doc, "", "accessors", [&](const nlohmann::json& o, const std::string& at) {
+    check_fields(path, o, at,
+                 {{"bufferView", K::kIndex}, {"byteOffset", K::kSize}, {"componentType", K::kIndex},
+                  {"count", K::kSize}, {"type", K::kString}, {"normalized", K::kBool}, {"sparse", K::kObject}});
+  });
+  for_each_object(path, doc, "", "bufferViews", [&](const nlohmann::json& o, const std::string& at) {
+    check_fields(path, o, at,
+                 {{"buffer", K::kIndex}, {"byteOffset", K::kSize}, {"byteLength", K::kSize}, {"byteStride", K::kSize}});
+  });
+  for_each_object(path, doc, "", "buffers", [&](const nlohmann::json& o, const std::string& at) {
+    check_fields(path, o, at, {{"uri", K::kString}, {"byteLength", K::kSize}});
+  });
+  for_each_object(path, doc, "", "materials", [&](const nlohmann::json& o, const std::string& at) {
+    check_fields(path, o, at,
+                 {{"name", K::kString}, {"alphaMode", K::kString}, {"alphaCutoff", K::kNumber},
+                  {"doubleSided", K::kBool}, {"pbrMetallicRoughness", K::kObject}});
+    if (const auto pbr = o.find("pbrMetallicRoughness"); pbr != o.end())
+      check_fields(path, *pbr, at + ".pbrMetallicRoughness", {{"baseColorFactor", K::kNumber, 4}});
+  });
+}
+
+// tinygltf's file access goes through the SceneFileReader, each file read once. Names are not
+// expanded: tinygltf's own expansion runs wordexp on text from the file.
+struct GltfFiles {
+  const SceneFileReader& read;
+  std::map<std::string, std::string> found;
+
+  FileRead get(const std::string& path, const std::string** bytes) {
+    auto it = found.find(path);
+    if (it == found.end()) {
+      std::string b;
+      const FileRead r = read(path, b);
+      if (r != FileRead::kOk) return r;
+      it = found.emplace(path, std::move(b)).first;
+    }
+    if (bytes) *bytes = &it->second;
+    return FileRead::kOk;
+  }
+
+  static bool exists(const std::string& path, void* self) {
+    return static_cast<GltfFiles*>(self)->get(path, nullptr) == FileRead::kOk;
+  }
+  static std::string expand(const std::string& path, void*) { return path; }
+  static bool read_whole(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* self) {
+    const std::string* bytes = nullptr;
+    if (static_cast<GltfFiles*>(self)->get(path, &bytes) != FileRead::kOk) {
+      if (err) *err = "cannot read the file";
+      return false;
+    }
+    out->assign(bytes->begin(), bytes->end());
+    return true;
+  }
+  static bool write_whole(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err = "zblend writes no glTF files";
+    return false;
+  }
+};
+
+// Each buffer in a file of its own must exist and hold byteLength bytes; tinygltf's messages
+// for these lack the buffer's index.
+void check_buffer_files(const std::string& path, const nlohmann::json& doc, GltfFiles& files) {
+  const auto buffers = doc.is_object() ? doc.find("buffers") : doc.end();
+  if (buffers == doc.end() || !buffers->is_array()) return;  // tinygltf reports the rest
+  for (size_t i = 0; i < buffers->size(); ++i) {
+    const nlohmann::json& b = (*buffers)[i];
+    const auto uri = b.is_object() ? b.find("uri") : b.end();
+    if (uri == b.end() || !uri->is_string()) continue;
+    const std::string& text = uri->get_ref<const std::string&>();
+    if (text.empty() || text.rfind("data:", 0) == 0) continue;
+    const std::string file = beside(path, percent_decode(text));
+    const std::string place = fmt::format("buffers[{}]", i);
+    const std::string* bytes = nullptr;
+    const FileRead r = files.get(file, &bytes);
+    if (r == FileRead::kMissing) fail(path, place, fmt::format("file '{}' not found", file));
+    if (r != FileRead::kOk) fail(path, place, fmt::format("cannot read file '{}'", file));
+    const auto length = b.find("byteLength");
+    if (length != b.end() && length->is_number_unsigned() && length->get<uint64_t>() != bytes->size())
+      fail(path, place, fmt::format("file '{}' has {} bytes, byteLength says {}", file, bytes->size(),
+                                    length->get<uint64_t>()));
+  }
+}
+
+Scene load_gltf(const std::string& path, const std::string& data, bool binary, const SceneFileReader& read) {
+  const std::string json = binary ? glb_json_chunk(path, data) : data;
+  const char* json_place = binary ? "JSON chunk" : "JSON";
+  JsonCheck check;
+  if (!nlohmann::json::sax_parse(json, &check)) {
+    if (check.too_deep) fail(path, json_place, fmt::format("nested deeper than {} levels", kMaxJsonDepth));
+    std::string what = check.error;
+    if (const size_t b = what.find("] "); b != std::string::npos) what.erase(0, b + 2);
+    fail(path, json_place, "malformed: " + one_line(what));
+  }
+  const nlohmann::json doc = nlohmann::json::parse(json);
+  check_gltf_types(path, json_place, doc);
+  GltfFiles files{read, {}};
+  check_buffer_files(path, doc, files);
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(skip_image, nullptr);
+  loader.SetFsCallbacks(tinygltf::FsCallbacks{&GltfFiles::exists, &GltfFiles::expand, &GltfFiles::read_whole,
+                                              &GltfFiles::write_whole, &files});
   tinygltf::Model model;
   std::string err, warn;
   const std::string base = fs::path(path).parent_path().string();
@@ -685,26 +1023,68 @@ Scene load_gltf(const std::string& path, bool binary) {
 
 // ---- the camera ------------------------------------------------------------------------------
 
-// Centre and radius of the bounding sphere (the axis-aligned box's centre and half diagonal)
-// of every world-space vertex; radius 1 for a single point.
-void bounding_sphere(const Scene& scene, glm::vec3& centre, float& radius) {
-  glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+// Calls f(world position) for every vertex whose world position is finite, in double: sums and
+// differences of far-apart float coordinates would overflow in float.
+template <typename F>
+void for_each_world_vertex(const Scene& scene, F&& f) {
   for (const Object& o : scene.objects)
     for (const glm::vec3& p : o.mesh.positions) {
       const glm::vec3 w = glm::vec3(o.transform * glm::vec4(p, 1.0f));
-      lo = glm::min(lo, w);
-      hi = glm::max(hi, w);
+      if (std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z)) f(glm::dvec3(w));
     }
-  if (lo.x > hi.x) lo = hi = glm::vec3(0.0f);
-  centre = (lo + hi) * 0.5f;
-  radius = glm::length(hi - lo) * 0.5f;
-  if (!(radius > 0.0f)) radius = 1.0f;
 }
 
-constexpr float kFitFovDeg = 45.0f;
-constexpr float kDepthMargin = 1.01f;  // near and far: the sphere widened by 1% of its radius
+// Centre and radius of the bounding sphere (the axis-aligned box's centre and half diagonal)
+// of every world-space vertex; radius 1 for a single point.
+void bounding_sphere(const Scene& scene, glm::dvec3& centre, double& radius) {
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
+  for_each_world_vertex(scene, [&](const glm::dvec3& w) {
+    lo = glm::min(lo, w);
+    hi = glm::max(hi, w);
+  });
+  if (lo.x > hi.x) lo = hi = glm::dvec3(0.0);
+  centre = (lo + hi) * 0.5;
+  radius = glm::length(hi - lo) * 0.5;
+  if (!(radius > 0.0)) radius = 1.0;
+}
+
+constexpr double kFitFovDeg = 45.0;
+constexpr double kDepthMargin = 1.01;  // fitted near and far: the sphere widened by 1% of its radius
+constexpr double kMaxFar = 1e37;       // far plane at most here, so that far + near stays a float
+constexpr double kMinUpSine = 1e-3;    // a user's up at least this far from the view direction
+
+// Sets near and far so that the float projection (glm::perspectiveRH_NO: (far + near) and
+// 2 * far * near) stays finite: far at most kMaxFar, near lowered when far * near is too big.
+void set_depth_range(Camera& cam, double near, double far) {
+  far = std::min(far, kMaxFar);
+  if (near >= far) near = 0.5 * far;  // everything beyond kMaxFar
+  near = std::min(near, static_cast<double>(std::numeric_limits<float>::max()) / (4.0 * far));
+  cam.near = static_cast<float>(near);
+  cam.far = static_cast<float>(far);
+}
+
+// Throws unless `up` is usable with the unit view direction `fwd`.
+void check_up(const glm::vec3& up, const glm::dvec3& fwd) {
+  const glm::dvec3 u(up);
+  const double len = glm::length(u);
+  if (!(len > 0.0)) throw std::invalid_argument("--camera: field 'up' is the zero vector");
+  if (!(glm::length(glm::cross(fwd, u / len)) >= kMinUpSine))
+    throw std::invalid_argument("--camera: 'up' is parallel to the view direction (eye to at)");
+}
 
 }  // namespace
+
+FileRead read_scene_file(const std::string& path, std::string& bytes) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return FileRead::kMissing;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return FileRead::kUnreadable;
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) return FileRead::kUnreadable;
+  bytes = ss.str();
+  return FileRead::kOk;
+}
 
 bool is_scene_path(const std::string& name) {
   const std::string ext = lower_extension(name);
@@ -712,53 +1092,75 @@ bool is_scene_path(const std::string& name) {
 }
 
 Scene load_scene_file(const std::string& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) fail(path, "open", "is a directory, not a scene file");
   const std::string ext = lower_extension(path);
+  if (ext != ".obj" && ext != ".gltf" && ext != ".glb")
+    fail(path, "name", fmt::format("unsupported file type '{}' (expected .obj, .gltf or .glb)", ext));
+  std::string bytes;
+  const FileRead r = read_scene_file(path, bytes);
+  if (r == FileRead::kMissing) fail(path, "open", fs::exists(path, ec) ? "not a regular file" : "no such file");
+  if (r != FileRead::kOk) fail(path, "open", "cannot read the file");
+  return load_scene_bytes(path, bytes, read_scene_file);
+}
+
+Scene load_scene_bytes(const std::string& name, const std::string& bytes, const SceneFileReader& read) {
+  const std::string ext = lower_extension(name);
   Scene scene;
   if (ext == ".obj") {
-    scene = load_obj(path);
+    scene = load_obj(name, bytes, read);
   } else if (ext == ".gltf" || ext == ".glb") {
-    scene = load_gltf(path, ext == ".glb");
+    scene = load_gltf(name, bytes, ext == ".glb", read);
   } else {
-    fail(path, "name", fmt::format("unsupported file type '{}' (expected .obj, .gltf or .glb)", ext));
+    fail(name, "name", fmt::format("unsupported file type '{}' (expected .obj, .gltf or .glb)", ext));
   }
-  if (scene.triangle_count() == 0) throw SceneFileError(fmt::format("scene '{}': no triangles", path));
+  if (scene.triangle_count() == 0) throw SceneFileError(printable(fmt::format("scene '{}': no triangles", name)));
   scene.background = {255, 255, 255, 255};
   fit_camera(scene);
   return scene;
 }
 
 void fit_camera(Scene& scene) {
-  glm::vec3 c;
-  float r = 0;
+  glm::dvec3 c;
+  double r = 0;
   bounding_sphere(scene, c, r);
-  const float d = r / std::sin(glm::radians(kFitFovDeg * 0.5f));
+  const double d = r / std::sin(glm::radians(kFitFovDeg * 0.5));
   Camera& cam = scene.camera;
-  cam.eye = c + glm::vec3(0.0f, 0.0f, d);
-  cam.at = c;
+  cam.eye = glm::vec3(c + glm::dvec3(0.0, 0.0, d));
+  cam.at = glm::vec3(c);
   cam.up = {0.0f, 1.0f, 0.0f};
-  cam.fov_y_deg = kFitFovDeg;
-  cam.near = d - kDepthMargin * r;
-  cam.far = d + kDepthMargin * r;
+  cam.fov_y_deg = static_cast<float>(kFitFovDeg);
+  set_depth_range(cam, d - kDepthMargin * r, d + kDepthMargin * r);
 }
 
 void aim_camera(Scene& scene, const CameraSpec& spec) {
-  const glm::vec3 dir = spec.at - spec.eye;
-  if (!(glm::length(dir) > 0.0f)) throw std::invalid_argument("--camera: 'eye' and 'at' are the same point");
-  const glm::vec3 fwd = glm::normalize(dir);
-  glm::vec3 c;
-  float r = 0;
-  bounding_sphere(scene, c, r);
-  const float dist = glm::dot(c - spec.eye, fwd);
-  const float far = dist + kDepthMargin * r;
-  if (!(far > 0.0f)) throw std::invalid_argument("--camera: the whole scene lies behind the eye");
+  const glm::dvec3 eye(spec.eye), dir = glm::dvec3(spec.at) - eye;
+  if (!(glm::length(dir) > 0.0)) throw std::invalid_argument("--camera: 'eye' and 'at' are the same point");
+  const glm::dvec3 fwd = glm::normalize(dir);
+  glm::vec3 up(0.0f, 1.0f, 0.0f);
+  if (spec.up) {
+    check_up(*spec.up, fwd);
+    up = glm::vec3(glm::normalize(glm::dvec3(*spec.up)));
+  } else if (glm::length(glm::cross(fwd, glm::dvec3(0.0, 1.0, 0.0))) < 1e-6) {
+    up = {0.0f, 0.0f, -1.0f};
+  }
+  // Near and far: the vertices' distances along the view direction, padded by 1% of their
+  // range and 0.1% of the farthest (a flat scene seen face-on has no range).
+  double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
+  for_each_world_vertex(scene, [&](const glm::dvec3& w) {
+    const double t = glm::dot(w - eye, fwd);
+    lo = std::min(lo, t);
+    hi = std::max(hi, t);
+  });
+  if (!(hi > 0.0)) throw std::invalid_argument("--camera: the whole scene lies behind the eye");
+  const double pad = 0.01 * (hi - lo) + 0.001 * hi;
+  const double far = hi + pad;
   Camera& cam = scene.camera;
   cam.eye = spec.eye;
   cam.at = spec.at;
-  cam.up = glm::length(glm::cross(fwd, glm::vec3(0.0f, 1.0f, 0.0f))) < 1e-6f ? glm::vec3(0.0f, 0.0f, -1.0f)
-                                                                          : glm::vec3(0.0f, 1.0f, 0.0f);
+  cam.up = up;
   cam.fov_y_deg = spec.fov_y_deg;
-  cam.far = far;
-  cam.near = std::max(dist - kDepthMargin * r, far * 1e-4f);
+  set_depth_range(cam, std::max(lo - pad, far * 1e-4), far);
 }
 
 CameraSpec parse_camera_spec(const std::string& text) {
@@ -768,12 +1170,13 @@ CameraSpec parse_camera_spec(const std::string& text) {
   for (const std::string& tok : split(text, ',')) {
     if (const size_t eq = tok.find('='); eq != std::string::npos) {
       current = tok.substr(0, eq);
-      if (current != "eye" && current != "at" && current != "fov")
-        throw std::invalid_argument(fmt::format("--camera: unknown field '{}' (expected eye, at, fov)", current));
+      if (current != "eye" && current != "at" && current != "fov" && current != "up")
+        throw std::invalid_argument(fmt::format("--camera: unknown field '{}' (expected eye, at, fov, up)", current));
       if (fields.count(current)) throw std::invalid_argument(fmt::format("--camera: field '{}' given twice", current));
       fields[current].push_back(tok.substr(eq + 1));
     } else if (current.empty()) {
-      throw std::invalid_argument(fmt::format("--camera: '{}' is not a field (expected eye=x,y,z,at=x,y,z,fov=deg)", tok));
+      throw std::invalid_argument(
+          fmt::format("--camera: '{}' is not a field (expected eye=x,y,z,at=x,y,z,fov=deg[,up=x,y,z])", tok));
     } else {
       fields[current].push_back(tok);
     }
@@ -801,6 +1204,11 @@ CameraSpec parse_camera_spec(const std::string& text) {
   if (!(fov[0] >= 1.0f && fov[0] <= 179.0f))
     throw std::invalid_argument(fmt::format("--camera: field 'fov': {} is out of range (1 to 179)", fov[0]));
   if (spec.eye == spec.at) throw std::invalid_argument("--camera: 'eye' and 'at' are the same point");
+  if (fields.count("up")) {
+    const std::vector<float> up = numbers("up", 3);
+    spec.up = glm::vec3(up[0], up[1], up[2]);
+    check_up(*spec.up, glm::normalize(glm::dvec3(spec.at) - glm::dvec3(spec.eye)));
+  }
   return spec;
 }
 

@@ -1,6 +1,8 @@
 #include "trace.h"
 
+#include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -219,10 +221,14 @@ Trace parse_trace(const std::string& bytes, const std::string& name) {
 }
 
 Trace read_trace(const std::string& path) {
+  std::error_code ec;
+  // An ifstream opens a directory and then reads nothing: say what it is.
+  if (std::filesystem::is_directory(path, ec)) throw TraceError(fmt::format("trace '{}': is a directory", path));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw TraceError(fmt::format("trace '{}': cannot open: {}", path, std::strerror(errno)));
   std::ostringstream bytes;
   bytes << in.rdbuf();
+  if (in.bad()) throw TraceError(fmt::format("trace '{}': cannot read: {}", path, std::strerror(errno)));
   return parse_trace(bytes.str(), path);
 }
 

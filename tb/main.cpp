@@ -23,8 +23,7 @@ int run_replay(const Config& c, const std::string& path) {
   try {
     const Trace tr = read_trace(path);
     Cosim cs(cosim_options(c, c.seed));
-    cs.begin_frame(tr.width, tr.height, tr.depth_bits, tr.clear_color, tr.coverage_samples);
-    for (const TracePass& p : tr.passes) draw_pass(cs, p.name, p.state, p.fragments);
+    replay_trace(tr, cs);  // frame operations included, as the render that wrote it
     std::printf("replay %s: %llu passes, %llu fragments, %llu pixels compared, 0 mismatches\n",
                 path.c_str(), (unsigned long long)cs.passes(), (unsigned long long)cs.fragments(),
                 (unsigned long long)cs.pixels_compared());

@@ -5,23 +5,11 @@ set -u
 zblend=${1:?usage: test_cli.sh PATH/TO/zblend}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-pass=0 fail=0
-
-ok() { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
-
-# expect_error NAME PATTERN ARGS...: exit 2, one stderr line matching PATTERN, no files left.
-expect_error() {
+. "$(dirname "$0")/cli_lib.sh"
+# The zblend command's errors.
+expect_zblend_error() {
   local name=$1 pattern=$2; shift 2
-  local before after err rc
-  before=$(ls -A "$tmp/out" | sort)
-  err=$("$zblend" "$@" 2>&1 >/dev/null); rc=$?
-  after=$(ls -A "$tmp/out" | sort)
-  if [[ $rc -ne 2 ]]; then bad "$name: exit $rc, want 2 ($err)"; return; fi
-  if [[ $(printf '%s\n' "$err" | wc -l) -ne 1 ]]; then bad "$name: not one line: $err"; return; fi
-  if ! grep -qE -- "$pattern" <<<"$err"; then bad "$name: '$err' lacks /$pattern/"; return; fi
-  if [[ "$before" != "$after" ]]; then bad "$name: left files: $after"; return; fi
-  ok
+  expect_error "$name" "$pattern" "$zblend" "$@"
 }
 
 mkdir -p "$tmp/out" "$tmp/ro"
@@ -85,35 +73,35 @@ if "$zblend" trace --scene quads --method unsorted --width 32 --height 24 --out 
 rm -f "$tmp/out/q.zbt"
 
 # Bad input.
-expect_error "unknown scene" "unknown scene 'nope'.*cad" render --scene nope --out "$tmp/out/a.png"
-expect_error "unknown method" "unknown method 'nope'.*three-pass" render --method nope --out "$tmp/out/a.png"
-expect_error "zero width" "--width: 0 is out of range" render --width 0 --out "$tmp/out/a.png"
-expect_error "huge height" "--height: 100000 is out of range" render --height 100000 --out "$tmp/out/a.png"
-expect_error "depth bits" "--depth-bits" render --depth-bits 40 --out "$tmp/out/a.png"
-expect_error "not a number" "width" render --width abc --out "$tmp/out/a.png"
-expect_error "no output" "--out" render --scene cad
-expect_error "not png" "must end in .png" render --out "$tmp/out/a.jpg"
-expect_error "missing dir" "does not exist" render --out "$tmp/out/no/such/a.png"
-expect_error "several methods one file" "--out-dir" render --method opaque,three-pass --out "$tmp/out/a.png"
-expect_error "unknown subcommand" "" frobnicate
-expect_error "unknown backend" "unknown backend 'gpu'.*golden, rtl, both" render --backend gpu --out "$tmp/out/a.png"
-expect_error "rtl depth bits" "--depth-bits: the RTL model is built with 24" render --backend rtl --depth-bits 16 --out "$tmp/out/a.png"
-expect_error "waves need rtl" "--waves: needs --backend rtl" render --waves "$tmp/out/w.fst" --out "$tmp/out/a.png"
-expect_error "backpressure range" "--backpressure: 1.5 is out of range" render --backend rtl --backpressure 1.5 --out "$tmp/out/a.png"
-expect_error "plan of reference" "no pass plan" plan --method reference
-expect_error "trace of reference" "no pass plan" trace --method reference --out "$tmp/out/t.zbt"
-expect_error "trace extension" "must end in .zbt" trace --out "$tmp/out/t.bin"
-expect_error "trace size" "--width: 9000 is out of range" trace --width 9000 --out "$tmp/out/t.zbt"
+expect_zblend_error "unknown scene" "unknown scene 'nope'.*cad" render --scene nope --out "$tmp/out/a.png"
+expect_zblend_error "unknown method" "unknown method 'nope'.*three-pass" render --method nope --out "$tmp/out/a.png"
+expect_zblend_error "zero width" "--width: 0 is out of range" render --width 0 --out "$tmp/out/a.png"
+expect_zblend_error "huge height" "--height: 100000 is out of range" render --height 100000 --out "$tmp/out/a.png"
+expect_zblend_error "depth bits" "--depth-bits" render --depth-bits 40 --out "$tmp/out/a.png"
+expect_zblend_error "not a number" "width" render --width abc --out "$tmp/out/a.png"
+expect_zblend_error "no output" "--out" render --scene cad
+expect_zblend_error "not png" "must end in .png" render --out "$tmp/out/a.jpg"
+expect_zblend_error "missing dir" "does not exist" render --out "$tmp/out/no/such/a.png"
+expect_zblend_error "several methods one file" "--out-dir" render --method opaque,three-pass --out "$tmp/out/a.png"
+expect_zblend_error "unknown subcommand" "" frobnicate
+expect_zblend_error "unknown backend" "unknown backend 'gpu'.*golden, rtl, both" render --backend gpu --out "$tmp/out/a.png"
+expect_zblend_error "rtl depth bits" "--depth-bits: the RTL model is built with 24" render --backend rtl --depth-bits 16 --out "$tmp/out/a.png"
+expect_zblend_error "waves need rtl" "--waves: needs --backend rtl" render --waves "$tmp/out/w.fst" --out "$tmp/out/a.png"
+expect_zblend_error "backpressure range" "--backpressure: 1.5 is out of range" render --backend rtl --backpressure 1.5 --out "$tmp/out/a.png"
+expect_zblend_error "plan of reference" "no pass plan" plan --method reference
+expect_zblend_error "trace of reference" "no pass plan" trace --method reference --out "$tmp/out/t.zbt"
+expect_zblend_error "trace extension" "must end in .zbt" trace --out "$tmp/out/t.bin"
+expect_zblend_error "trace size" "--width: 9000 is out of range" trace --width 9000 --out "$tmp/out/t.zbt"
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n' >"$tmp/bad.obj"
-expect_error "obj index" "bad.obj: line 4: vertex index 9 out of range" render --scene "$tmp/bad.obj" --out "$tmp/out/a.png"
+expect_zblend_error "obj index" "bad.obj: line 4: vertex index 9 out of range" render --scene "$tmp/bad.obj" --out "$tmp/out/a.png"
 printf '{"asset": {"version": "2.0"}, "nodes": [' >"$tmp/trunc.gltf"
-expect_error "truncated gltf" "trunc.gltf: JSON: malformed" trace --scene "$tmp/trunc.gltf" --out "$tmp/out/t.zbt"
-expect_error "missing scene file" "no/such.obj: open: no such file" render --scene "$tmp/no/such.obj" --out "$tmp/out/a.png"
-expect_error "camera field" "--camera: field 'fov'" render --camera eye=0,0,5,at=0,0,0,fov=x --out "$tmp/out/a.png"
+expect_zblend_error "truncated gltf" "trunc.gltf: JSON: malformed" trace --scene "$tmp/trunc.gltf" --out "$tmp/out/t.zbt"
+expect_zblend_error "missing scene file" "no/such.obj: open: no such file" render --scene "$tmp/no/such.obj" --out "$tmp/out/a.png"
+expect_zblend_error "camera field" "--camera: field 'fov'" render --camera eye=0,0,5,at=0,0,0,fov=x --out "$tmp/out/a.png"
 if [[ $(id -u) -ne 0 ]]; then
-  expect_error "unwritable" "not writable" render --out "$tmp/ro/a.png"
+  expect_zblend_error "unwritable" "not writable" render --out "$tmp/ro/a.png"
 else
-  expect_error "unwritable" "cannot write" render -q --width 8 --height 8 --out /proc/zblend-test.png
+  expect_zblend_error "unwritable" "cannot write" render -q --width 8 --height 8 --out /proc/zblend-test.png
 fi
 
 echo "$pass passed, $fail failed"

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include "scene_file.h"
 
@@ -260,7 +261,13 @@ TEST_F(SceneFileTest, GltfErrorsNameFilePlaceAndProblem) {
   p = write("long.gltf", test_gltf(buf, 9));
   EXPECT_EQ(error_of(p), p + ": accessors[1]: 9 elements run past the end of bufferView 1");
   p = write("nobin.gltf", test_gltf(R"({"uri": "missing.bin", "byteLength": 60})"));
-  EXPECT_CONTAINS(error_of(p), p + ": tinygltf: ");
+  EXPECT_EQ(error_of(p), p + ": buffers[0]: file '" + (dir_ / "missing.bin").string() + "' not found");
+  p = write("short.gltf", test_gltf(R"({"uri": "t.bin", "byteLength": 64})"));
+  EXPECT_EQ(error_of(p), p + ": buffers[0]: file '" + (dir_ / "t.bin").string() + "' has 60 bytes, byteLength says 64");
+  std::string twice = good;  // node 1, a child of node 0, also a root
+  twice.replace(twice.find("[0, 2]"), 6, "[0, 2, 1]");
+  p = write("twice.gltf", twice);
+  EXPECT_EQ(error_of(p), p + ": nodes[1]: node reached twice (a node has at most one parent and is no root besides)");
   p = write("lines.gltf", R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 0}],
     "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "mode": 1}]}],
     "buffers": [{"uri": "t.bin", "byteLength": 60}],
@@ -270,6 +277,81 @@ TEST_F(SceneFileTest, GltfErrorsNameFilePlaceAndProblem) {
   p = write("cycle.gltf", R"({"asset": {"version": "2.0"}, "nodes": [{"children": [1]}, {"children": [0]}],
     "scenes": [{"nodes": [0]}]})");
   EXPECT_EQ(error_of(p), p + ": nodes[0]: cycle in the node hierarchy");
+}
+
+// A chain of `depth` nodes, the last with a one-triangle mesh; `extras` nested `nesting` deep.
+std::string deep_gltf(int depth, int nesting) {
+  std::string nodes;
+  for (int i = 0; i + 1 < depth; ++i) nodes += "{\"children\": [" + std::to_string(i + 1) + "]}, ";
+  nodes += R"({"mesh": 0})";
+  return R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [)" + nodes +
+         R"(], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+    "buffers": [{"uri": "t.bin", "byteLength": 60}],
+    "bufferViews": [{"buffer": 0, "byteLength": 48}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+    "extras": )" + std::string(size_t(nesting), '[') + std::string(size_t(nesting), ']') + "}";
+}
+
+TEST_F(SceneFileTest, DeepGltfKeepsTheStack) {
+  write("t.bin", test_buffer());
+  // The node walk keeps its own stack (a recursion this deep overflows under ASan); tinygltf
+  // converts `extras` recursively, so JSON nesting is bounded.
+  EXPECT_EQ(load_scene_file(write("deep.gltf", deep_gltf(20000, 63))).triangle_count(), 1u);
+  std::string p = write("nested.gltf", deep_gltf(1, 64));
+  EXPECT_EQ(error_of(p), p + ": JSON: nested deeper than 64 levels");
+  p = write("nested.glb", make_glb(deep_gltf(1, 100000), ""));
+  EXPECT_EQ(error_of(p), p + ": JSON chunk: nested deeper than 64 levels");
+}
+
+TEST_F(SceneFileTest, BytesInMemoryAndTheirFiles) {
+  // The files a scene names come from the reader, by their name joined to the scene's directory.
+  std::vector<std::string> asked;
+  const SceneFileReader read = [&](const std::string& path, std::string& bytes) {
+    asked.push_back(path);
+    if (path == "mem/t.mtl") bytes = kMtl;
+    else if (path == "mem/t.bin") bytes = test_buffer();
+    else return FileRead::kMissing;
+    return FileRead::kOk;
+  };
+  const Scene obj = load_scene_bytes("mem/t.obj", kObj, read);
+  EXPECT_EQ(obj.triangle_count(), 3u);
+  EXPECT_EQ(obj.materials.at(obj.objects[0].material).color, (Rgba8{255, 0, 0, 128}));
+  EXPECT_EQ(asked, std::vector<std::string>{"mem/t.mtl"});
+  expect_test_scene(load_scene_bytes("mem/t.gltf", test_gltf(R"({"uri": "t.bin", "byteLength": 60})"), read));
+  expect_test_scene(load_scene_bytes("t.glb", make_glb(test_gltf(R"({"byteLength": 60})"), test_buffer()), read));
+  try {
+    load_scene_bytes("mem/u.obj", "mtllib u.mtl\n", read);
+    ADD_FAILURE() << "loaded";
+  } catch (const SceneFileError& e) {
+    EXPECT_STREQ(e.what(), "mem/u.obj: line 1: material library 'mem/u.mtl' not found");
+  }
+}
+
+TEST_F(SceneFileTest, DirectoriesAndOddFiles) {
+  EXPECT_EQ(error_of(dir_.string()), dir_.string() + ": open: is a directory, not a scene file");
+  fs::create_directory(dir_ / "d.obj");
+  const std::string d = (dir_ / "d.obj").string();
+  EXPECT_EQ(error_of(d), d + ": open: is a directory, not a scene file");
+  // The MTL named by mtllib is a directory: not found, as a missing file.
+  fs::create_directory(dir_ / "m.mtl");
+  const std::string p = write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  EXPECT_EQ(error_of(p), p + ": line 1: material library '" + (dir_ / "m.mtl").string() + "' not found");
+}
+
+TEST_F(SceneFileTest, ObjStatementsNotReadAreNotParsed) {
+  // tinyobjloader gets only what zblend reads: its `vw` parser converts a huge joint id to int
+  // (undefined behaviour, found by fuzz_obj). Old Mac line ends (a lone CR) end lines as there.
+  const Scene s = load_scene_file(write("cr.obj", "v 0 0 0\rv 1 0 0\r\nv 0 1 0\rs 99999999999\r"
+                                                  "vw 0 99999999999 0.5\rl 1 2\rp 1\rf 1 2 3\r"));
+  EXPECT_EQ(s.triangle_count(), 1u);
+  const std::string p = write("crline.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 4\r");
+  EXPECT_EQ(error_of(p), p + ": line 4: vertex index 4 out of range (1 to 3)");
+}
+
+TEST_F(SceneFileTest, DegenerateTrianglesLoad) {
+  // Zero-area triangles are no error: the geometry stage drops them (docs/scenes.md).
+  const Scene s = load_scene_file(write("z.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 1\n"));
+  EXPECT_EQ(s.triangle_count(), 2u);
 }
 
 TEST_F(SceneFileTest, GlbErrorsNameTheByte) {
@@ -290,41 +372,95 @@ TEST_F(SceneFileTest, GlbErrorsNameTheByte) {
 
 // ---- the camera ------------------------------------------------------------------------------
 
+// The error parse_camera_spec gives for `text`, or "parsed".
+std::string camera_error(const std::string& text) {
+  try {
+    parse_camera_spec(text);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "parsed";
+}
+
 TEST(CameraSpec, ParsesStrictly) {
   const CameraSpec c = parse_camera_spec("eye=1,2,3,at=0,0.5,-1,fov=30");
   EXPECT_EQ(c.eye, glm::vec3(1, 2, 3));
   EXPECT_EQ(c.at, glm::vec3(0, 0.5f, -1));
   EXPECT_EQ(c.fov_y_deg, 30.0f);
   EXPECT_EQ(parse_camera_spec("fov=60,at=0,0,0,eye=0,0,5").fov_y_deg, 60.0f);
-  auto message = [](const std::string& text) {
-    try {
-      parse_camera_spec(text);
-    } catch (const std::invalid_argument& e) {
-      return std::string(e.what());
-    }
-    return std::string("parsed");
-  };
-  EXPECT_EQ(message("eye=1,2,at=0,0,0,fov=30"), "--camera: field 'eye' needs 3 numbers, has 2");
-  EXPECT_EQ(message("eye=1,2,3,at=0,0,0"), "--camera: field 'fov' is missing");
-  EXPECT_EQ(message("eye=1,2,3,at=0,0,0,fov=abc"), "--camera: field 'fov': 'abc' is not a finite number");
-  EXPECT_EQ(message("eye=1,2,3,at=0,0,0,fov=180"), "--camera: field 'fov': 180 is out of range (1 to 179)");
-  EXPECT_EQ(message("eye=1,2,3,up=0,1,0,fov=30"), "--camera: unknown field 'up' (expected eye, at, fov)");
-  EXPECT_EQ(message("eye=1,2,3,at=1,2,3,fov=30"), "--camera: 'eye' and 'at' are the same point");
-  EXPECT_EQ(message("eye=1,2,3,eye=1,2,3,fov=30"), "--camera: field 'eye' given twice");
-  EXPECT_EQ(message("1,2,3"), "--camera: '1' is not a field (expected eye=x,y,z,at=x,y,z,fov=deg)");
+  EXPECT_EQ(camera_error("eye=1,2,at=0,0,0,fov=30"), "--camera: field 'eye' needs 3 numbers, has 2");
+  EXPECT_EQ(camera_error("eye=1,2,3,at=0,0,0"), "--camera: field 'fov' is missing");
+  EXPECT_EQ(camera_error("eye=1,2,3,at=0,0,0,fov=abc"), "--camera: field 'fov': 'abc' is not a finite number");
+  EXPECT_EQ(camera_error("eye=1,2,3,at=0,0,0,fov=180"), "--camera: field 'fov': 180 is out of range (1 to 179)");
+  EXPECT_EQ(camera_error("eye=1,2,3,up=0,1,0,fov=30"), "--camera: field 'at' is missing");
+  EXPECT_EQ(camera_error("eye=1,2,3,dir=0,1,0,fov=30"), "--camera: unknown field 'dir' (expected eye, at, fov, up)");
+  EXPECT_EQ(camera_error("eye=1,2,3,at=1,2,3,fov=30"), "--camera: 'eye' and 'at' are the same point");
+  EXPECT_EQ(camera_error("eye=1,2,3,eye=1,2,3,fov=30"), "--camera: field 'eye' given twice");
+  EXPECT_EQ(camera_error("1,2,3"), "--camera: '1' is not a field (expected eye=x,y,z,at=x,y,z,fov=deg[,up=x,y,z])");
+}
+
+TEST(CameraSpec, UpIsOptionalAndChecked) {
+  EXPECT_FALSE(parse_camera_spec("eye=0,0,5,at=0,0,0,fov=30").up.has_value());
+  const CameraSpec c = parse_camera_spec("up=1,0,0,eye=0,0,5,at=0,0,0,fov=30");
+  ASSERT_TRUE(c.up.has_value());
+  EXPECT_EQ(*c.up, glm::vec3(1, 0, 0));
+  EXPECT_EQ(camera_error("eye=0,0,5,at=0,0,0,fov=30,up=0,0,0"), "--camera: field 'up' is the zero vector");
+  EXPECT_EQ(camera_error("eye=0,0,5,at=0,0,0,fov=30,up=0,0,-2"),
+            "--camera: 'up' is parallel to the view direction (eye to at)");
+  EXPECT_EQ(camera_error("eye=0,0,5,at=0,0,0,fov=30,up=1,0"), "--camera: field 'up' needs 3 numbers, has 2");
+  EXPECT_EQ(camera_error("eye=0,0,5,at=0,0,0,fov=30,up=nan,1,0"), "--camera: field 'up': 'nan' is not a finite number");
+  EXPECT_EQ(camera_error("eye=0,0,5,at=0,0,0,fov=30,up=0,1,0,up=0,1,0"), "--camera: field 'up' given twice");
 }
 
 TEST_F(SceneFileTest, AimedCameraFitsNearAndFar) {
   Scene s = load_scene_file(write("q.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n"));
+  // Seen face-on, every vertex is 10 away along the view: near and far pad 0.1% of 10.
   aim_camera(s, parse_camera_spec("eye=0,0,10,at=0,0,0,fov=30"));
-  const float r = std::sqrt(2.0f);
   EXPECT_EQ(s.camera.eye, glm::vec3(0, 0, 10));
+  EXPECT_EQ(s.camera.up, glm::vec3(0, 1, 0));
   EXPECT_EQ(s.camera.fov_y_deg, 30.0f);
-  EXPECT_NEAR(s.camera.near, 10 - 1.01f * r, 1e-5f);
-  EXPECT_NEAR(s.camera.far, 10 + 1.01f * r, 1e-5f);
+  EXPECT_NEAR(s.camera.near, 9.99f, 1e-5f);
+  EXPECT_NEAR(s.camera.far, 10.01f, 1e-5f);
+  // From the side, along +x: distances 9 to 11, padded by 1% of 2 and 0.1% of 11.
+  aim_camera(s, parse_camera_spec("eye=-10,0,0,at=0,0,0,fov=30"));
+  EXPECT_NEAR(s.camera.near, 9 - 0.031f, 1e-5f);
+  EXPECT_NEAR(s.camera.far, 11 + 0.031f, 1e-5f);
   aim_camera(s, parse_camera_spec("eye=0,5,0,at=0,0,0,fov=30"));  // straight down: up is -z
   EXPECT_EQ(s.camera.up, glm::vec3(0, 0, -1));
+  aim_camera(s, parse_camera_spec("eye=0,0,10,at=0,0,0,fov=30,up=3,0,0"));  // normalised
+  EXPECT_EQ(s.camera.up, glm::vec3(1, 0, 0));
   EXPECT_THROW(aim_camera(s, parse_camera_spec("eye=0,0,10,at=0,0,20,fov=30")), std::invalid_argument);
+  CameraSpec spec = parse_camera_spec("eye=0,0,10,at=0,0,0,fov=30");
+  spec.up = glm::vec3(0, 0, 1);  // set directly: aim_camera checks it too
+  EXPECT_THROW(aim_camera(s, spec), std::invalid_argument);
+}
+
+// Every entry of the camera's projection (and, with `view`, view) matrix is finite.
+void expect_finite_camera(const Camera& c, bool view = true) {
+  std::vector<glm::mat4> m = {c.projection(4.0f / 3.0f)};
+  if (view) m.push_back(c.view());
+  for (const glm::mat4& x : m)
+    for (int i = 0; i < 16; ++i) EXPECT_TRUE(std::isfinite(glm::value_ptr(x)[i])) << i;
+  EXPECT_GT(c.near, 0.0f);
+  EXPECT_GT(c.far, c.near);
+}
+
+TEST_F(SceneFileTest, HugeCoordinatesKeepTheProjectionFinite) {
+  // A triangle spanning +-1e20 in z = 0, seen face-on from 5 away: near and far hug it.
+  Scene s = load_scene_file(write("big.obj", "v -1e20 -1e20 0\nv 1e20 -1e20 0\nv 0 1e20 0\nf 1 2 3\n"));
+  // Fitted: near lowered so that 2 * far * near is a float. The view matrix is not finite
+  // (glm::lookAtRH normalises eye - at, 3.7e20 long, in float: docs/scenes.md).
+  expect_finite_camera(s.camera, false);
+  aim_camera(s, parse_camera_spec("eye=0,0,5,at=0,0,0,fov=60"));
+  expect_finite_camera(s.camera);
+  EXPECT_LT(s.camera.near, 5.0f);
+  EXPECT_GT(s.camera.far, 5.0f);
+  // At the edge of the float range the fitted box's diagonal is no float: done in double.
+  s = load_scene_file(write("edge.obj", "v -3e38 -3e38 0\nv 3e38 -3e38 0\nv 0 3e38 0\nf 1 2 3\n"));
+  expect_finite_camera(s.camera, false);
+  EXPECT_EQ(s.camera.far, 1e37f);
+  aim_camera(s, parse_camera_spec("eye=0,0,1e10,at=0,0,0,fov=60"));
+  expect_finite_camera(s.camera);
 }
 
 // ---- real files from Debian packages ---------------------------------------------------------

@@ -1,0 +1,209 @@
+// zblend_oracle: renders a scene with pass plans on the golden model and through OpenGL on
+// Mesa's llvmpipe, and compares the frames pixel by pixel (docs/oracle.md).
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include "commands.h"
+#include "exact_depth.h"
+#include "frame_diff.h"
+#include "gl_render.h"
+#include "image.h"
+#include "render.h"
+#include "rop.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using zb::app::UsageError;
+
+constexpr const char* kDefaultMethods = "opaque,unsorted,three-pass,back-front";
+
+struct Options {
+  zb::app::FrameOptions frame;
+  std::string methods = kDefaultMethods;
+  std::string out_dir;
+  double min_identical = 99.9;
+  std::string window_y = "down";
+  bool quiet = false;
+};
+
+struct Row {
+  std::string method;
+  zb::oracle::FrameDiff diff;
+  zb::Rgba8 golden, gl;  // at the first differing pixel
+  // Differing pixels by what the plan replayed with exact depths gives there (exact_depth.h).
+  uint64_t exact_golden = 0, exact_gl = 0, exact_neither = 0;
+};
+
+// Sorts the differing pixels by which frame the exact-depth replay agrees with.
+void classify(const zb::RasterizedScene& rs, const zb::PassPlan& plan, const zb::Framebuffer& g,
+              const zb::Framebuffer& l, Row& row) {
+  std::vector<size_t> differing;
+  for (size_t i = 0; i < g.color.size(); ++i)
+    if (g.color[i] != l.color[i]) differing.push_back(i);
+  const std::vector<zb::Rgba8> exact = zb::oracle::replay_exact_depth(rs, plan, differing);
+  for (size_t k = 0; k < differing.size(); ++k) {
+    if (exact[k] == g.color[differing[k]]) ++row.exact_golden;
+    else if (exact[k] == l.color[differing[k]]) ++row.exact_gl;
+    else ++row.exact_neither;
+  }
+}
+
+// Every plan GL can draw when `list` is "all"; otherwise each named one, checked.
+std::vector<const zb::PassPlan*> oracle_plans(const std::string& list) {
+  std::vector<const zb::PassPlan*> plans;
+  if (list == "all") {
+    for (const zb::PassPlan& p : zb::pass_plans())
+      if (zb::oracle::unsupported_reason(p).empty()) plans.push_back(&p);
+    return plans;
+  }
+  for (const std::string& m : zb::app::parse_methods(list)) {
+    const zb::PassPlan* p = zb::find_plan(m);
+    if (!p) throw UsageError(fmt::format("--method: '{}' has no pass plan to draw", m));
+    if (const std::string why = zb::oracle::unsupported_reason(*p); !why.empty())
+      throw UsageError(fmt::format("--method: '{}' cannot be drawn by OpenGL: {}", m, why));
+    plans.push_back(p);
+  }
+  return plans;
+}
+
+std::string rgba(zb::Rgba8 c) { return fmt::format("{},{},{},{}", c.r, c.g, c.b, c.a); }
+
+std::string csv(const Options& o, const std::vector<Row>& rows) {
+  std::string s =
+      "scene,method,width,height,pixels,identical,identical_pct,max_diff,depth_identical_pct,"
+      "max_depth_diff,first_x,first_y,exact_sides_golden,exact_sides_llvmpipe,exact_sides_neither\n";
+  for (const Row& r : rows)
+    s += fmt::format("{},{},{},{},{},{},{:.4f},{},{:.4f},{},{},{},{},{},{}\n", o.frame.scene, r.method,
+                     o.frame.width, o.frame.height, r.diff.pixels, r.diff.identical,
+                     100 * r.diff.identical_share(), r.diff.max_diff,
+                     100 * r.diff.depth_identical_share(), r.diff.max_depth_diff, r.diff.first_x,
+                     r.diff.first_y, r.exact_golden, r.exact_gl, r.exact_neither);
+  return s;
+}
+
+int run(const Options& o) {
+  const zb::Scene scene = zb::app::resolve_scene(o.frame.scene, o.frame.camera);
+  const zb::Viewport vp = zb::app::check_viewport(o.frame.width, o.frame.height, o.frame.depth_bits);
+  if (vp.depth_bits != 24)
+    throw UsageError(fmt::format("--depth-bits: the oracle's depth buffer is DEPTH_COMPONENT24, "
+                                 "not {} bits", vp.depth_bits));
+  if (!(o.min_identical >= 0 && o.min_identical <= 100))
+    throw UsageError(fmt::format("--min-identical: {} is out of range (0 to 100)", o.min_identical));
+  if (o.window_y != "down" && o.window_y != "up")
+    throw UsageError(fmt::format("--window-y: unknown direction '{}' (choose from down, up)",
+                                 o.window_y));
+  const auto window_y =
+      o.window_y == "down" ? zb::oracle::WindowY::kDown : zb::oracle::WindowY::kUp;
+  const std::vector<const zb::PassPlan*> plans = oracle_plans(o.methods);
+  if (!o.out_dir.empty()) {
+    std::error_code ec;
+    fs::create_directories(o.out_dir, ec);
+    zb::app::check_writable("--out-dir", (fs::path(o.out_dir) / "oracle.csv").string(), ".csv");
+  }
+
+  zb::oracle::GlContext gl(vp.width, vp.height);
+  const zb::RasterizedScene rs = zb::rasterize_scene(scene, vp);
+  const std::vector<zb::ClipTriangle> clip = zb::transform_triangles(scene, vp);
+  if (!o.quiet)
+    fmt::print("{}: {}x{}, {} triangles; OpenGL: {}, {}\n", o.frame.scene, vp.width, vp.height,
+               clip.size(), gl.renderer(), gl.version());
+
+  std::vector<Row> rows;
+  std::vector<std::pair<std::string, zb::Framebuffer>> images;
+  for (const zb::PassPlan* plan : plans) {
+    zb::GoldenRop golden;
+    const zb::Framebuffer g = zb::render(rs, *plan, golden).framebuffer;
+    const zb::Framebuffer l = zb::oracle::render_gl(gl, clip, *plan, scene.background, window_y);
+    Row row{plan->name, zb::oracle::diff_frames(g, l), {}, {}};
+    classify(rs, *plan, g, l, row);
+    if (row.diff.first_x >= 0) {
+      row.golden = g.color_at(row.diff.first_x, row.diff.first_y);
+      row.gl = l.color_at(row.diff.first_x, row.diff.first_y);
+    }
+    rows.push_back(row);
+    if (!o.out_dir.empty()) {
+      images.emplace_back(plan->name + "-golden.png", g);
+      images.emplace_back(plan->name + "-llvmpipe.png", l);
+      images.emplace_back(plan->name + "-diff.png", zb::oracle::diff_image(g, l));
+    }
+  }
+
+  for (const auto& [name, fb] : images)
+    zb::app::write_or_fail(zb::write_png((fs::path(o.out_dir) / name).string(), fb));
+  if (!o.out_dir.empty())
+    zb::app::write_or_fail(
+        zb::write_file_atomic((fs::path(o.out_dir) / "oracle.csv").string(), csv(o, rows)));
+
+  if (!o.quiet) {
+    fmt::print("{:<12} {:>24} {:>9} {:>16} {:>15}  {}\n", "method", "bit-identical pixels",
+               "max diff", "depth identical", "max depth diff",
+               "exact depths side with golden/llvmpipe/neither");
+    for (const Row& r : rows)
+      fmt::print("{:<12} {:>14} {:>8.4f}% {:>9} {:>15.4f}% {:>15}  {}/{}/{}\n", r.method,
+                 fmt::format("{}/{}", r.diff.identical, r.diff.pixels),
+                 100 * r.diff.identical_share(), r.diff.max_diff,
+                 100 * r.diff.depth_identical_share(), r.diff.max_depth_diff, r.exact_golden,
+                 r.exact_gl, r.exact_neither);
+  }
+  int failed = 0;
+  for (const Row& r : rows) {
+    if (100 * r.diff.identical_share() >= o.min_identical) continue;
+    std::fprintf(stderr,
+                 "zblend_oracle: FAILED: %s on %s: %.4f%% bit-identical pixels, below %.4g%%; "
+                 "first difference at (%d, %d): golden %s, llvmpipe %s\n",
+                 r.method.c_str(), o.frame.scene.c_str(), 100 * r.diff.identical_share(),
+                 o.min_identical, r.diff.first_x, r.diff.first_y, rgba(r.golden).c_str(),
+                 rgba(r.gl).c_str());
+    ++failed;
+  }
+  return failed ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"zblend_oracle: the golden model against OpenGL on Mesa's llvmpipe, pixel by "
+               "pixel, for the pass plans OpenGL can draw"};
+  app.name("zblend_oracle");
+  Options o;
+  zb::app::add_frame_options(&app, o.frame);
+  app.add_option("--method,-m", o.methods,
+                 "Methods, comma-separated, or 'all' (every plan OpenGL can draw)")
+      ->capture_default_str();
+  app.add_option("--out-dir", o.out_dir,
+                 "Write METHOD-golden.png, METHOD-llvmpipe.png, METHOD-diff.png and oracle.csv");
+  app.add_option("--min-identical", o.min_identical,
+                 "Fail (exit 1) when a method's share of bit-identical pixels, in percent, is "
+                 "below this")
+      ->capture_default_str();
+  app.add_option("--window-y", o.window_y,
+                 "down: GL's window y runs down the picture as zblend's (the picture drawn upside "
+                 "down); up: GL's usual y up, where pixels on horizontal edges go to the other "
+                 "triangle")
+      ->capture_default_str();
+  app.add_flag("--quiet,-q", o.quiet, "Print nothing but failures and errors");
+  try {
+    app.parse(argc, argv);
+    return run(o);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::fprintf(stderr, "zblend_oracle: error: %s (see 'zblend_oracle --help')\n", e.what());
+    return 2;
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "zblend_oracle: error: %s\n", e.what());
+    return 2;
+  } catch (const zb::oracle::GlUnavailable& e) {
+    std::fprintf(stderr, "zblend_oracle: cannot run: %s\n", e.what());
+    return 3;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "zblend_oracle: internal error: %s\n", e.what());
+    return 1;
+  }
+}
