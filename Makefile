@@ -53,6 +53,50 @@ waves: build ## Render `cad` on the RTL with a waveform: out/waves/cad.fst
 	  --out out/waves/cad.png --waves out/waves/cad.fst
 	@echo "open it: gtkwave out/waves/cad.fst  (or surfer out/waves/cad.fst)"
 
+# The methods lab (docs/lab.md): the sweeps first, so that the lab's report takes them in.
+LAB_DIR ?= out/lab
+
+.PHONY: lab
+lab: setup $(BUILD)/CMakeCache.txt ## Every method on every scene, and the sweeps: CSV, charts, report in out/lab/
+	@cmake --build $(BUILD) -j $(JOBS) --target zblend
+	$(ZBLEND) sweep all --out-dir $(LAB_DIR)/sweeps
+	$(ZBLEND) lab --out-dir $(LAB_DIR) -j $(JOBS)
+	@echo "report: $(LAB_DIR)/report.html ($(LAB_DIR)/report.md)"
+
+# A model sized to a scene (docs/sizing.md): `zblend plan` picks the method and the widths, a
+# build tree of their own Verilates zb_rop with them, and a render on golden model and that RTL,
+# compared bit for bit, checks the choice. Only the zblend target is built there.
+SCENE     ?= cad
+MAX_ERROR ?= 8
+PLAN_SIZE ?= $(RUN_SIZE)
+PLAN_DIR   = out/plan-rtl/$(notdir $(SCENE))
+
+.PHONY: plan-rtl
+plan-rtl: setup $(BUILD)/CMakeCache.txt ## Size a model to SCENE within MAX_ERROR, build that RTL, check it
+	@cmake --build $(BUILD) -j $(JOBS) --target zblend
+	@set -e; mkdir -p $(PLAN_DIR); \
+	$(ZBLEND) plan --scene $(SCENE) --max-error $(MAX_ERROR) $(PLAN_SIZE) --json $(PLAN_DIR)/plan.json; \
+	key() { sed -n "s/^ *\"$$1\": \"\{0,1\}\([^\",]*\)\"\{0,1\},\{0,1\}$$/\1/p" $(PLAN_DIR)/plan.json; }; \
+	d=$$(key ZBLEND_RTL_DEPTH_BITS); c=$$(key ZBLEND_RTL_COV_SAMPLES); t=$$(key ZBLEND_RTL_TILE); \
+	m=$$(key render_method); tree=build-plan-d$$d-c$$c-t$$t; \
+	if [ "$$c" != 16 ]; then echo "plan-rtl: $$m at $$c coverage samples: 'zblend render' draws" \
+	  "16-sample frames, so it cannot drive that RTL (docs/sizing.md)" >&2; exit 1; fi; \
+	echo "plan-rtl: $$m on zb_rop DEPTH_BITS=$$d COV_SAMPLES=$$c TILE_W=TILE_H=$$t in $$tree"; \
+	verilator $(LINT_ARGS) -GDEPTH_BITS=$$d -GCOV_SAMPLES=$$c -GTILE_W=$$t -GTILE_H=$$t; \
+	echo "plan-rtl: zb_rop lints clean (verilator -Wall) with those parameters"; \
+	[ -f $$tree/CMakeCache.txt ] || cmake -S . -B $$tree -DCMAKE_BUILD_TYPE=Release \
+	  -DZBLEND_RTL_DEPTH_BITS=$$d -DZBLEND_RTL_COV_SAMPLES=$$c -DZBLEND_RTL_TILE=$$t >/dev/null; \
+	cmake --build $$tree -j $(JOBS) --target zblend; \
+	$$tree/zblend render --scene $(SCENE) --method $$m --backend both --depth-bits $$d \
+	  $(PLAN_SIZE) --out-dir $(PLAN_DIR); \
+	awk -F, -v m=$$m 'NR == 1 { for (i = 1; i <= NF; i++) col[$$i] = i; next } \
+	  $$1 == m { s = $$col["rtl_cycles"]; io = $$col["rtl_tile_io_cycles"]; \
+	    printf "plan-rtl: RTL cycles %d streaming + %d tile I/O = %d; %s mismatches\n", \
+	      s, io, s + io, $$col["mismatches"] }' $(PLAN_DIR)/summary.csv; \
+	echo "plan-rtl: the scene touches $$(key scene_tiles_touched) of the frame's" \
+	  "$$(key frame_tiles) tiles of $${t}x$$t; its passes load $$(key pass_tiles_loaded);" \
+	  "the cost model expected $$(key rtl_cycles_expected) RTL cycles"
+
 COV_BUILD ?= build-cov
 COV_DIR   := out/coverage
 COV_TB    := $(COV_BUILD)/zblend_tb --coverage-out

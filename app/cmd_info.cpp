@@ -1,9 +1,16 @@
 // zblend methods | scenes | plan: what the tool can run.
+#include <iterator>
+
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include "commands.h"
+#include "image.h"
 #include "passes.h"
+#include "scene_suite.h"
 #include "scenes.h"
+#include "sizing.h"
+#include "sizing_report.h"
 
 namespace zb::app {
 
@@ -17,11 +24,40 @@ void print_methods() {
              "every fragment sorted per pixel by depth, composited in floating point");
 }
 
+// The built-ins outside the suite, then the suite by family: one line per scene, the layers
+// family as one line with its name pattern and sampled values.
 void print_scenes() {
-  fmt::print("{:<14} {:>9}  {}\n", "scene", "triangles", "what it shows");
+  constexpr const char* kRow = "{:<16} {:>9}  {:<16}  {}\n";
+  auto in_suite = [](const std::string& name) {
+    for (const SuiteScene& e : scene_suite())
+      if (e.name == name) return true;
+    return false;
+  };
+  fmt::print("{:<16} {:>9}  {}\n", "scene", "triangles", "what it shows");
   for (const SceneInfo& s : builtin_scenes())
-    fmt::print("{:<14} {:>9}  {}\n", s.name, builtin_scene(s.name)->triangle_count(),
-               s.description);
+    if (!in_suite(s.name))
+      fmt::print("{:<16} {:>9}  {}\n", s.name, builtin_scene(s.name)->triangle_count(),
+                 s.description);
+
+  fmt::print("\nthe lab's suite (zblend lab), by family:\n");
+  fmt::print(kRow, "scene", "triangles", "family", "built to break");
+  bool layers_listed = false;
+  for (const SuiteScene& e : scene_suite()) {
+    if (e.family != "layers") {
+      fmt::print(kRow, e.name, builtin_scene(e.name)->triangle_count(), e.family, e.description);
+    } else if (!layers_listed) {
+      layers_listed = true;
+      const auto n = std::begin(kSuiteLayers), p = std::begin(kSuiteAlphaPercent);
+      const std::string tris = fmt::format("{}-{}", layers_scene(n[0], 0.5f).triangle_count(),
+                                           layers_scene(std::end(kSuiteLayers)[-1], 0.5f)
+                                               .triangle_count());
+      fmt::print(kRow, "layers-N-aP", tris, e.family,
+                 fmt::format("N layers of alpha P% near to far, N = {}, P = {}: one-pass blending "
+                             "reverses them, depth-peel-K keeps the nearest K",
+                             fmt::join(n, std::end(kSuiteLayers), ", "),
+                             fmt::join(p, std::end(kSuiteAlphaPercent), ", ")));
+    }
+  }
 }
 
 void print_plan(const std::string& method) {
@@ -48,16 +84,85 @@ void print_plan(const std::string& method) {
   }
 }
 
+// zblend plan --scene S --max-error E: a model sized to the scene (lab/sizing.h).
+struct SizingCommand {
+  std::string scene;
+  std::string camera;
+  int width = 640;
+  int height = 480;
+  int max_error = 0;
+  std::string json;
+};
+
+void run_sizing(const SizingCommand& c) {
+  if (c.max_error < 0 || c.max_error > 255)
+    throw UsageError(fmt::format("--max-error: {} is out of range (0 to 255, 8-bit units)",
+                                 c.max_error));
+  const Viewport vp = check_viewport(c.width, c.height, kDefaultDepthBits);
+  if (!c.json.empty()) check_writable("--json", c.json, ".json");
+  const Scene scene = resolve_scene(c.scene, c.camera);
+  SizingOptions o;
+  o.width = vp.width;
+  o.height = vp.height;
+  o.max_error = c.max_error;
+  o.progress = [](const std::string& line) { fmt::print(stderr, "{}\n", line); };
+  const SizingResult r = size_model(scene, o);
+  fmt::print("{}", sizing_text(c.scene, o, r));
+  if (!c.json.empty()) write_or_fail(write_file_atomic(c.json, sizing_json(c.scene, o, r)));
+  if (!r.found)
+    throw VerificationError(fmt::format("no method meets --max-error {}: the best achievable "
+                                        "error is {} ({})", c.max_error,
+                                        r.choice.beyond_rounding, r.choice.method));
+}
+
+// The plan command's two forms: --method alone, or --scene with --max-error.
+void run_plan_command(const CLI::App& cmd, const std::string& method, const SizingCommand& c) {
+  if (cmd.count("--method")) {
+    for (const char* o : {"--scene", "--max-error", "--camera", "--width", "--height", "--json"})
+      if (cmd.count(o)) throw UsageError(fmt::format("{}: goes with --scene, not --method", o));
+    print_plan(method);
+    return;
+  }
+  if (!cmd.count("--scene")) {
+    for (const char* o : {"--max-error", "--camera", "--width", "--height", "--json"})
+      if (cmd.count(o)) throw UsageError(fmt::format("--scene: needed with {}", o));
+    throw UsageError("give --method M (a method's passes) or --scene S --max-error E (a model "
+                     "sized to the scene)");
+  }
+  if (!cmd.count("--max-error"))
+    throw UsageError("--max-error: needed with --scene (the error bound, 0 to 255)");
+  run_sizing(c);
+}
+
 }  // namespace
 
 void add_info_commands(CLI::App& app) {
   app.add_subcommand("methods", "List the transparency methods (pass plans)")
       ->callback(print_methods);
-  app.add_subcommand("scenes", "List the built-in scenes")->callback(print_scenes);
-  auto* plan = app.add_subcommand("plan", "Show the passes of a method and their pipeline state");
+  app.add_subcommand("scenes", "List the built-in scenes and the lab's scene suite by family")
+      ->callback(print_scenes);
+  auto* plan = app.add_subcommand(
+      "plan", "Show the passes of a method and their pipeline state (--method), or size a model "
+              "to a scene (--scene, --max-error): the cheapest method and narrowest depth bits, "
+              "coverage samples and tile size within the error, verified (docs/sizing.md)");
   auto method = std::make_shared<std::string>();
-  plan->add_option("--method,-m", *method, "Method name (see 'zblend methods')")->required();
-  plan->callback([method] { print_plan(*method); });
+  auto sizing = std::make_shared<SizingCommand>();
+  plan->add_option("--method,-m", *method, "Method name (see 'zblend methods'): show its passes");
+  plan->add_option("--scene,-s", sizing->scene,
+                   "Size a model to this scene: built-in (see 'zblend scenes') or a .obj, .gltf "
+                   "or .glb file");
+  plan->add_option("--max-error,-e", sizing->max_error,
+                   "With --scene: the bound E, 8-bit units (0 to 255), on the largest channel "
+                   "error against 'reference' beyond the 8-bit blend's rounding (0: as close as "
+                   "compositing every layer in order gets)");
+  plan->add_option("--camera", sizing->camera,
+                   "With --scene: camera eye=x,y,z,at=x,y,z,fov=deg[,up=x,y,z]");
+  plan->add_option("--width,-W", sizing->width, "With --scene: frame width in pixels")
+      ->capture_default_str();
+  plan->add_option("--height,-H", sizing->height, "With --scene: frame height in pixels")
+      ->capture_default_str();
+  plan->add_option("--json", sizing->json, "With --scene: the report as JSON (make plan-rtl)");
+  plan->callback([plan, method, sizing] { run_plan_command(*plan, *method, *sizing); });
 }
 
 }  // namespace zb::app

@@ -25,6 +25,8 @@ struct VerificationError : std::runtime_error {
 void add_render_command(CLI::App& app);
 void add_trace_command(CLI::App& app);
 void add_info_commands(CLI::App& app);  // methods, scenes, plan
+void add_lab_command(CLI::App& app);
+void add_sweep_command(CLI::App& app);
 
 // What every subcommand that renders takes: the scene, its camera and the frame.
 struct FrameOptions {

@@ -12,6 +12,8 @@ int main(int argc, char** argv) {
   zb::app::add_render_command(app);
   zb::app::add_trace_command(app);
   zb::app::add_info_commands(app);
+  zb::app::add_lab_command(app);
+  zb::app::add_sweep_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

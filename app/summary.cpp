@@ -28,7 +28,8 @@ std::string psnr_text(double psnr) {
 std::string summary_csv(const std::vector<MethodRun>& runs, int depth_bits) {
   std::string csv =
       "method,passes,fragments,reads,writes,bytes_read,bytes_written,rmse,psnr_db,max_abs,"
-      "share_over_2,share_over_16,host_ms,rtl_cycles,rtl_tile_io_cycles,mismatches\n";
+      "share_over_2,share_over_16,delta_e_mean,delta_e_max,host_ms,rtl_cycles,"
+      "rtl_tile_io_cycles,mismatches\n";
   for (const MethodRun& r : runs) {
     std::string cost = ",,,,,";  // passes, fragments, reads, writes, bytes: none for reference
     std::string rtl = ",,";
@@ -41,17 +42,19 @@ std::string summary_csv(const std::vector<MethodRun>& runs, int depth_bits) {
         rtl = fmt::format("{},{},{}", s.cycles, r.tile_io_cycles,
                           r.compared ? std::to_string(r.mismatches) : "");
     }
-    csv += fmt::format("{},{},{:.4f},{},{},{:.6f},{:.6f},{:.1f},{}\n", r.method, cost,
-                       r.error.rmse, psnr_text(r.error.psnr), r.error.max_abs,
-                       r.error.share_over_2, r.error.share_over_16, r.host_ms, rtl);
+    csv += fmt::format("{},{},{:.4f},{},{},{:.6f},{:.6f},{:.4f},{:.4f},{:.1f},{}\n", r.method,
+                       cost, r.error.rmse, psnr_text(r.error.psnr), r.error.max_abs,
+                       r.error.share_over_2, r.error.share_over_16, r.error.delta_e_mean,
+                       r.error.delta_e_max, r.host_ms, rtl);
   }
   return csv;
 }
 
 void print_table(const std::vector<MethodRun>& runs) {
   const bool rtl = std::any_of(runs.begin(), runs.end(), [](const MethodRun& r) { return r.rtl; });
-  fmt::print("{:<16} {:>6} {:>10} {:>10} {:>10} {:>8} {:>8} {:>5} {:>8}", "method", "passes",
-             "fragments", "reads", "writes", "rmse", "psnr_dB", "max", ">2/255");
+  fmt::print("{:<16} {:>6} {:>10} {:>10} {:>10} {:>8} {:>8} {:>5} {:>8} {:>7}", "method",
+             "passes", "fragments", "reads", "writes", "rmse", "psnr_dB", "max", ">2/255",
+             "dE2000");
   fmt::print(rtl ? " {:>10} {:>10}\n" : "\n", "rtl_cycles", "mismatches");
   for (const MethodRun& r : runs) {
     if (r.total)
@@ -60,8 +63,8 @@ void print_table(const std::vector<MethodRun>& runs) {
                  r.total->color_writes + r.total->depth_writes);
     else
       fmt::print("{:<16} {:>6} {:>10} {:>10} {:>10}", r.method, "-", "-", "-", "-");
-    fmt::print(" {:>8.3f} {:>8} {:>5} {:>7.2f}%", r.error.rmse, psnr_text(r.error.psnr),
-               r.error.max_abs, 100.0 * r.error.share_over_2);
+    fmt::print(" {:>8.3f} {:>8} {:>5} {:>7.2f}% {:>7.3f}", r.error.rmse, psnr_text(r.error.psnr),
+               r.error.max_abs, 100.0 * r.error.share_over_2, r.error.delta_e_mean);
     if (rtl && r.total && r.rtl)
       fmt::print(" {:>10} {:>10}\n", r.total->cycles,
                  r.compared ? std::to_string(r.mismatches) : "-");
@@ -84,7 +87,9 @@ std::string stats_json(const std::vector<MethodRun>& runs, int depth_bits,
           {"psnr_db", std::isinf(e.psnr) ? nlohmann::json(nullptr) : nlohmann::json(e.psnr)},
           {"max_abs", e.max_abs},
           {"share_over_2", e.share_over_2},
-          {"share_over_16", e.share_over_16}}}};
+          {"share_over_16", e.share_over_16},
+          {"delta_e_mean", e.delta_e_mean},
+          {"delta_e_max", e.delta_e_max}}}};
     if (r.total) {
       const PassStats& s = *r.total;
       m["passes"] = r.passes;

@@ -1,8 +1,11 @@
 #include "metrics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+
+#include "color_difference.h"
 
 namespace zb {
 
@@ -10,7 +13,7 @@ ImageError compare_images(const Framebuffer& image, const Framebuffer& reference
   ImageError e;
   const size_t n = image.color.size();
   if (n == 0 || n != reference.color.size()) return e;
-  double sum_sq = 0;
+  double sum_sq = 0, sum_de = 0;
   size_t over2 = 0, over16 = 0;
   for (size_t i = 0; i < n; ++i) {
     const Rgba8 a = image.color[i], b = reference.color[i];
@@ -23,13 +26,41 @@ ImageError compare_images(const Framebuffer& image, const Framebuffer& reference
     e.max_abs = std::max(e.max_abs, worst);
     over2 += worst > 2;
     over16 += worst > 16;
+    if (worst > 0) {
+      const double de = delta_e2000(a, b);
+      sum_de += de;
+      e.delta_e_max = std::max(e.delta_e_max, de);
+    }
   }
   e.rmse = std::sqrt(sum_sq / (3.0 * double(n)));
   e.psnr = e.rmse == 0 ? std::numeric_limits<double>::infinity()
                        : 20.0 * std::log10(255.0 / e.rmse);
   e.share_over_2 = double(over2) / double(n);
   e.share_over_16 = double(over16) / double(n);
+  e.delta_e_mean = sum_de / double(n);
   return e;
+}
+
+Rgba8 error_color(double delta_e) {
+  // Evenly spaced stops of a dark-to-light ramp: the eye reads brighter as worse.
+  static constexpr double kStops[][3] = {
+      {0, 0, 0}, {110, 25, 120}, {215, 45, 40}, {250, 155, 20}, {252, 250, 170}};
+  constexpr int kLast = 4;
+  const double t = std::clamp(delta_e / kErrorImageFullScale, 0.0, 1.0) * kLast;
+  const int i = std::min(static_cast<int>(t), kLast - 1);
+  const double f = t - i;
+  auto mix = [&](int c) {
+    return static_cast<uint8_t>(std::lround(kStops[i][c] + f * (kStops[i + 1][c] - kStops[i][c])));
+  };
+  return {mix(0), mix(1), mix(2), 255};
+}
+
+Framebuffer error_image(const Framebuffer& image, const Framebuffer& reference) {
+  Framebuffer out(reference.width, reference.height, reference.depth_bits, Rgba8{0, 0, 0, 255});
+  if (image.color.size() != reference.color.size()) return out;
+  for (size_t i = 0; i < out.color.size(); ++i)
+    out.color[i] = error_color(delta_e2000(image.color[i], reference.color[i]));
+  return out;
 }
 
 }  // namespace zb

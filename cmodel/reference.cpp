@@ -1,7 +1,10 @@
 #include "reference.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace zb {
 namespace {
@@ -10,27 +13,34 @@ uint8_t to_unorm8(double v) {
   return static_cast<uint8_t>(std::lround(std::clamp(v, 0.0, 255.0)));
 }
 
-}  // namespace
+using Rgb = std::array<double, 3>;
+
+// The exact composite of every pixel, unrounded, and each pixel's nearest depth (the far depth
+// where nothing covers it).
+struct ExactFrame {
+  std::vector<Rgb> color;
+  std::vector<uint32_t> depth;
+};
 
 // Per pixel: fragments sorted by unrounded depth, ties in submit order (the earlier one counts
 // as nearer, as depth LESS keeps it). The nearest opaque fragment (or the background) is the
 // base; the transparent fragments in front of it are composited over it back to front,
-// c = a*s + (1-a)*c with a = alpha/255, in double, rounded to nearest once at the end.
-Framebuffer render_reference(const RasterizedScene& rs) {
+// c = a*s + (1-a)*c with a = alpha/255, in double.
+ExactFrame composite_exact(const RasterizedScene& rs) {
   const Viewport& vp = rs.viewport;
-  Framebuffer fb(vp.width, vp.height, vp.depth_bits, rs.background);
-  const size_t pixels = fb.color.size();
+  const size_t pixels = static_cast<size_t>(vp.width) * vp.height;
+  const Rgba8 bg = rs.background;
+  ExactFrame out{std::vector<Rgb>(pixels, Rgb{double(bg.r), double(bg.g), double(bg.b)}),
+                 std::vector<uint32_t>(pixels, depth_max(vp.depth_bits))};
+  auto index = [&](const Fragment& f) { return static_cast<size_t>(f.y) * vp.width + f.x; };
 
   // Bucket fragment indices by pixel, keeping submit order within a pixel.
   std::vector<uint32_t> start(pixels + 1, 0);
-  for (const Fragment& f : rs.fragments) ++start[fb.index(f.x, f.y) + 1];
+  for (const Fragment& f : rs.fragments) ++start[index(f) + 1];
   for (size_t p = 0; p < pixels; ++p) start[p + 1] += start[p];
   std::vector<uint32_t> order(rs.fragments.size());
   std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-  for (uint32_t i = 0; i < rs.fragments.size(); ++i) {
-    const Fragment& f = rs.fragments[i];
-    order[fill[fb.index(f.x, f.y)]++] = i;
-  }
+  for (uint32_t i = 0; i < rs.fragments.size(); ++i) order[fill[index(rs.fragments[i])]++] = i;
 
   for (size_t p = 0; p < pixels; ++p) {
     auto first = order.begin() + start[p];
@@ -39,8 +49,8 @@ Framebuffer render_reference(const RasterizedScene& rs) {
     std::stable_sort(first, last,
                      [&](uint32_t a, uint32_t b) { return rs.z_exact[a] < rs.z_exact[b]; });
     auto base = std::find_if(first, last, [&](uint32_t i) { return rs.fragments[i].color.a == 255; });
-    const Rgba8 under = base == last ? rs.background : rs.fragments[*base].color;
-    double c[3] = {double(under.r), double(under.g), double(under.b)};
+    const Rgba8 under = base == last ? bg : rs.fragments[*base].color;
+    Rgb c{double(under.r), double(under.g), double(under.b)};
     for (auto it = base; it != first;) {
       const Rgba8 s = rs.fragments[*--it].color;
       const double a = s.a / 255.0;
@@ -48,8 +58,54 @@ Framebuffer render_reference(const RasterizedScene& rs) {
       c[1] = a * s.g + (1.0 - a) * c[1];
       c[2] = a * s.b + (1.0 - a) * c[2];
     }
+    out.color[p] = c;
+    out.depth[p] = rs.fragments[*first].z;
+  }
+  return out;
+}
+
+}  // namespace
+
+Framebuffer render_reference(const RasterizedScene& rs) {
+  const Viewport& vp = rs.viewport;
+  Framebuffer fb(vp.width, vp.height, vp.depth_bits, rs.background);
+  const ExactFrame exact = composite_exact(rs);
+  for (size_t p = 0; p < fb.color.size(); ++p) {
+    const Rgb& c = exact.color[p];
     fb.color[p] = {to_unorm8(c[0]), to_unorm8(c[1]), to_unorm8(c[2]), 255};
-    fb.depth[p] = rs.fragments[*first].z;
+  }
+  fb.depth = exact.depth;
+  return fb;
+}
+
+Framebuffer render_reference_supersampled(const Scene& scene, const Viewport& vp, int factor) {
+  if (factor < 1 || vp.width > kMaxFrameSize / factor || vp.height > kMaxFrameSize / factor)
+    throw std::invalid_argument("supersampling factor " + std::to_string(factor) +
+                                " outside 1.." + std::to_string(kMaxFrameSize) +
+                                " / frame size");
+  Viewport big = vp;
+  big.width = vp.width * factor;
+  big.height = vp.height * factor;
+  const ExactFrame exact = composite_exact(rasterize_scene(scene, big));
+
+  Framebuffer fb(vp.width, vp.height, vp.depth_bits, scene.background, vp.coverage_samples);
+  const double samples = double(factor) * factor;
+  for (int y = 0; y < vp.height; ++y) {
+    for (int x = 0; x < vp.width; ++x) {
+      Rgb sum{0, 0, 0};
+      uint32_t nearest = depth_max(vp.depth_bits);
+      for (int sy = 0; sy < factor; ++sy) {
+        for (int sx = 0; sx < factor; ++sx) {
+          const size_t s = static_cast<size_t>(y * factor + sy) * big.width + x * factor + sx;
+          for (int c = 0; c < 3; ++c) sum[c] += exact.color[s][c];
+          nearest = std::min(nearest, exact.depth[s]);
+        }
+      }
+      const size_t p = fb.index(x, y);
+      fb.color[p] = {to_unorm8(sum[0] / samples), to_unorm8(sum[1] / samples),
+                     to_unorm8(sum[2] / samples), 255};
+      fb.depth[p] = nearest;
+    }
   }
   return fb;
 }

@@ -4,9 +4,17 @@
 
 #include "framebuffer.h"
 #include "render.h"
+#include "scene.h"
 
 namespace zb {
 
 Framebuffer render_reference(const RasterizedScene& rs);
+
+// The reference for anti-aliased methods: the exact reference at `factor` times the width and
+// height, box-filtered down to `vp`. Each pixel averages the factor x factor sub-pixel colours
+// (a regular grid of sample points), composited in double and rounded once; its depth is the
+// nearest of its sub-pixels'. Coverage stays 0. factor 1 equals render_reference. Throws
+// std::invalid_argument when factor < 1 or the enlarged frame exceeds kMaxFrameSize.
+Framebuffer render_reference_supersampled(const Scene& scene, const Viewport& vp, int factor);
 
 }  // namespace zb

@@ -5,6 +5,10 @@
 // their back faces through their front faces.
 #include "scenes.h"
 
+#include "failure_scenes.h"
+#include "scene_build.h"
+#include "scene_suite.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -15,70 +19,9 @@
 
 namespace zb {
 
+using namespace build;
+
 namespace {
-
-constexpr float kPi = glm::pi<float>();
-
-void require(bool ok, const char* what) {
-  if (!ok) throw std::invalid_argument(what);
-}
-
-uint32_t add_vertex(Mesh& m, glm::vec3 p, glm::vec3 n) {
-  m.positions.push_back(p);
-  m.normals.push_back(glm::normalize(n));
-  return static_cast<uint32_t>(m.positions.size() - 1);
-}
-
-// Two triangles of the quad a-b-c-d, given counter-clockwise seen from its front.
-void add_quad(Mesh& m, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
-  m.triangles.emplace_back(a, b, c);
-  m.triangles.emplace_back(a, c, d);
-}
-
-// Appends `src` to `dst` (indices rebased).
-void append(Mesh& dst, const Mesh& src, const glm::mat4& xf = glm::mat4(1.0f)) {
-  const auto base = static_cast<uint32_t>(dst.positions.size());
-  const glm::mat3 nxf = glm::transpose(glm::inverse(glm::mat3(xf)));
-  for (size_t i = 0; i < src.positions.size(); ++i) {
-    dst.positions.push_back(glm::vec3(xf * glm::vec4(src.positions[i], 1.0f)));
-    dst.normals.push_back(glm::normalize(nxf * src.normals[i]));
-  }
-  for (const glm::uvec3& t : src.triangles) dst.triangles.push_back(t + glm::uvec3(base));
-}
-
-glm::mat4 translate(glm::vec3 t) { return glm::translate(glm::mat4(1.0f), t); }
-glm::mat4 rotate(float deg, glm::vec3 axis) {
-  return glm::rotate(glm::mat4(1.0f), glm::radians(deg), axis);
-}
-
-// Sets the camera's near and far planes tightly around the scene: the nearest and farthest
-// vertex along the view direction, widened by 2% of the depth range (at least 0.01) each side,
-// so that the depth buffer's precision is spent on the scene.
-void fit_depth_range(Scene& s) {
-  const glm::vec3 fwd = glm::normalize(s.camera.at - s.camera.eye);
-  float lo = std::numeric_limits<float>::max();
-  float hi = std::numeric_limits<float>::lowest();
-  for (const Object& o : s.objects) {
-    for (const glm::vec3& p : o.mesh.positions) {
-      const glm::vec3 w = glm::vec3(o.transform * glm::vec4(p, 1.0f));
-      const float d = glm::dot(w - s.camera.eye, fwd);
-      lo = std::min(lo, d);
-      hi = std::max(hi, d);
-    }
-  }
-  const float margin = std::max(0.01f, 0.02f * (hi - lo));
-  s.camera.near = std::max(0.01f, lo - margin);
-  s.camera.far = hi + margin;
-}
-
-uint32_t add_material(Scene& s, const char* name, Rgba8 c) {
-  s.materials.push_back(Material{name, c});
-  return static_cast<uint32_t>(s.materials.size() - 1);
-}
-
-void add_object(Scene& s, const char* name, Mesh mesh, uint32_t material, glm::mat4 xf) {
-  s.objects.push_back(Object{name, std::move(mesh), material, xf});
-}
 
 // The CAD use case of US 7,834,879: an opaque part inside two nested transparent shells.
 // Submitted outer shell, inner shell, part: front to back, the worst order for one-pass blending.
@@ -236,6 +179,25 @@ const std::vector<Builtin>& builtins() {
       {{"parts", "opaque solid parts for hidden-line: plates tilted 0, 60, 85 and 89 degrees to "
                  "the view, overlapping blocks, a cube in a transparent ball"},
        parts_scene},
+      // The lab suite's own scenes (failure_scenes.h) and one of the layers family, so that
+      // the testbench's scenes suite runs them through the RTL too.
+      {{"crossing-quads", "breaks unsorted, three-pass, back-front, facing-additive: three "
+                          "transparent quads cut through each other, so no submit order is right"},
+       crossing_quads_scene},
+      {{"glass-torus", "breaks back-front: a transparent torus seen 14 degrees above its plane is "
+                       "4 layers deep, front faces of the far arc behind back faces of the near"},
+       glass_torus_scene},
+      {{"coplanar", "breaks coverage-aa and one-pass blending: boxes drawn twice in two colours "
+                    "(opaque, transparent) and a decal, at equal depths that submit order decides"},
+       coplanar_scene},
+      {{"particles", "breaks depth-peel-2/4/8 and one-pass blending: 600 transparent tetrahedra "
+                     "in random order, 40 or more layers at the centre"},
+       particles_scene},
+      {{"seam", "breaks coverage-aa: one coverage count per pixel lets the black backdrop leak "
+                "through the shared edges of an opaque tessellated sphere"},
+       seam_scene},
+      {{"layers-16-a50", layers_scene(16, 0.5f).description},
+       [] { return layers_scene(16, 0.5f); }},
   };
   return kBuiltins;
 }
@@ -260,7 +222,7 @@ std::optional<Scene> builtin_scene(const std::string& name) {
       return s;
     }
   }
-  return std::nullopt;
+  return suite_scene(name);
 }
 
 Mesh make_quad(float half_w, float half_h) {
@@ -275,22 +237,50 @@ Mesh make_quad(float half_w, float half_h) {
   return m;
 }
 
-Mesh make_box(glm::vec3 half_extent) {
+namespace {
+
+// A box face: outward normal n and in-plane axes u, v with u x v = n, so that the corners
+// -u-v, +u-v, +u+v, -u+v run counter-clockwise seen from outside.
+struct BoxFace {
+  glm::vec3 n, u, v;
+};
+constexpr int kFaceZ = 4;  // index of the face +z in kBoxFaces
+const BoxFace kBoxFaces[6] = {
+    {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},   {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
+    {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}},   {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
+    {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},   {{0, 0, -1}, {0, 1, 0}, {1, 0, 0}},
+};
+
+// The cells [i0, i1) x [j0, j1) of face f cut into cells x cells. Every coordinate is
+// +-half_extent or -1 + 2 k / cells times it, computed the same way for every face and cell,
+// so corners shared by faces or by two calls are bit-equal.
+void add_face_cells(Mesh& m, const BoxFace& f, glm::vec3 half_extent, int cells, int i0, int i1,
+                    int j0, int j1) {
+  auto at = [cells](int k) { return -1.0f + 2.0f * float(k) / float(cells); };
+  const auto base = static_cast<uint32_t>(m.positions.size());
+  const int cols = i1 - i0 + 1;
+  for (int j = j0; j <= j1; ++j)
+    for (int i = i0; i <= i1; ++i)
+      add_vertex(m, (f.n + at(i) * f.u + at(j) * f.v) * half_extent, f.n);
+  auto idx = [&](int i, int j) { return base + static_cast<uint32_t>((j - j0) * cols + (i - i0)); };
+  for (int j = j0; j < j1; ++j)
+    for (int i = i0; i < i1; ++i)
+      add_quad(m, idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
+}
+
+void require_box(glm::vec3 half_extent, int cells) {
   require(half_extent.x > 0.0f && half_extent.y > 0.0f && half_extent.z > 0.0f,
           "make_box: half extents must be positive");
-  // Each face: outward normal n and in-plane axes u, v with u x v = n, so that the corners
-  // -u-v, +u-v, +u+v, -u+v run counter-clockwise seen from outside.
-  struct Face {
-    glm::vec3 n, u, v;
-  };
-  static const Face kFaces[6] = {
-      {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},   {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
-      {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}},   {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
-      {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},   {{0, 0, -1}, {0, 1, 0}, {1, 0, 0}},
-  };
+  require(cells >= 1, "make_grid_box: needs at least one cell");
+}
+
+}  // namespace
+
+Mesh make_box(glm::vec3 half_extent) {
+  require_box(half_extent, 1);
   static const glm::vec2 kCorners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
   Mesh m;
-  for (const Face& f : kFaces) {
+  for (const BoxFace& f : kBoxFaces) {
     uint32_t idx[4];
     for (int k = 0; k < 4; ++k) {
       // Every coordinate is exactly +-half_extent, so corners shared by faces are bit-equal.
@@ -298,6 +288,38 @@ Mesh make_box(glm::vec3 half_extent) {
       idx[k] = add_vertex(m, sign * half_extent, f.n);
     }
     add_quad(m, idx[0], idx[1], idx[2], idx[3]);
+  }
+  return m;
+}
+
+Mesh make_grid_box(glm::vec3 half_extent, int cells) {
+  require_box(half_extent, cells);
+  Mesh m;
+  for (const BoxFace& f : kBoxFaces) add_face_cells(m, f, half_extent, cells, 0, cells, 0, cells);
+  return m;
+}
+
+Mesh make_box_face_cells(glm::vec3 half_extent, int cells, int i0, int i1, int j0, int j1) {
+  require_box(half_extent, cells);
+  require(0 <= i0 && i0 < i1 && i1 <= cells && 0 <= j0 && j0 < j1 && j1 <= cells,
+          "make_box_face_cells: cells out of range");
+  Mesh m;
+  add_face_cells(m, kBoxFaces[kFaceZ], half_extent, cells, i0, i1, j0, j1);
+  return m;
+}
+
+Mesh make_tetrahedron(float radius) {
+  require(radius > 0.0f, "make_tetrahedron: radius must be positive");
+  // Alternate corners of a cube; each face listed counter-clockwise seen from outside.
+  const float k = radius / std::sqrt(3.0f);
+  const glm::vec3 c[4] = {{k, k, k}, {k, -k, -k}, {-k, k, -k}, {-k, -k, k}};
+  static const int kFaces[4][3] = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}};
+  Mesh m;
+  for (const auto& f : kFaces) {
+    const glm::vec3 n = glm::cross(c[f[1]] - c[f[0]], c[f[2]] - c[f[0]]);
+    const uint32_t a = add_vertex(m, c[f[0]], n), b = add_vertex(m, c[f[1]], n),
+                   d = add_vertex(m, c[f[2]], n);
+    m.triangles.emplace_back(a, b, d);
   }
   return m;
 }

@@ -10,6 +10,7 @@ packages=(
   clang libclang-rt-14-dev
   libtinyobjloader-dev libtinygltf-dev assimp-testmodels glmark2-data
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
+  python3-matplotlib
 )
 
 missing=()

@@ -14,11 +14,16 @@ namespace zb {
 
 class CoverageTotals;
 
-// Mirrors of zb_rop's parameters; tb/rtl_rop.cpp static_asserts them against the model.
-constexpr int kRtlTileW = 64;
-constexpr int kRtlTileH = 64;
-constexpr int kRtlDepthBits = 24;
-constexpr int kRtlCoverageSamples = 16;  // COV_SAMPLES
+// Mirrors of zb_rop's parameters; tb/rtl_rop.cpp static_asserts them against the model. CMake
+// defines them from its cache options ZBLEND_RTL_* (the same values it gives Verilator as -G
+// parameters) for every target that links zbtb.
+#if !defined(ZBLEND_RTL_DEPTH_BITS) || !defined(ZBLEND_RTL_COV_SAMPLES) || !defined(ZBLEND_RTL_TILE)
+#error "ZBLEND_RTL_DEPTH_BITS, _COV_SAMPLES and _TILE come from CMake: link zbtb"
+#endif
+constexpr int kRtlTileW = ZBLEND_RTL_TILE;
+constexpr int kRtlTileH = ZBLEND_RTL_TILE;
+constexpr int kRtlDepthBits = ZBLEND_RTL_DEPTH_BITS;
+constexpr int kRtlCoverageSamples = ZBLEND_RTL_COV_SAMPLES;  // COV_SAMPLES
 
 struct RtlOptions {
   double backpressure = 0;  // probability per cycle of stall_i, and (independently) of a valid gap

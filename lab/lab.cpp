@@ -1,0 +1,295 @@
+#include "lab.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <fmt/core.h>
+
+#include "passes.h"
+#include "reference.h"
+#include "render.h"
+#include "rop.h"
+#include "rtl_rop.h"
+
+namespace zb::lab {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr int kHostTimeRuns = 3;
+
+double ms_since(Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+PassStats sum_passes(const RenderResult& r) {
+  PassStats total;
+  for (const PassStats& p : r.passes) total += p;
+  return total;
+}
+
+uint64_t differing_pixels(const Framebuffer& a, const Framebuffer& b) {
+  if (a.color.size() != b.color.size()) return std::max(a.color.size(), b.color.size());
+  uint64_t n = 0;
+  for (size_t i = 0; i < a.color.size(); ++i) n += !(a.color[i] == b.color[i]);
+  return n;
+}
+
+std::string psnr_text(double psnr) { return std::isinf(psnr) ? "inf" : fmt::format("{:.3f}", psnr); }
+
+std::string error_cells(const ImageError& e) {
+  return fmt::format("{:.4f},{},{},{:.6f},{:.6f},{:.4f},{:.4f}", e.rmse, psnr_text(e.psnr),
+                     e.max_abs, e.share_over_2, e.share_over_16, e.delta_e_mean, e.delta_e_max);
+}
+
+}  // namespace
+
+const char* to_string(FairReference r) {
+  return r == FairReference::kExact ? "exact" : "supersampled";
+}
+
+FairReference fair_reference(const std::string& method) {
+  const PassPlan* plan = find_plan(method);
+  if (!plan) return FairReference::kExact;
+  const bool aa = std::any_of(plan->passes.begin(), plan->passes.end(),
+                              [](const PassState& p) { return is_coverage_pass(p.rop); });
+  return aa ? FairReference::kSupersampled : FairReference::kExact;
+}
+
+uint64_t bytes_read(const PassStats& s, int depth_bits) {
+  return s.color_reads * 4 + s.depth_reads * static_cast<uint64_t>((depth_bits + 7) / 8);
+}
+
+uint64_t bytes_written(const PassStats& s, int depth_bits) {
+  return s.color_writes * 4 + s.depth_writes * static_cast<uint64_t>((depth_bits + 7) / 8);
+}
+
+SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
+  const auto start = Clock::now();
+  const Viewport& vp = o.viewport;
+  SceneRun run;
+  const Scene scene = ls.load();
+  const RasterizedScene rs = rasterize_scene(scene, vp);
+  run.triangles = rs.triangles.size();
+  run.fragments = rs.fragments.size();
+  double reference_ms = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < kHostTimeRuns; ++i) {
+    const auto t = Clock::now();
+    run.reference = render_reference(rs);
+    reference_ms = std::min(reference_ms, ms_since(t));
+  }
+  run.reference_ss = render_reference_supersampled(scene, vp, o.supersample);
+
+  for (const std::string& m : o.methods) {
+    LabRow row;
+    row.scene = ls.name;
+    row.family = ls.family;
+    row.method = m;
+    Framebuffer image;
+    if (const PassPlan* plan = find_plan(m)) {
+      // Host time: the best of three runs, as other work on the machine only ever adds to it.
+      RenderResult r;
+      row.host_ms = std::numeric_limits<double>::infinity();
+      for (int i = 0; i < kHostTimeRuns; ++i) {
+        GoldenRop golden;
+        const auto t = Clock::now();
+        r = render(rs, *plan, golden);
+        row.host_ms = std::min(row.host_ms, ms_since(t));
+      }
+      row.has_cost = true;
+      row.passes = plan->passes.size();
+      row.golden = sum_passes(r);
+      row.bytes_read = bytes_read(row.golden, vp.depth_bits);
+      row.bytes_written = bytes_written(row.golden, vp.depth_bits);
+      image = std::move(r.framebuffer);
+      if (o.rtl) {
+        RtlRop rtl;
+        const RenderResult rr = render(rs, *plan, rtl);
+        row.rtl_cycles = sum_passes(rr).cycles;
+        row.rtl_tile_io_cycles = rtl.tile_io_cycles();
+        row.rtl_mismatch_pixels = differing_pixels(rr.framebuffer, image);
+      }
+    } else if (m == kReferenceMethod) {
+      image = run.reference;
+      row.host_ms = reference_ms;
+    } else {
+      throw std::invalid_argument("unknown method '" + m + "'");
+    }
+    row.error = compare_images(image, run.reference);
+    row.error_ss = compare_images(image, run.reference_ss);
+    row.fair = fair_reference(m);
+    run.error_images.push_back(
+        error_image(image, row.fair == FairReference::kExact ? run.reference : run.reference_ss));
+    run.images.push_back(std::move(image));
+    run.rows.push_back(std::move(row));
+  }
+  run.ms = ms_since(start);
+  return run;
+}
+
+std::string lab_csv(const std::vector<LabRow>& rows) {
+  std::string csv =
+      "scene,family,method,passes,fragments,fragments_passed,color_reads,color_writes,"
+      "depth_reads,depth_writes,bytes_read,bytes_written,host_ms,rtl_cycles,rtl_tile_io_cycles,"
+      "rtl_mismatch_pixels,rmse,psnr_db,max_abs,share_over_2,share_over_16,delta_e_mean,"
+      "delta_e_max,ss_rmse,ss_psnr_db,ss_max_abs,ss_share_over_2,ss_share_over_16,"
+      "ss_delta_e_mean,ss_delta_e_max,fair_reference,fair_delta_e_mean,fair_rmse\n";
+  for (const LabRow& r : rows) {
+    const PassStats& s = r.golden;
+    const std::string cost =
+        r.has_cost ? fmt::format("{},{},{},{},{},{},{},{},{}", r.passes, s.fragments_in,
+                                 s.fragments_passed, s.color_reads, s.color_writes, s.depth_reads,
+                                 s.depth_writes, r.bytes_read, r.bytes_written)
+                   : ",,,,,,,,";
+    const std::string rtl = r.rtl_cycles ? fmt::format("{},{},{}", *r.rtl_cycles,
+                                                       r.rtl_tile_io_cycles, r.rtl_mismatch_pixels)
+                                         : ",,";
+    csv += fmt::format("{},{},{},{},{:.3f},{},{},{},{},{:.4f},{:.4f}\n", r.scene, r.family,
+                       r.method, cost, r.host_ms, rtl, error_cells(r.error),
+                       error_cells(r.error_ss), to_string(r.fair), r.fair_error().delta_e_mean,
+                       r.fair_error().rmse);
+  }
+  return csv;
+}
+
+std::vector<size_t> pareto_front(const std::vector<double>& x, const std::vector<double>& y) {
+  const size_t n = std::min(x.size(), y.size());
+  std::vector<size_t> front;
+  for (size_t i = 0; i < n; ++i) {
+    if (std::isnan(x[i]) || std::isnan(y[i])) continue;
+    bool dominated = false;
+    for (size_t j = 0; j < n && !dominated; ++j)
+      dominated = x[j] <= x[i] && y[j] <= y[i] && (x[j] < x[i] || y[j] < y[i]);
+    if (!dominated) front.push_back(i);
+  }
+  std::sort(front.begin(), front.end(), [&](size_t a, size_t b) {
+    return x[a] != x[b] ? x[a] < x[b] : y[a] < y[b];
+  });
+  return front;
+}
+
+namespace {
+
+// Means over one family's rows of one method.
+MethodSummary summarize_group(const std::string& family, const std::vector<const LabRow*>& rows) {
+  MethodSummary s;
+  s.family = family;
+  s.method = rows.front()->method;
+  s.scenes = rows.size();
+  double cycles = 0;
+  bool all_rtl = true;
+  for (const LabRow* r : rows) {
+    s.delta_e_mean += r->fair_error().delta_e_mean;
+    s.rmse += r->fair_error().rmse;
+    s.share_over_16 += r->fair_error().share_over_16;
+    s.fragments += double(r->golden.fragments_in);
+    s.bytes += double(r->bytes_read + r->bytes_written);
+    s.host_ms += r->host_ms;
+    all_rtl = all_rtl && r->rtl_cycles.has_value();
+    if (r->rtl_cycles) cycles += double(*r->rtl_cycles);
+  }
+  const double n = double(rows.size());
+  s.delta_e_mean /= n;
+  s.rmse /= n;
+  s.share_over_16 /= n;
+  s.fragments /= n;
+  s.bytes /= n;
+  s.host_ms /= n;
+  if (all_rtl) s.rtl_cycles = cycles / n;
+  return s;
+}
+
+// "all": each family counts once, however many scenes it has (the suite samples some
+// families, such as layers, far more densely than others).
+MethodSummary mean_of_families(const std::vector<const MethodSummary*>& fams) {
+  MethodSummary s;
+  s.family = kAllFamilies;
+  s.method = fams.front()->method;
+  double cycles = 0;
+  bool all_rtl = true;
+  for (const MethodSummary* f : fams) {
+    s.scenes += f->scenes;
+    s.delta_e_mean += f->delta_e_mean;
+    s.rmse += f->rmse;
+    s.share_over_16 += f->share_over_16;
+    s.fragments += f->fragments;
+    s.bytes += f->bytes;
+    s.host_ms += f->host_ms;
+    all_rtl = all_rtl && f->rtl_cycles.has_value();
+    if (f->rtl_cycles) cycles += *f->rtl_cycles;
+  }
+  const double n = double(fams.size());
+  s.delta_e_mean /= n;
+  s.rmse /= n;
+  s.share_over_16 /= n;
+  s.fragments /= n;
+  s.bytes /= n;
+  s.host_ms /= n;
+  if (all_rtl) s.rtl_cycles = cycles / n;
+  return s;
+}
+
+void mark_pareto(std::vector<MethodSummary>::iterator first,
+                 std::vector<MethodSummary>::iterator last) {
+  std::vector<double> cost, bytes, err;
+  for (auto it = first; it != last; ++it) {
+    cost.push_back(it->cost());
+    bytes.push_back(it->bytes);
+    err.push_back(it->delta_e_mean);
+  }
+  for (size_t i : pareto_front(cost, err)) first[i].pareto_cost = true;
+  for (size_t i : pareto_front(bytes, err)) first[i].pareto_bytes = true;
+}
+
+}  // namespace
+
+std::vector<MethodSummary> summarize(const std::vector<LabRow>& rows) {
+  std::vector<std::string> families, methods;
+  auto note = [](std::vector<std::string>& v, const std::string& s) {
+    if (std::find(v.begin(), v.end(), s) == v.end()) v.push_back(s);
+  };
+  for (const LabRow& r : rows) {
+    if (!r.has_cost) continue;
+    note(families, r.family);
+    note(methods, r.method);
+  }
+
+  std::vector<MethodSummary> out;
+  for (const std::string& family : families) {
+    const size_t begin = out.size();
+    for (const std::string& method : methods) {
+      std::vector<const LabRow*> group;
+      for (const LabRow& r : rows)
+        if (r.has_cost && r.method == method && r.family == family) group.push_back(&r);
+      if (!group.empty()) out.push_back(summarize_group(family, group));
+    }
+    mark_pareto(out.begin() + static_cast<std::ptrdiff_t>(begin), out.end());
+  }
+  const size_t begin = out.size();
+  for (const std::string& method : methods) {
+    std::vector<const MethodSummary*> per_family;
+    for (const MethodSummary& s : out)
+      if (s.method == method) per_family.push_back(&s);
+    out.push_back(mean_of_families(per_family));
+  }
+  mark_pareto(out.begin() + static_cast<std::ptrdiff_t>(begin), out.end());
+  return out;
+}
+
+std::string summary_csv(const std::vector<MethodSummary>& summaries) {
+  std::string csv =
+      "family,method,scenes,delta_e_mean,rmse,share_over_16,fragments,bytes,host_ms,rtl_cycles,"
+      "cost,cost_unit,pareto_cost,pareto_bytes\n";
+  for (const MethodSummary& s : summaries)
+    csv += fmt::format("{},{},{},{:.4f},{:.4f},{:.6f},{:.1f},{:.1f},{:.3f},{},{:.1f},{},{},{}\n",
+                       s.family, s.method, s.scenes, s.delta_e_mean, s.rmse, s.share_over_16,
+                       s.fragments, s.bytes, s.host_ms,
+                       s.rtl_cycles ? fmt::format("{:.1f}", *s.rtl_cycles) : "", s.cost(),
+                       s.rtl_cycles ? "rtl_cycles" : "fragments", int(s.pareto_cost),
+                       int(s.pareto_bytes));
+  return csv;
+}
+
+}  // namespace zb::lab

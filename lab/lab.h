@@ -1,0 +1,118 @@
+// The methods lab: every method on every scene of a suite, cost against error (docs/lab.md).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "backend.h"
+#include "framebuffer.h"
+#include "geometry.h"
+#include "metrics.h"
+#include "scene.h"
+
+namespace zb::lab {
+
+// A scene of the lab: its name in the CSV and the report, its family (one chart each), a line
+// on what it tests, and how to build it (scene files load only when their turn comes).
+struct LabScene {
+  std::string name;
+  std::string family;
+  std::string description;
+  std::function<Scene()> load;
+};
+
+struct LabOptions {
+  Viewport viewport{320, 240};
+  std::vector<std::string> methods;  // pass plans and "reference", in column order
+  bool rtl = true;                   // also run each plan on the Verilated RTL (cycles)
+  int supersample = 4;               // factor of the supersampled reference per axis
+};
+
+// The reference a method's error is judged against in the charts: anti-aliased methods (a
+// plan with a coverage pass) against the supersampled one, every other against the exact one.
+enum class FairReference { kExact, kSupersampled };
+const char* to_string(FairReference r);
+FairReference fair_reference(const std::string& method);
+
+// Memory traffic in bytes: 4 per colour access (RGBA8), the depth width rounded up to whole
+// bytes per depth access.
+uint64_t bytes_read(const PassStats& s, int depth_bits);
+uint64_t bytes_written(const PassStats& s, int depth_bits);
+
+// One method on one scene.
+struct LabRow {
+  std::string scene;
+  std::string family;
+  std::string method;
+  bool has_cost = false;          // false for the reference, which is not a datapath method
+  size_t passes = 0;
+  PassStats golden;               // the golden model's counters, summed over passes
+  uint64_t bytes_read = 0;
+  uint64_t bytes_written = 0;
+  double host_ms = 0;             // golden model's render, best of 3 (reference: its composite)
+  std::optional<uint64_t> rtl_cycles;  // streaming cycles on the RTL
+  uint64_t rtl_tile_io_cycles = 0;     // RTL cycles loading and storing tiles
+  uint64_t rtl_mismatch_pixels = 0;    // pixels where the RTL's frame differs from the golden's
+  ImageError error;               // against the exact reference
+  ImageError error_ss;            // against the supersampled reference
+  FairReference fair = FairReference::kExact;
+  const ImageError& fair_error() const { return fair == FairReference::kExact ? error : error_ss; }
+};
+
+// One scene's outcome: a row and an image per method, the two references, and the error
+// image of each method against its fair reference.
+struct SceneRun {
+  std::vector<LabRow> rows;
+  std::vector<Framebuffer> images;
+  std::vector<Framebuffer> error_images;
+  Framebuffer reference;
+  Framebuffer reference_ss;
+  size_t triangles = 0;
+  size_t fragments = 0;
+  double ms = 0;                  // wall time of the whole scene
+};
+
+// Runs every method of `options` on the scene. Throws std::invalid_argument for an unknown
+// method, or what the scene's loader throws.
+SceneRun run_scene(const LabScene& scene, const LabOptions& options);
+
+// lab.csv: a header line, then a line per row.
+std::string lab_csv(const std::vector<LabRow>& rows);
+
+// The non-dominated points when both coordinates are to be minimised: indices of the points
+// that no other point matches or beats in both and beats in one, in order of x, then y.
+// Points with a NaN coordinate are never on the front.
+std::vector<size_t> pareto_front(const std::vector<double>& x, const std::vector<double>& y);
+
+// A method's means over the scenes of a family; for "all", the mean of its family means, so
+// that each family counts once. The error is against the method's fair reference; the cost is
+// the RTL's cycles when every row has them, else the golden model's fragments.
+struct MethodSummary {
+  std::string family;
+  std::string method;
+  size_t scenes = 0;               // scenes behind the means
+  double delta_e_mean = 0;
+  double rmse = 0;
+  double share_over_16 = 0;
+  double fragments = 0;
+  double bytes = 0;               // read + written
+  double host_ms = 0;
+  std::optional<double> rtl_cycles;
+  bool pareto_cost = false;       // on the front of delta_e_mean against cost()
+  bool pareto_bytes = false;      // on the front of delta_e_mean against bytes
+  double cost() const { return rtl_cycles ? *rtl_cycles : fragments; }
+};
+
+constexpr const char* kAllFamilies = "all";
+
+// Per family (in order of first appearance), then "all"; methods without cost (the reference)
+// are left out. Pareto flags are set within each family.
+std::vector<MethodSummary> summarize(const std::vector<LabRow>& rows);
+
+// lab_summary.csv, the input of scripts/lab_charts.py.
+std::string summary_csv(const std::vector<MethodSummary>& summaries);
+
+}  // namespace zb::lab

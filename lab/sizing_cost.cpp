@@ -1,0 +1,101 @@
+#include "sizing_cost.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "analysis.h"
+
+namespace zb {
+
+const TileCost& MethodCost::at(int tile) const {
+  for (const TileCost& t : tiles)
+    if (t.tile == tile) return t;
+  throw std::invalid_argument("cost model: no tile size " + std::to_string(tile));
+}
+
+uint64_t tile_pixel_bits(int depth_bits, int coverage_samples) {
+  return 32u + 2u * uint64_t(depth_bits) + uint64_t(coverage_bits(coverage_samples));
+}
+
+uint64_t MethodCost::traffic_bytes(int tile, int depth_bits, int coverage_samples) const {
+  const uint64_t io = 2 * at(tile).tile_io_pixels * tile_pixel_bits(depth_bits, coverage_samples);
+  const uint64_t access = 32 * (totals.color_reads + totals.color_writes) +
+                          uint64_t(depth_bits) * (totals.depth_reads + totals.depth_writes);
+  return (io + access + 7) / 8;
+}
+
+int MethodCost::best_tile(int depth_bits, int coverage_samples) const {
+  int best = 0;
+  for (const TileCost& t : tiles) {
+    if (best == 0) {
+      best = t.tile;
+      continue;
+    }
+    const uint64_t c = cycles(t.tile), cb = cycles(best);
+    const uint64_t b = traffic_bytes(t.tile, depth_bits, coverage_samples);
+    const uint64_t bb = traffic_bytes(best, depth_bits, coverage_samples);
+    if (c < cb || (c == cb && (b < bb || (b == bb && t.tile < best)))) best = t.tile;
+  }
+  return best;
+}
+
+void CostCounter::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
+                              int coverage_samples) {
+  inner_.begin_frame(width, height, depth_bits, clear_color, coverage_samples);
+  width_ = width;
+  height_ = height;
+  cost_ = MethodCost{};
+  grids_.clear();
+  for (const int size : kAnalysisTileSizes) {
+    Grid g;
+    g.size = size;
+    g.columns = (width + size - 1) / size;
+    g.count.assign(size_t(g.columns) * size_t((height + size - 1) / size), 0);
+    grids_.push_back(std::move(g));
+    cost_.tiles.push_back(TileCost{size, 0, 0, 0, 0});
+  }
+}
+
+void CostCounter::draw(const Fragment* fragments, size_t count) {
+  inner_.draw(fragments, count);
+  for (Grid& g : grids_)
+    for (size_t i = 0; i < count; ++i) {
+      const Fragment& f = fragments[i];
+      const size_t t = size_t(f.y / g.size) * size_t(g.columns) + size_t(f.x / g.size);
+      if (g.count[t]++ == 0) g.touched.push_back(uint32_t(t));
+    }
+}
+
+// The driver's run of a pass (tb/rtl_rop.cpp): per touched tile, load its pixels (clipped to
+// the frame), one cycle to write the state and clear the counters, stream, drain, store.
+PassStats CostCounter::end_pass() {
+  const PassStats s = inner_.end_pass();
+  cost_.totals += s;
+  ++cost_.passes;
+  for (size_t k = 0; k < grids_.size(); ++k) {
+    Grid& g = grids_[k];
+    TileCost& c = cost_.tiles[k];
+    for (const uint32_t t : g.touched) {
+      const int x0 = int(t % uint32_t(g.columns)) * g.size;
+      const int y0 = int(t / uint32_t(g.columns)) * g.size;
+      const uint64_t pixels =
+          uint64_t(std::min(g.size, width_ - x0)) * uint64_t(std::min(g.size, height_ - y0));
+      c.stream_cycles += g.count[t] + 2;
+      c.tile_io_cycles += 2 * pixels + 1;
+      c.tile_io_pixels += pixels;
+      g.count[t] = 0;
+    }
+    c.tiles_loaded += g.touched.size();
+    g.touched.clear();
+  }
+  return s;
+}
+
+void CostCounter::frame_op(const FrameOp& op) {
+  inner_.frame_op(op);
+  ++cost_.frame_ops;
+  cost_.frame_op_pixels += uint64_t(width_) * uint64_t(height_);
+}
+
+}  // namespace zb

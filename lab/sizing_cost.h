@@ -1,0 +1,79 @@
+// The sizing's cost model (docs/sizing.md "The cost model"): what a method costs the RTL, counted
+// while the golden model renders it. A backend wrapper sees every pass's fragment stream and
+// bins it into tiles, as the RTL driver (tb/rtl_rop.cpp) does, at every analysed tile size at
+// once.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "backend.h"
+
+namespace zb {
+
+// A method's cost with square tiles of one size.
+struct TileCost {
+  int tile = 0;
+  uint64_t tiles_loaded = 0;    // summed over passes: the tiles each pass touches
+  uint64_t stream_cycles = 0;   // per touched tile: its fragments, one a clock, and 2 to drain
+  uint64_t tile_io_cycles = 0;  // per touched tile: load and store a word a clock, 1 state write
+  uint64_t tile_io_pixels = 0;  // pixels loaded, and again stored
+  // The RTL's clock cycles for the frame without back-pressure (`zblend render --backend rtl`
+  // reports them as rtl_cycles plus the tile I/O).
+  uint64_t rtl_cycles() const { return stream_cycles + tile_io_cycles; }
+};
+
+struct MethodCost {
+  uint64_t passes = 0;
+  PassStats totals;              // fragments and the datapath's colour and depth accesses
+  uint64_t frame_ops = 0;        // host frame operations (depth peeling): clears, copies, resolve
+  uint64_t frame_op_pixels = 0;  // pixels those touch, frame_ops * width * height
+  std::vector<TileCost> tiles;   // one per kAnalysisTileSizes
+
+  const TileCost& at(int tile) const;  // throws std::invalid_argument for another size
+  // The figure "cheapest" ranks by: RTL cycles at `tile`, plus a cycle per pixel of every
+  // frame operation (a tile port writes a word a clock).
+  uint64_t cycles(int tile) const { return at(tile).rtl_cycles() + frame_op_pixels; }
+  // Bytes moved, rounded up from bits: tile loads and stores (every plane, tile_pixel_bits) and
+  // the datapath's colour (32 bits) and depth (depth_bits) reads and writes in tile memory.
+  uint64_t traffic_bytes(int tile, int depth_bits, int coverage_samples) const;
+  // The tile size of least cycles (then least bytes, then the smaller tile: less memory).
+  int best_tile(int depth_bits, int coverage_samples) const;
+};
+
+// Bits of one pixel in the tile memory: colour 32, depth and peel depth_bits each, coverage
+// coverage_bits(samples) (zb_rop's four planes).
+uint64_t tile_pixel_bits(int depth_bits, int coverage_samples);
+
+// Wraps a backend, forwarding every call, and counts the method's cost.
+class CostCounter final : public Backend {
+ public:
+  explicit CostCounter(Backend& inner) : inner_(inner) {}
+  const char* name() const override { return inner_.name(); }
+  using Backend::begin_frame;
+  void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
+                   int coverage_samples) override;
+  void label_pass(const std::string& name) override { inner_.label_pass(name); }
+  void begin_pass(const RopState& state) override { inner_.begin_pass(state); }
+  using Backend::draw;
+  void draw(const Fragment* fragments, size_t count) override;
+  PassStats end_pass() override;
+  void frame_op(const FrameOp& op) override;
+  const Framebuffer& framebuffer() const override { return inner_.framebuffer(); }
+
+  const MethodCost& cost() const { return cost_; }
+
+ private:
+  // One tile size's binning of the current pass.
+  struct Grid {
+    int size = 0, columns = 0;
+    std::vector<uint32_t> count;    // fragments per tile
+    std::vector<uint32_t> touched;  // tiles with a fragment, in first-touch order
+  };
+  Backend& inner_;
+  int width_ = 0, height_ = 0;
+  std::vector<Grid> grids_;
+  MethodCost cost_;
+};
+
+}  // namespace zb

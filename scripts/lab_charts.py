@@ -1,0 +1,135 @@
+#!/usr/bin/env python3
+"""Charts of the methods lab (docs/lab.md): error against cost, Pareto front marked.
+
+Usage: lab_charts.py LAB_SUMMARY_CSV OUT_DIR
+
+Reads the per-family means `zblend lab` writes (lab_summary.csv, Pareto flags included: the
+front is computed and tested in C++, lab/lab.cpp) and writes OUT_DIR/main.png (every scene,
+error against cycles or fragments), OUT_DIR/main-bytes.png (against memory bytes) and
+OUT_DIR/family-FAMILY.png for each family. Each PNG is written beside its target and renamed.
+"""
+import csv
+import os
+import re
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.ticker import EngFormatter  # noqa: E402
+
+ERROR_FLOOR = 0.01  # a mean delta E of 0 is drawn here, on the log axis
+
+
+def path_name(name):
+    """As lab::path_name: one safe path component."""
+    out = re.sub(r"[^A-Za-z0-9._-]", "_", name)
+    return "_" + out if out in ("", ".", "..") else out
+
+
+def read_summary(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    families = []
+    for r in rows:
+        if r["family"] not in families:
+            families.append(r["family"])
+    return rows, families
+
+
+def cost_label(rows, key):
+    if key == "bytes":
+        return "mean memory traffic per frame (bytes read + written)"
+    unit = rows[0]["cost_unit"] if rows else "fragments"
+    return ("mean RTL cycles per frame" if unit == "rtl_cycles"
+            else "mean fragments per frame")
+
+
+def place_labels(fig, ax, names, xs, ys):
+    """Each name beside its point, at the first of a few offsets where it overlaps no label
+    placed before it (points close together otherwise print over each other)."""
+    offsets = [(6, 4), (6, -11), (-6, 4), (-6, -11), (6, 15), (6, -22), (-6, 15), (-6, -22)]
+    ax.set_xlim(ax.get_xlim())
+    ax.set_ylim(ax.get_ylim())
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    placed = []
+    for i in sorted(range(len(names)), key=lambda k: (xs[k], ys[k])):
+        for dx, dy in offsets:
+            t = ax.annotate(names[i], (xs[i], ys[i]), textcoords="offset points", xytext=(dx, dy),
+                            fontsize=8, ha="left" if dx > 0 else "right")
+            box = t.get_window_extent(renderer).expanded(1.05, 1.1)
+            if not any(box.overlaps(b) for b in placed):
+                placed.append(box)
+                break
+            t.remove()
+        else:
+            t = ax.annotate(names[i], (xs[i], ys[i]), textcoords="offset points", xytext=(6, 4),
+                            fontsize=8)
+            placed.append(t.get_window_extent(renderer))
+
+
+def chart(rows, key, pareto_key, title, out_path):
+    xs = [float(r[key]) for r in rows]
+    ys = [max(float(r["delta_e_mean"]), ERROR_FLOOR) for r in rows]
+    on_front = [r[pareto_key] == "1" for r in rows]
+    fig, ax = plt.subplots(figsize=(9, 6), dpi=110)
+    ax.scatter([x for x, p in zip(xs, on_front) if not p], [y for y, p in zip(ys, on_front) if not p],
+               color="#999999", s=36, label="dominated", zorder=2)
+    ax.scatter([x for x, p in zip(xs, on_front) if p], [y for y, p in zip(ys, on_front) if p],
+               color="#d62728", s=48, label="Pareto front", zorder=3)
+    front = sorted((x, y) for x, y, p in zip(xs, ys, on_front) if p)
+    if front:
+        # The front as a staircase: what the best method costing at most x achieves.
+        sx, sy = [front[0][0]], [front[0][1]]
+        for x, y in front[1:]:
+            sx += [x, x]
+            sy += [sy[-1], y]
+        ax.plot(sx, sy, color="#d62728", linewidth=1.2, zorder=1)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    # Costs span about one decade: label the minor ticks too (200k, 300k, ...).
+    ax.xaxis.set_major_formatter(EngFormatter(sep=""))
+    ax.xaxis.set_minor_formatter(EngFormatter(sep=""))
+    ax.tick_params(axis="x", which="minor", labelsize=7)
+    place_labels(fig, ax, [r["method"] for r in rows], xs, ys)
+    ax.set_xlabel(cost_label(rows, key) + ", log")
+    ax.set_ylabel("mean CIEDE2000 against the fair reference, log")
+    ax.set_title(title)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(loc="upper right", fontsize=8)
+    fig.tight_layout()
+    tmp = out_path + ".tmp.png"
+    fig.savefig(tmp)
+    plt.close(fig)
+    os.replace(tmp, out_path)
+
+
+def main(argv):
+    if len(argv) != 3:
+        print(__doc__.strip().splitlines()[2], file=sys.stderr)
+        return 2
+    rows, families = read_summary(argv[1])
+    out_dir = argv[2]
+    os.makedirs(out_dir, exist_ok=True)
+    for family in families:
+        fam_rows = [r for r in rows if r["family"] == family]
+        scenes = max(int(r["scenes"]) for r in fam_rows)
+        if family == "all":
+            over = f"mean of {len(families) - 1} families ({scenes} scenes)"
+            chart(fam_rows, "cost", "pareto_cost", f"Every method, {over}: error against cost",
+                  os.path.join(out_dir, "main.png"))
+            chart(fam_rows, "bytes", "pareto_bytes",
+                  f"Every method, {over}: error against memory traffic",
+                  os.path.join(out_dir, "main-bytes.png"))
+        else:
+            chart(fam_rows, "cost", "pareto_cost",
+                  f"Family '{family}' ({scenes} scene{'s' if scenes != 1 else ''}): "
+                  "error against cost",
+                  os.path.join(out_dir, f"family-{path_name(family)}.png"))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
