@@ -67,6 +67,17 @@ if "$zblend" render -q --scene "$regr01" --method three-pass --width 40 --height
      --camera eye=-1200,-1400,700,at=620,380,120,fov=45 --out "$tmp/out/r.png"; then ok; else bad "render regr01 rtl --camera"; fi
 rm -f "$tmp/out/r.png"
 
+# The lab and a sweep, tiny: a CSV row per method, the reference row at zero error.
+if "$zblend" lab -q --scenes quads --methods opaque,reference -W 32 -H 24 --no-rtl --no-charts \
+     --out-dir "$tmp/lab"; then
+  [[ $(grep -c '^quads,' "$tmp/lab/lab.csv") -eq 2 ]] && ok || bad "lab: rows $(cat "$tmp/lab/lab.csv")"
+  grep -qE '^quads,[^,]*,reference,.*,0\.0000,inf,0,' "$tmp/lab/lab.csv" && ok || bad "lab: reference row"
+else
+  bad "lab"
+fi
+if "$zblend" sweep depth -q --no-charts -W 32 -H 24 --out-dir "$tmp/sweep" &&
+   [[ -s "$tmp/sweep/depth.csv" && ! -e "$tmp/sweep/depth.png" ]]; then ok; else bad "sweep depth"; fi
+
 # A trace file.
 if "$zblend" trace --scene quads --method unsorted --width 32 --height 24 --out "$tmp/out/q.zbt" >/dev/null &&
    [[ $(head -c 7 "$tmp/out/q.zbt") == ZBTRACE ]]; then ok; else bad "trace write"; fi
@@ -88,6 +99,10 @@ expect_zblend_error "unknown backend" "unknown backend 'gpu'.*golden, rtl, both"
 expect_zblend_error "rtl depth bits" "--depth-bits: the RTL model is built with 24" render --backend rtl --depth-bits 16 --out "$tmp/out/a.png"
 expect_zblend_error "waves need rtl" "--waves: needs --backend rtl" render --waves "$tmp/out/w.fst" --out "$tmp/out/a.png"
 expect_zblend_error "backpressure range" "--backpressure: 1.5 is out of range" render --backend rtl --backpressure 1.5 --out "$tmp/out/a.png"
+expect_zblend_error "lab scene" "--scenes: .*'nope'" lab --scenes nope --out-dir "$tmp/out/lab"
+expect_zblend_error "lab method" "'foo'" lab --methods foo --out-dir "$tmp/out/lab"
+expect_zblend_error "lab jobs" "-j" lab -j 0 --out-dir "$tmp/out/lab"
+expect_zblend_error "sweep name" "unknown sweep 'bogus'" sweep bogus --out-dir "$tmp/out/sw"
 expect_zblend_error "plan of reference" "no pass plan" plan --method reference
 expect_zblend_error "trace of reference" "no pass plan" trace --method reference --out "$tmp/out/t.zbt"
 expect_zblend_error "trace extension" "must end in .zbt" trace --out "$tmp/out/t.bin"
