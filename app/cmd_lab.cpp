@@ -5,19 +5,16 @@
 #include <atomic>
 #include <chrono>
 #include <exception>
-#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <mutex>
-#include <spawn.h>
 #include <sstream>
-#include <sys/wait.h>
 #include <thread>
-#include <unistd.h>
 
 #include <fmt/core.h>
 
+#include "chart_tools.h"
 #include "commands.h"
 #include "image.h"
 #include "lab.h"
@@ -27,14 +24,6 @@
 #include "scene_file.h"
 #include "scene_suite.h"
 #include "scenes.h"
-
-extern char** environ;
-
-#if defined(__SANITIZE_ADDRESS__)
-// Verilator 5.006's Verilated::catName keeps a thread_local buffer it never frees, so every lab
-// worker thread that builds an RTL model loses it when the thread ends: not ours to fix.
-extern "C" const char* __lsan_default_suppressions() { return "leak:Verilated::catName\n"; }
-#endif
 
 namespace zb::app {
 namespace {
@@ -164,57 +153,6 @@ std::vector<std::string> pick_methods(const std::string& list) {
   return out;
 }
 
-// Runs argv (no shell); true when it exits 0. `silent` sends its output to /dev/null.
-bool run_program(const std::vector<std::string>& args, bool silent) {
-  std::vector<char*> argv;
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  if (silent) {
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-  }
-  pid_t pid = 0;
-  const int err = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (err != 0) return false;
-  int status = 0;
-  if (waitpid(pid, &status, 0) != pid) return false;
-  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
-}
-
-// The chart script and a python3 that has matplotlib, or a usage error saying what is missing.
-struct ChartTools {
-  std::string python;
-  std::string script;
-};
-
-ChartTools find_chart_tools() {
-  ChartTools t;
-  std::error_code ec;
-  // scripts/ of the source tree above the build directory holding this executable, else of
-  // the current directory.
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  for (const fs::path& base : {ec ? fs::path() : exe.parent_path().parent_path(), fs::current_path(ec)}) {
-    const fs::path p = base / "scripts" / "lab_charts.py";
-    if (t.script.empty() && !base.empty() && fs::is_regular_file(p, ec)) t.script = p.string();
-  }
-  if (t.script.empty())
-    throw UsageError("--no-charts: scripts/lab_charts.py not found beside the build directory "
-                     "or in the current directory; run from the source tree or pass --no-charts");
-  for (const char* p : {"python3", "/usr/bin/python3"}) {
-    if (run_program({p, "-c", "import matplotlib"}, true)) {
-      t.python = p;
-      break;
-    }
-  }
-  if (t.python.empty())
-    throw UsageError("--no-charts: no python3 with matplotlib (apt-get install "
-                     "python3-matplotlib, or scripts/setup.sh); or pass --no-charts");
-  return t;
-}
-
 void check_options(const LabCommandOptions& o) {
   check_viewport(o.width, o.height, kRtlDepthBits);
   if (o.jobs < 1 || o.jobs > 64)
@@ -297,7 +235,7 @@ void run_lab(const LabCommandOptions& o) {
   const std::vector<std::string> methods = pick_methods(o.methods);
   const std::vector<lab::LabScene> scenes = pick_scenes(o);
   check_options(o);
-  const ChartTools tools = o.no_charts ? ChartTools{} : find_chart_tools();
+  const ChartTools tools = o.no_charts ? ChartTools{} : find_chart_tools("lab_charts.py");
 
   lab::LabOptions lo;
   lo.viewport = Viewport{o.width, o.height, kRtlDepthBits, kRtlCoverageSamples};

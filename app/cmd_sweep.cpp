@@ -2,20 +2,15 @@
 // The sweeps themselves are in lab/sweeps.h; this file parses, writes and charts.
 #include <algorithm>
 #include <chrono>
-#include <fcntl.h>
 #include <filesystem>
 #include <memory>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <fmt/core.h>
 
+#include "chart_tools.h"
 #include "commands.h"
 #include "image.h"
 #include "sweeps.h"
-
-extern char** environ;
 
 namespace zb::app {
 namespace {
@@ -38,47 +33,6 @@ struct SweepOptions {
   bool no_charts = false;
   bool quiet = false;
 };
-
-// Runs argv (no shell); true when it exits 0.
-bool run_program(const std::vector<std::string>& args, bool silent) {
-  std::vector<char*> argv;
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  if (silent) {
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-  }
-  pid_t pid = 0;
-  const int err = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (err != 0) return false;
-  int status = 0;
-  if (waitpid(pid, &status, 0) != pid) return false;
-  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
-}
-
-// scripts/sweep_charts.py beside the build tree holding this executable, or under the
-// current directory.
-std::string find_chart_script() {
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  const fs::path beside = ec ? fs::path() : exe.parent_path().parent_path();
-  for (const fs::path& base : {beside, fs::current_path(ec)}) {
-    const fs::path p = base / "scripts" / "sweep_charts.py";
-    if (!base.empty() && fs::is_regular_file(p, ec)) return p.string();
-  }
-  return {};
-}
-
-// The first python3 that has matplotlib: the one on PATH, else Debian's, which
-// python3-matplotlib installs for (a python3 earlier on PATH may lack it).
-std::string find_python() {
-  for (const char* p : {"python3", "/usr/bin/python3"})
-    if (run_program({p, "-c", "import matplotlib"}, true)) return p;
-  return {};
-}
 
 bool runs(const SweepOptions& o, const char* sweep) { return o.name == sweep || o.name == "all"; }
 
@@ -205,19 +159,9 @@ class SweepRun {
 
 void run_sweep(const SweepOptions& o) {
   check_options(o);
-  std::string python, script;
-  if (!o.no_charts) {
-    script = find_chart_script();
-    if (script.empty())
-      throw UsageError("sweep: scripts/sweep_charts.py not found beside the build tree or in the "
-                       "current directory (or give --no-charts)");
-    python = find_python();
-    if (python.empty())
-      throw UsageError("sweep: charts need python3 with matplotlib (apt-get install "
-                       "python3-matplotlib, or make setup), or give --no-charts");
-  }
+  const ChartTools tools = o.no_charts ? ChartTools{} : find_chart_tools("sweep_charts.py");
   prepare_out_dir(o.out_dir);
-  SweepRun(o, python, script).run();
+  SweepRun(o, tools.python, tools.script).run();
 }
 
 }  // namespace

@@ -172,25 +172,42 @@ std::vector<size_t> pareto_front(const std::vector<double>& x, const std::vector
 
 namespace {
 
-// Means over one family's rows of one method.
-MethodSummary summarize_group(const std::string& family, const std::vector<const LabRow*>& rows) {
+// One row as a summary of one scene.
+MethodSummary one_scene(const std::string& family, const LabRow& r) {
   MethodSummary s;
   s.family = family;
-  s.method = rows.front()->method;
-  s.scenes = rows.size();
+  s.method = r.method;
+  s.scenes = 1;
+  s.delta_e_mean = r.fair_error().delta_e_mean;
+  s.rmse = r.fair_error().rmse;
+  s.share_over_16 = r.fair_error().share_over_16;
+  s.fragments = double(r.golden.fragments_in);
+  s.bytes = double(r.bytes_read + r.bytes_written);
+  s.host_ms = r.host_ms;
+  if (r.rtl_cycles) s.rtl_cycles = double(*r.rtl_cycles);
+  return s;
+}
+
+// The unweighted mean of `parts` (one method), labelled `family`; scenes add up. RTL cycles
+// only when every part has them.
+MethodSummary mean_of(const std::string& family, const std::vector<MethodSummary>& parts) {
+  MethodSummary s;
+  s.family = family;
+  s.method = parts.front().method;
   double cycles = 0;
   bool all_rtl = true;
-  for (const LabRow* r : rows) {
-    s.delta_e_mean += r->fair_error().delta_e_mean;
-    s.rmse += r->fair_error().rmse;
-    s.share_over_16 += r->fair_error().share_over_16;
-    s.fragments += double(r->golden.fragments_in);
-    s.bytes += double(r->bytes_read + r->bytes_written);
-    s.host_ms += r->host_ms;
-    all_rtl = all_rtl && r->rtl_cycles.has_value();
-    if (r->rtl_cycles) cycles += double(*r->rtl_cycles);
+  for (const MethodSummary& p : parts) {
+    s.scenes += p.scenes;
+    s.delta_e_mean += p.delta_e_mean;
+    s.rmse += p.rmse;
+    s.share_over_16 += p.share_over_16;
+    s.fragments += p.fragments;
+    s.bytes += p.bytes;
+    s.host_ms += p.host_ms;
+    all_rtl = all_rtl && p.rtl_cycles.has_value();
+    if (p.rtl_cycles) cycles += *p.rtl_cycles;
   }
-  const double n = double(rows.size());
+  const double n = double(parts.size());
   s.delta_e_mean /= n;
   s.rmse /= n;
   s.share_over_16 /= n;
@@ -201,34 +218,19 @@ MethodSummary summarize_group(const std::string& family, const std::vector<const
   return s;
 }
 
+// Means over one family's rows of one method.
+MethodSummary summarize_group(const std::string& family, const std::vector<const LabRow*>& rows) {
+  std::vector<MethodSummary> scenes;
+  for (const LabRow* r : rows) scenes.push_back(one_scene(family, *r));
+  return mean_of(family, scenes);
+}
+
 // "all": each family counts once, however many scenes it has (the suite samples some
 // families, such as layers, far more densely than others).
 MethodSummary mean_of_families(const std::vector<const MethodSummary*>& fams) {
-  MethodSummary s;
-  s.family = kAllFamilies;
-  s.method = fams.front()->method;
-  double cycles = 0;
-  bool all_rtl = true;
-  for (const MethodSummary* f : fams) {
-    s.scenes += f->scenes;
-    s.delta_e_mean += f->delta_e_mean;
-    s.rmse += f->rmse;
-    s.share_over_16 += f->share_over_16;
-    s.fragments += f->fragments;
-    s.bytes += f->bytes;
-    s.host_ms += f->host_ms;
-    all_rtl = all_rtl && f->rtl_cycles.has_value();
-    if (f->rtl_cycles) cycles += *f->rtl_cycles;
-  }
-  const double n = double(fams.size());
-  s.delta_e_mean /= n;
-  s.rmse /= n;
-  s.share_over_16 /= n;
-  s.fragments /= n;
-  s.bytes /= n;
-  s.host_ms /= n;
-  if (all_rtl) s.rtl_cycles = cycles / n;
-  return s;
+  std::vector<MethodSummary> parts;
+  for (const MethodSummary* f : fams) parts.push_back(*f);
+  return mean_of(kAllFamilies, parts);
 }
 
 void mark_pareto(std::vector<MethodSummary>::iterator first,
