@@ -11,11 +11,21 @@
 
 namespace zb {
 
+// zb_rop's streaming timing (docs/rtl.md "Pipeline" and "Interlock"), fragments offered every
+// cycle from the tile's first streaming cycle (cycle 0): the first issues in cycle
+// kRtlFirstIssue; each later one in max(the previous one's cycle + 1, the cycle of the
+// previous fragment to its pixel + kRtlIssueSpan); busy_o falls kRtlDrain cycles after the
+// last issue. So a tile streams last issue + kRtlDrain cycles: its fragments + 13 when no
+// fragment waits.
+constexpr uint64_t kRtlFirstIssue = 2;
+constexpr uint64_t kRtlIssueSpan = 4;
+constexpr uint64_t kRtlDrain = 12;
+
 // A method's cost with square tiles of one size.
 struct TileCost {
   int tile = 0;
   uint64_t tiles_loaded = 0;    // summed over passes: the tiles each pass touches
-  uint64_t stream_cycles = 0;   // per touched tile: its fragments, one a clock, and 2 to drain
+  uint64_t stream_cycles = 0;   // per touched tile: issue cycles as zb_rop's interlock, drain
   uint64_t tile_io_cycles = 0;  // per touched tile: load and store a word a clock, 1 state write
   uint64_t tile_io_pixels = 0;  // pixels loaded, and again stored
   // The RTL's clock cycles for the frame without back-pressure (`zblend render --backend rtl`
@@ -54,7 +64,7 @@ class CostCounter final : public Backend {
   void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
                    int coverage_samples) override;
   void label_pass(const std::string& name) override { inner_.label_pass(name); }
-  void begin_pass(const RopState& state) override { inner_.begin_pass(state); }
+  void begin_pass(const RopState& state) override;
   using Backend::draw;
   void draw(const Fragment* fragments, size_t count) override;
   PassStats end_pass() override;
@@ -64,14 +74,18 @@ class CostCounter final : public Backend {
   const MethodCost& cost() const { return cost_; }
 
  private:
-  // One tile size's binning of the current pass.
+  // One tile size's binning of the current pass, and its issue cycles.
   struct Grid {
     int size = 0, columns = 0;
     std::vector<uint32_t> count;    // fragments per tile
     std::vector<uint32_t> touched;  // tiles with a fragment, in first-touch order
+    std::vector<uint64_t> issue;    // per tile: the issue cycle of its last fragment
+    std::vector<uint64_t> pixel_issue;  // per frame pixel: its last fragment's issue cycle,
+    std::vector<uint32_t> pixel_pass;   // valid when pixel_pass equals pass_
   };
   Backend& inner_;
   int width_ = 0, height_ = 0;
+  uint32_t pass_ = 0;  // stamps the pixels a pass touched
   std::vector<Grid> grids_;
   MethodCost cost_;
 };

@@ -1,98 +1,143 @@
-// zb_blend: the blend unit of docs/datapath.md "3. Blend", all four channels, combinational.
-//   m(x, y)   = (t + (t >> 8) + 0x80) >> 8, t = x * y   (llvmpipe's unorm8 multiply)
-//   replace:  c' = s
-//   alpha:    c' = min(255, m(s, a) + m(d, 255 - a))
-//   additive: c' = min(255, d + m(s, a))
-//   coverage: c' = (w * s + (N - w) * d + N/2) >> log2(N), w = weight_i (zb_coverage_composite)
-//   under:    t = 255 - A_d (destination alpha, dst_i[31:24]), premultiplied destination;
-//             RGB c' = min(255, d + m(m(s, a), t)), alpha A' = min(255, A_d + m(a, t))
-// a is the source alpha (src_i[31:24]) for every channel, alpha included. The coverage blend
-// treats alpha as a fourth channel, weighted by coverage like R, G and B.
+// zb_blend: the blend unit of docs/datapath.md "3. Blend" and the write mask, all four channels,
+// pipelined over four stages (latency 4: dst_i in cycle c, color_o in cycle c + 4, not
+// registered: it drives the colour write). Every mode is one form,
+//   c' = min(255, m(k * v) + add),  m(t) = (t + (t >> 8) + 0x80) >> 8
+// with k and add from the fragment side (zb_rop selects them per mode before the colour read,
+// with k3 = 3k for the radix-4 multiplier) and v from the stored colour:
+//   replace:  k = 0,      add = s              -> s
+//   alpha:    k = 255-a,  add = m(s, a), v = d -> min(255, m(s, a) + m(d, 255 - a))
+//   additive: k = 255,    add = m(s, a), v = d -> min(255, m(s, a) + d)   (m(d, 255) = d)
+//   under:    k = m(s, a) (alpha channel: a), v = 255 - A_d, add = d
+//             -> min(255, d + m(m(s, a), 255 - A_d)), alpha min(255, A_d + m(a, 255 - A_d))
+// and coverage, c' = (k * d + q) >> log2 N with k = N - w and q = w*s + N/2 from the fragment
+// side (no m, no saturation: the sum is below 256 N).
+//   c     v = under ? 255 - A_d : d; add = under ? d : add_i
+//   c+1   zb_mul8 stage 1;           c+2   zb_mul8 stage 2: t = k * v
+//   c+3   lo = (t[7:0] + t[15:8] + 0x80) >> 8 (0..2) completes m = t[15:8] + lo; so
+//         r_j = min(255, t[15:8] + add + j) for j = 0, 1, 2 in parallel (add + j formed a
+//         cycle earlier: each r_j is one carry chain); the coverage result, and the write
+//         mask's alternative alt = mask ? coverage : d
+//   c+4   r = r_lo; colour = (mask && !coverage) ? r : alt  (no carry chain here: it
+//         drives the RAM's write data)
 module zb_blend #(
   parameter int unsigned COV_SAMPLES = 16,  // N: 1, 2, 4, 8 or 16
-  localparam int unsigned CovW       = $clog2(COV_SAMPLES + 1)
+  localparam int unsigned CovW       = $clog2(COV_SAMPLES + 1),
+  localparam int unsigned QW         = 8 + CovW  // w*s + N/2 < 2^(8 + log2 N + 1)
 ) (
-  input  logic [2:0]      mode_i,    // 0 replace, 1 alpha, 2 additive, 3 coverage, 4 under
-  input  logic [31:0]     src_i,     // fragment colour: r [7:0], g [15:8], b [23:16], a [31:24]
-  input  logic [31:0]     dst_i,     // stored colour, same packing
-  input  logic [CovW-1:0] weight_i,  // coverage: samples of src_i, 0..N
-  output logic [31:0]     color_o
+  input  logic            clk_i,
+  input  logic [2:0]      mode_i,   // 0 replace, 1 alpha, 2 additive, 3 coverage, 4 under
+  input  logic [3:0]      mask_i,   // write mask, bit c for channel c
+  input  logic [31:0]     dst_i,    // stored colour, cycle c: r [7:0], g, b, a [31:24]
+  input  logic [31:0]     k_i,      // per channel, cycle c
+  input  logic [39:0]     k3_i,     // per channel 3 * k, 10 bits each
+  input  logic [31:0]     add_i,    // per channel (not used in under mode)
+  input  logic [4*QW-1:0] q_i,      // per channel, coverage mode
+  output logic [31:0]     color_o   // cycle c + 4: blended and masked
 );
 
   localparam int unsigned CovLog = $clog2(COV_SAMPLES);
-  // w * s + (N - w) * d + N/2 <= 255 N + N/2 < 2^(8 + CovLog): AccW = 8 + CovW bits hold it.
-  localparam int unsigned AccW = 8 + CovW;
-  localparam logic [CovW-1:0] Full = CovW'(COV_SAMPLES);
-  localparam logic [AccW-1:0] Half = AccW'(COV_SAMPLES / 2);
 
-  // m(x, y). t + (t >> 8) + 0x80 <= 65025 + 254 + 128 = 65407 fits 16 bits; m is its upper
-  // byte (the lower byte is the discarded fraction).
-  function automatic logic [7:0] mul_unorm8(logic [7:0] x, logic [7:0] y);
-    logic [15:0] t;
-    logic [7:0]  m;
-    logic [7:0]  unused_frac;
-    t = {8'h00, x} * {8'h00, y};
-    {m, unused_frac} = t + {8'h00, t[15:8]} + 16'h0080;
-    mul_unorm8 = m;
-  endfunction
+  logic under, cov;
+  assign under = mode_i == 3'd4;
+  assign cov   = mode_i == 3'd3;
 
-  function automatic logic [7:0] sat_add8(logic [7:0] x, logic [7:0] y);
-    logic [8:0] sum;
-    sum = {1'b0, x} + {1'b0, y};
-    sat_add8 = sum[8] ? 8'hff : sum[7:0];
-  endfunction
+  // The write mask's alternative to r, formed a cycle early: coverage result or stored colour.
+  logic [31:0] cov3, d3, alt_d;
 
-  logic [7:0] alpha, inv_alpha;
-  logic [31:0] alpha_blend, add_blend, cov_blend, under_blend;
-  logic [7:0]  dst_alpha, inv_dst_alpha;
-
-  assign dst_alpha     = dst_i[31:24];
-  assign inv_dst_alpha = 8'hff - dst_alpha;
-  logic [CovW-1:0] inv_weight;
-
-  assign alpha     = src_i[31:24];
-  assign inv_alpha = 8'hff - alpha;
-  assign inv_weight = Full - weight_i;
+  zb_color_mask u_alt (
+    .mask_i   (mask_i),
+    .blended_i(cov3),
+    .dst_i    (d3),
+    .color_o  (alt_d)
+  );
 
   for (genvar c = 0; c < 4; c++) begin : g_chan
-    logic [7:0] s, d, ms;
-    assign s  = src_i[8*c +: 8];
-    assign d  = dst_i[8*c +: 8];
-    assign ms = mul_unorm8(s, alpha);
-    assign alpha_blend[8*c +: 8] = sat_add8(ms, mul_unorm8(d, inv_alpha));
-    assign add_blend[8*c +: 8]   = sat_add8(d, ms);
-    // Under: RGB scale the premultiplied source m(s, a); alpha scales a itself (m(a, a) would
-    // square it). c = 3 is alpha: s = a there, so the source term is m(a, t).
-    if (c < 3) begin : g_under_rgb
-      assign under_blend[8*c +: 8] = sat_add8(d, mul_unorm8(ms, inv_dst_alpha));
-    end else begin : g_under_a
-      assign under_blend[8*c +: 8] = sat_add8(d, mul_unorm8(s, inv_dst_alpha));
+    // c -> c+1
+    logic [7:0]    v1_q, k1_q, add1_q, d1_q;
+    logic [9:0]    k31_q;
+    logic [QW-1:0] q1_q;
+    // c+1 .. c+3: the multiplier's two stages; add, d and q ride along
+    logic [7:0]    add2_q, d2_q, d3_q;
+    logic [26:0]   add3_q;         // add + j at [9*j +: 9], j = 0, 1, 2: one adder per sum
+    logic [QW-1:0] q2_q, q3_q;
+    logic [15:0]   t;
+    // c+3 -> c+4
+    logic [8:0]    u;
+    logic [1:0]    lo;             // (t[7:0] + t[15:8] + 0x80) >> 8
+    logic [1:0]    carry4_q;
+    logic [QW-1:0] cs_d;
+    logic [7:0]    alt4_q;
+    logic [23:0]   r_d, r4_q;      // r_j at [8*j +: 8]
+    logic [7:0]    r;
+    logic [6:0]    unused_u;
+    logic [QW-9:0] unused_cs;
+
+    always_ff @(posedge clk_i) begin
+      v1_q     <= under ? ~dst_i[31:24] : dst_i[8*c +: 8];
+      add1_q   <= under ? dst_i[8*c +: 8] : add_i[8*c +: 8];
+      k1_q     <= k_i[8*c +: 8];
+      k31_q    <= k3_i[10*c +: 10];
+      d1_q     <= dst_i[8*c +: 8];
+      q1_q     <= q_i[QW*c +: QW];
+      add2_q   <= add1_q;
+      for (int unsigned j = 0; j < 3; j++) begin
+        add3_q[9*j +: 9] <= {1'b0, add2_q} + 9'(j);
+      end
+      d2_q     <= d1_q;
+      d3_q     <= d2_q;
+      q2_q     <= q1_q;
+      q3_q     <= q2_q;
+      carry4_q <= lo;
+      alt4_q   <= alt_d[8*c +: 8];
+      r4_q     <= r_d;
     end
 
-    // Coverage: the sum, shifted right by log2(N); its bits above 7 are always zero.
-    logic [AccW-1:0] acc, shifted;
-    logic            unused_hi;
-    assign acc     = AccW'(s) * AccW'(weight_i) + AccW'(d) * AccW'(inv_weight) + Half;
-    assign shifted = acc >> CovLog;
-    assign cov_blend[8*c +: 8] = shifted[7:0];
-    assign unused_hi = ^shifted[AccW-1:8];
-  end
+    zb_mul8 u_mul (
+      .clk_i(clk_i),
+      .k_i  (k1_q),
+      .k3_i (k31_q),
+      .v_i  (v1_q),
+      .t_o  (t)
+    );
 
-  always_comb begin
-    color_o = src_i;
-    unique case (mode_i)
-      3'd0:    color_o = src_i;        // replace
-      3'd1:    color_o = alpha_blend;  // alpha
-      3'd2:    color_o = add_blend;    // additive
-      3'd3:    color_o = cov_blend;    // coverage
-      3'd4:    color_o = under_blend;  // under
-      default: color_o = src_i;
-    endcase
+    // (u + 0x80) >> 8 for u < 512 is 0, 1, 1, 2 as u[8:7] is 0, 1, 2, 3: one 8-bit adder.
+    assign u        = {1'b0, t[7:0]} + {1'b0, t[15:8]};
+    assign lo       = {u[8] & u[7], u[8] ^ u[7]};
+    assign unused_u = u[6:0];
+    // m(k v) + add = t[15:8] + add + lo <= 255 + 255 + 2: saturate on bit 8 or 9.
+    for (genvar j = 0; j < 3; j++) begin : g_sum
+      logic [9:0] h;
+      assign h      = {2'b00, t[15:8]} + {1'b0, add3_q[9*j +: 9]};
+      assign r_d[8*j +: 8] = (h[9] | h[8]) ? 8'hff : h[7:0];
+    end
+    assign cs_d      = (QW'(t) + q3_q) >> CovLog;
+    assign unused_cs = cs_d[QW-1:8];
+
+    assign cov3[8*c +: 8] = cs_d[7:0];
+    assign d3[8*c +: 8]   = d3_q;
+
+    always_comb begin
+      unique case (carry4_q)
+        2'd0:    r = r4_q[7:0];
+        2'd1:    r = r4_q[15:8];
+        default: r = r4_q[23:16];
+      endcase
+    end
+
 `ifdef ZB_INJECT_BLEND_BUG
-    // Deliberate defect for checker tests: alpha blend, odd source alpha, red bit 0 flipped.
-    if (mode_i == 3'd1 && alpha[0]) begin
-      color_o[0] = ~color_o[0];
+    // Deliberate defect for checker tests: alpha blend, odd source alpha (k = 255 - a even),
+    // red bit 0 flipped. The flag rides the pipeline with the fragment.
+    if (c == 0) begin : g_bug
+      logic [4:1] bug_q;
+      always_ff @(posedge clk_i) begin
+        bug_q <= {bug_q[3:1], mode_i == 3'd1 && !k_i[0]};
+      end
+      assign color_o[8*c +: 8] = (mask_i[c] && !cov) ? {r[7:1], r[0] ^ bug_q[4]} : alt4_q;
+    end else begin : g_nobug
+      assign color_o[8*c +: 8] = (mask_i[c] && !cov) ? r : alt4_q;
     end
+`else
+    assign color_o[8*c +: 8] = (mask_i[c] && !cov) ? r : alt4_q;
 `endif
   end
 

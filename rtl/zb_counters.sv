@@ -1,6 +1,8 @@
 // zb_counters: NUM saturating event counters of CNT_W bits. Counter i adds 1 at each rising
 // edge where inc_i[i] is set; at all ones it stays there. A cycle with clear_i set makes every
 // counter 0 at its edge (that cycle's events are not counted).
+// "At all ones" is a flop (sat_q), set by the increment that reaches all ones, so the counter's
+// enable is not behind a CNT_W-bit comparison of its own value.
 module zb_counters #(
   parameter int unsigned NUM   = 9,
   parameter int unsigned CNT_W = 32
@@ -16,21 +18,27 @@ module zb_counters #(
 
   for (genvar i = 0; i < NUM; i++) begin : g_cnt
     logic [CNT_W-1:0] cnt_d, cnt_q;
+    logic             sat_d, sat_q;
 
     always_comb begin
       cnt_d = cnt_q;
+      sat_d = sat_q;
       if (clear_i) begin
         cnt_d = '0;
-      end else if (inc_i[i] && cnt_q != CntMax) begin
+        sat_d = 1'b0;
+      end else if (inc_i[i] && !sat_q) begin
         cnt_d = cnt_q + {{(CNT_W-1){1'b0}}, 1'b1};
+        sat_d = cnt_q == CntMax - {{(CNT_W-1){1'b0}}, 1'b1};
       end
     end
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         cnt_q <= '0;
+        sat_q <= 1'b0;
       end else begin
         cnt_q <= cnt_d;
+        sat_q <= sat_d;
       end
     end
 
@@ -40,6 +48,9 @@ module zb_counters #(
     // A counter never wraps: at all ones it stays there until cleared.
     CntSaturates: assert property (@(posedge clk_i) disable iff (!rst_ni)
         (!clear_i && cnt_q == CntMax) |=> (cnt_q == CntMax));
+    // The flag is exactly "at all ones".
+    SatFlagExact: assert property (@(posedge clk_i) disable iff (!rst_ni)
+        sat_q == (cnt_q == CntMax));
 `endif
   end
 

@@ -1,7 +1,7 @@
 // zb_coverage_composite: the four depth cases of US 5,123,085 claim 1, the decisions of
-// docs/datapath.md "Coverage blend". Combinational; used in S1, where the stored depth and
-// coverage are known. With k = cov_i (the polygon pixel's covered samples), cs = stored_cov_i
-// and N = COV_SAMPLES:
+// docs/datapath.md "Coverage blend". Combinational; used in zb_rop's X3, where the stored
+// depth and coverage are known. With k = cov_i (the polygon pixel's covered samples),
+// cs = stored_cov_i and N = COV_SAMPLES:
 //   combined = min(N, k + cs)
 //   nearer  (z <  Zs):                weight k,      depth z,  coverage combined
 //   farther (z >  Zs):                weight N - cs, depth Zs, coverage combined
@@ -10,13 +10,13 @@
 // The colour unit (zb_blend, mode 3) then forms (w * Cf + (N - w) * Cs + N/2) >> log2(N): the
 // first proportionate blend for w = k, the second for w = N - cs (the background keeps its cs
 // samples), the polygon colour for w = N. Requires k <= N and cs <= N (zb_rop asserts both).
+// The depth comparison comes in as its two flags, registered a stage earlier by zb_rop.
 module zb_coverage_composite #(
-  parameter int unsigned DEPTH_BITS  = 24,
   parameter int unsigned COV_SAMPLES = 16,  // N: 1, 2, 4, 8 or 16
   localparam int unsigned CovW       = $clog2(COV_SAMPLES + 1)
 ) (
-  input  logic [DEPTH_BITS-1:0] z_i,           // polygon pixel depth
-  input  logic [DEPTH_BITS-1:0] stored_z_i,    // background pixel depth
+  input  logic                  lt_i,          // polygon depth z < background depth Zs
+  input  logic                  eq_i,          // z == Zs
   input  logic [CovW-1:0]       cov_i,         // k
   input  logic [CovW-1:0]       stored_cov_i,  // cs
   output logic                  nearer_o,      // z < Zs: the only case that changes the depth
@@ -31,8 +31,8 @@ module zb_coverage_composite #(
 
   assign sum  = {1'b0, cov_i} + {1'b0, stored_cov_i};
   assign full = sum >= {1'b0, Full};
-  assign lt   = z_i < stored_z_i;
-  assign eq   = z_i == stored_z_i;
+  assign lt   = lt_i;
+  assign eq   = eq_i;
 
   assign nearer_o = lt;
   assign cov_o    = full ? Full : sum[CovW-1:0];

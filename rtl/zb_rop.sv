@@ -1,16 +1,19 @@
 // zb_rop: the per-pixel datapath (raster operations unit) of docs/datapath.md, top level.
 //
-// Three-stage pipeline, one fragment per clock, no interlock (docs/rtl.md has the diagram):
-//   S0  accept (frag_valid_i && frag_ready_o); issue the depth- and coverage-memory reads.
-//   S1  depth, peel and coverage read data; depth and coverage forwarding; depth test and the
-//       peel test (z > peel), or in coverage mode the four-case decision
-//       (zb_coverage_composite); depth and coverage writes; colour read.
-//   S2  colour read data; colour forwarding; blend; write mask; colour write.
-// Each memory is read one edge before it is written, so a fragment's read can miss only the
-// write landing on the same edge (the previous fragment's); one forwarding register per
-// memory holds that write's post-state. The peel memory is written only through the tile port,
-// never by a fragment, so it needs no forwarding.
-// Reset: rst_ni, asynchronous, active low. Memories are not reset (load the tile).
+// Pipelined for 100 MHz in iCE40 fabric, one fragment per clock; docs/rtl.md has the diagram.
+//   I/S  input register and skid register (frag_ready_o comes from a flop)
+//   M    interlock: waits while a fragment to the same pixel issued less than Span cycles
+//        ago; issues (depth, coverage and peel reads) otherwise
+//   X1..X4   depth, coverage, peel: data, compare, decide, write (edge E4)
+//   X1..X6   fragment side of the blend: m(s, a), k, 3k, coverage weight terms
+//   X6..X11  colour: read at edge E6, blend (zb_blend, 4 stages), write at edge E11
+// A fragment issues at least Span = 4 cycles after an older one to its pixel, so every read
+// sees every older write: from the memory; at the edge of the older fragment's write (depth,
+// coverage at E4; colour at E11), from the forwarding register that holds that write (the RAMs
+// need no read-during-write behaviour); or, a colour read one edge before the older colour
+// write, from that write's data itself, bypassed into the younger fragment's X7.
+// Reset: rst_ni, asynchronous, active low, on control state only (valid bits, interlock, pass
+// state, counters). Memories and data registers are not reset.
 module zb_rop #(
   parameter int unsigned DEPTH_BITS = 24,   // 8..32
   parameter int unsigned TILE_W     = 64,   // power of two
@@ -84,6 +87,7 @@ module zb_rop #(
   logic [2:0]  st_blend;
   logic [3:0]  st_color_mask;
 
+
   always_comb begin
     state_d = state_q;
     if (state_we_i) begin
@@ -101,47 +105,74 @@ module zb_rop #(
   logic st_cov;  // coverage mode: blend code 3 (docs/datapath.md "Coverage blend")
   assign st_cov = st_blend == 3'd3;
 
-  // ---------------------------------------------------------------------------------------
-  // Tile port decode
-  // ---------------------------------------------------------------------------------------
-  logic tile_rd, tile_wr;
+  localparam int unsigned QW    = 8 + CovW;  // coverage blend addend w*s + N/2 (zb_blend)
+  // A younger fragment to the same pixel issues at least Span cycles after the older one. At
+  // Span its depth and coverage reads meet the older one's writes (E4) and take the written
+  // words from the forwarding registers; its colour read (E6 = the older one's E10) is one edge
+  // early and takes the older one's write data in X7, where the older one is in X11; at Span + 1
+  // its colour read meets the older colour write (fwd_color_q). Below 4 the older result would
+  // not exist yet when the younger fragment's X7 needs it.
+  localparam int unsigned Span  = 4;
 
-  assign tile_rd = tile_req_i & ~tile_we_i;
-  assign tile_wr = tile_req_i &  tile_we_i;
-
   // ---------------------------------------------------------------------------------------
-  // S0: accept, tile-local address, depth read
+  // Input: I (main) and S (skid). frag_ready_o is a flop (S empty) gated by the two inputs
+  // that stop the stream, so it is not at the end of the interlock's comparators.
   // ---------------------------------------------------------------------------------------
-  logic             accept;
-  logic [15:0]      dx, dy;
-  logic [AddrW-1:0] s0_addr;
+  logic                  accept, in_ready_d, in_ready_q;
+  logic [15:0]           dx, dy;
+  logic [AddrW-1:0]      in_addr;
+  logic                  i_valid_d, i_valid_q, s_valid_d, s_valid_q;
+  logic [AddrW-1:0]      i_addr_d, i_addr_q, s_addr_d, s_addr_q;
+  logic [DEPTH_BITS-1:0] i_z_d, i_z_q, s_z_d, s_z_q;
+  logic [31:0]           i_rgba_d, i_rgba_q, s_rgba_d, s_rgba_q;
+  logic [CovW-1:0]       i_cov_d, i_cov_q, s_cov_d, s_cov_q;
+  logic                  i_free;       // I's fragment leaves (or I is empty) at this edge
+  logic                  m_adv;        // M takes I's fragment at this edge
 
-  assign frag_ready_o = ~stall_i & ~tile_req_i;
+  assign frag_ready_o = in_ready_q & ~stall_i & ~tile_req_i;
   assign accept       = frag_valid_i & frag_ready_o;
-
-  assign dx      = frag_x_i - tile_x0_i;
-  assign dy      = frag_y_i - tile_y0_i;
-  assign s0_addr = {dy[YW-1:0], dx[XW-1:0]};   // y_local * TILE_W + x_local
-
-  logic                  s1_valid_d, s1_valid_q;
-  logic [AddrW-1:0]      s1_addr_d, s1_addr_q;
-  logic [DEPTH_BITS-1:0] s1_z_d, s1_z_q;
-  logic [31:0]           s1_rgba_d, s1_rgba_q;
-  logic [CovW-1:0]       s1_cov_d, s1_cov_q;
+  assign dx           = frag_x_i - tile_x0_i;
+  assign dy           = frag_y_i - tile_y0_i;
+  assign in_addr      = {dy[YW-1:0], dx[XW-1:0]};   // y_local * TILE_W + x_local
+  assign i_free       = ~i_valid_q | m_adv;
 
   always_comb begin
-    s1_valid_d = accept;
-    s1_addr_d  = s1_addr_q;
-    s1_z_d     = s1_z_q;
-    s1_rgba_d  = s1_rgba_q;
-    s1_cov_d   = s1_cov_q;
-    if (accept) begin
-      s1_addr_d = s0_addr;
-      s1_z_d    = frag_z_i;
-      s1_rgba_d = frag_rgba_i;
-      s1_cov_d  = frag_cov_i;
+    i_valid_d = i_valid_q;
+    i_addr_d  = i_addr_q;
+    i_z_d     = i_z_q;
+    i_rgba_d  = i_rgba_q;
+    i_cov_d   = i_cov_q;
+    s_valid_d = s_valid_q;
+    s_addr_d  = s_addr_q;
+    s_z_d     = s_z_q;
+    s_rgba_d  = s_rgba_q;
+    s_cov_d   = s_cov_q;
+    if (i_free) begin
+      if (s_valid_q) begin          // (no accept: frag_ready_o is low while S is full)
+        i_valid_d = 1'b1;
+        i_addr_d  = s_addr_q;
+        i_z_d     = s_z_q;
+        i_rgba_d  = s_rgba_q;
+        i_cov_d   = s_cov_q;
+        s_valid_d = 1'b0;
+      end else begin
+        i_valid_d = accept;
+        if (accept) begin
+          i_addr_d = in_addr;
+          i_z_d    = frag_z_i;
+          i_rgba_d = frag_rgba_i;
+          i_cov_d  = frag_cov_i;
+        end
+      end
+    end else if (accept) begin
+      s_valid_d = 1'b1;
+      s_addr_d  = in_addr;
+      s_z_d     = frag_z_i;
+      s_rgba_d  = frag_rgba_i;
+      s_cov_d   = frag_cov_i;
     end
   end
+  assign in_ready_d = ~s_valid_d;
 
 `ifndef SYNTHESIS
   // An accepted fragment lies inside the resident tile.
@@ -152,322 +183,467 @@ module zb_rop #(
       accept |-> (frag_cov_i <= CovW'(COV_SAMPLES)));
 `endif
 
-  // Depth memory. Read: S0 (fragment) or the tile port. Write: S1 (fragment) or the tile port.
-  logic                  dmem_re, dmem_we;
-  logic [AddrW-1:0]      dmem_raddr, dmem_waddr;
-  logic [DEPTH_BITS-1:0] dmem_rdata, dmem_wdata;
-
   // ---------------------------------------------------------------------------------------
-  // S1: depth forwarding, depth test, depth write, colour read
+  // M: the interlock. X1..X(Span-1) hold the fragments issued 1..Span-1 edges ago; M's
+  // fragment waits while one of them has its address. hit_q[k-1] = "Xk has M's address", kept
+  // registered: computed when a fragment enters M (I's address against M's and X1..X(Span-2)'s,
+  // which become X1..X(Span-1)), shifted while M waits.
   // ---------------------------------------------------------------------------------------
-  logic                  dfwd_valid_d, dfwd_valid_q;
-  logic [AddrW-1:0]      dfwd_addr_d, dfwd_addr_q;
-  logic [DEPTH_BITS-1:0] dfwd_depth_d, dfwd_depth_q;
-  logic                  s1_dfwd_hit;
-  logic [DEPTH_BITS-1:0] s1_zs;        // stored depth as sequential processing sees it
-  logic                  s1_cmp, s1_pass, s1_dwe;
+  logic                  m_valid_d, m_valid_q;
+  logic [AddrW-1:0]      m_addr_d, m_addr_q;
+  logic [DEPTH_BITS-1:0] m_z_d, m_z_q;
+  logic [31:0]           m_rgba_d, m_rgba_q;
+  logic [CovW-1:0]       m_cov_d, m_cov_q;
+  logic [9:0]            m_a3_d, m_a3_q;      // 3 a for the premultiply (zb_premul)
+  logic [Span-2:0]       hit_d, hit_q;
+  logic                  hazard, issue;
 
-  // The previous fragment's depth write landed on the same edge as this fragment's read
-  // (read-first: the read returned the old word), so take its post-state from dfwd.
-  assign s1_dfwd_hit = dfwd_valid_q && (dfwd_addr_q == s1_addr_q);
-  assign s1_zs       = s1_dfwd_hit ? dfwd_depth_q : dmem_rdata;
+  // Pipeline after M: one valid bit and address per stage, x[k] for Xk (k = 1..11).
+  localparam int unsigned Last = 11;
+  logic [Last:1]         x_valid_q;
+  logic [Last*AddrW-1:0] x_addr_q;          // Xk at [(k-1)*AddrW +: AddrW]
+  logic [AddrW-1:0]      x1_addr, x4_addr, x6_addr, x10_addr, x11_addr;
+  assign x1_addr  = x_addr_q[0*AddrW +: AddrW];
+  assign x4_addr  = x_addr_q[3*AddrW +: AddrW];
+  assign x6_addr  = x_addr_q[5*AddrW +: AddrW];
+  assign x10_addr = x_addr_q[9*AddrW +: AddrW];
+  assign x11_addr = x_addr_q[10*AddrW +: AddrW];
 
-  zb_depth_test #(
-    .DEPTH_BITS(DEPTH_BITS)
-  ) u_depth_test (
-    .func_i  (st_depth_func),
-    .z_i     (s1_z_q),
-    .stored_i(s1_zs),
-    .pass_o  (s1_cmp)
-  );
-
-  // Coverage memory: read and written with the depth memory's timing (read S0, write S1), so
-  // it forwards the same way (vfwd).
-  logic                  vmem_re, vmem_we;
-  logic [AddrW-1:0]      vmem_raddr, vmem_waddr;
-  logic [CovW-1:0]       vmem_rdata, vmem_wdata;
-  logic                  vfwd_valid_d, vfwd_valid_q;
-  logic [AddrW-1:0]      vfwd_addr_d, vfwd_addr_q;
-  logic [CovW-1:0]       vfwd_cov_d, vfwd_cov_q;
-  logic                  s1_vfwd_hit;
-  logic [CovW-1:0]       s1_cs;        // stored coverage as sequential processing sees it
-  logic                  s1_nearer, s1_vwe;
-  logic [CovW-1:0]       s1_weight, s1_cov_new;
-
-  assign s1_vfwd_hit = vfwd_valid_q && (vfwd_addr_q == s1_addr_q);
-  assign s1_cs       = s1_vfwd_hit ? vfwd_cov_q : vmem_rdata;
-
-  zb_coverage_composite #(
-    .DEPTH_BITS (DEPTH_BITS),
-    .COV_SAMPLES(COV_SAMPLES)
-  ) u_coverage (
-    .z_i         (s1_z_q),
-    .stored_z_i  (s1_zs),
-    .cov_i       (s1_cov_q),
-    .stored_cov_i(s1_cs),
-    .nearer_o    (s1_nearer),
-    .weight_o    (s1_weight),
-    .cov_o       (s1_cov_new)
-  );
-
-  // Peel memory (docs/datapath.md "Peel test"): read in S0 with the depth memory, written only
-  // by the tile port. Its word is constant during a pass, so the read is never stale.
-  logic                  pmem_re, pmem_we;
-  logic [AddrW-1:0]      pmem_raddr;
-  logic [DEPTH_BITS-1:0] pmem_rdata;
-  logic                  s1_peel_ok;
-
-  assign pmem_re    = accept | tile_rd;
-  assign pmem_raddr = tile_req_i ? tile_addr_i : s0_addr;
-  assign pmem_we    = tile_wr;
-  assign s1_peel_ok = s1_z_q > pmem_rdata;   // strictly behind the previous layer
-
-  zb_tile_mem #(
-    .WIDTH(DEPTH_BITS),
-    .WORDS(Words)
-  ) u_peel_mem (
-    .clk_i  (clk_i),
-    .re_i   (pmem_re),
-    .raddr_i(pmem_raddr),
-    .rdata_o(pmem_rdata),
-    .we_i   (pmem_we),
-    .waddr_i(tile_addr_i),
-    .wdata_i(tile_wpeel_i)
-  );
-
-  // Test off: every fragment passes the depth test and depth is never written. Peel test on:
-  // a fragment must also lie strictly behind the peel plane. Coverage mode: every fragment
-  // passes to the compositing (the peel test is not used); depth is written only in the
-  // nearer case.
-  assign s1_pass = st_cov | ((~st_depth_test | s1_cmp) & (~st_peel_test | s1_peel_ok));
-  assign s1_dwe  = s1_valid_q & s1_pass & st_depth_test & st_depth_write &
-                   (~st_cov | s1_nearer);
-  assign s1_vwe  = s1_valid_q & st_cov;
+  assign hazard = |hit_q;
+  assign issue  = m_valid_q & ~hazard;
+  assign m_adv  = ~m_valid_q | ~hazard;
 
   always_comb begin
-    vfwd_valid_d = s1_valid_q;
-    vfwd_addr_d  = s1_addr_q;
-    vfwd_cov_d   = s1_vwe ? s1_cov_new : s1_cs;
-  end
-
-  always_comb begin
-    vmem_re    = accept | tile_rd;
-    vmem_raddr = tile_req_i ? tile_addr_i : s0_addr;
-    vmem_we    = s1_vwe | tile_wr;
-    vmem_waddr = s1_vwe ? s1_addr_q : tile_addr_i;
-    vmem_wdata = s1_vwe ? s1_cov_new : tile_wcov_i;
-  end
-
-  zb_tile_mem #(
-    .WIDTH(CovW),
-    .WORDS(Words)
-  ) u_cov_mem (
-    .clk_i  (clk_i),
-    .re_i   (vmem_re),
-    .raddr_i(vmem_raddr),
-    .rdata_o(vmem_rdata),
-    .we_i   (vmem_we),
-    .waddr_i(vmem_waddr),
-    .wdata_i(vmem_wdata)
-  );
-
-`ifndef SYNTHESIS
-  // The coverage plane holds counts 0..N: a coverage-mode fragment never reads more.
-  StoredCoverageInRange: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (s1_valid_q && st_cov) |-> (s1_cs <= CovW'(COV_SAMPLES)));
-`endif
-
-  always_comb begin
-    dfwd_valid_d = s1_valid_q;
-    dfwd_addr_d  = s1_addr_q;
-    dfwd_depth_d = s1_dwe ? s1_z_q : s1_zs;
-  end
-
-  always_comb begin
-    dmem_re    = accept | tile_rd;
-    dmem_raddr = tile_req_i ? tile_addr_i : s0_addr;
-    dmem_we    = s1_dwe | tile_wr;
-    dmem_waddr = s1_dwe ? s1_addr_q : tile_addr_i;
-    dmem_wdata = s1_dwe ? s1_z_q : tile_wdepth_i;
-  end
-
-  zb_tile_mem #(
-    .WIDTH(DEPTH_BITS),
-    .WORDS(Words)
-  ) u_depth_mem (
-    .clk_i  (clk_i),
-    .re_i   (dmem_re),
-    .raddr_i(dmem_raddr),
-    .rdata_o(dmem_rdata),
-    .we_i   (dmem_we),
-    .waddr_i(dmem_waddr),
-    .wdata_i(dmem_wdata)
-  );
-
-  logic             s2_valid_d, s2_valid_q;
-  logic [AddrW-1:0] s2_addr_d, s2_addr_q;
-  logic [31:0]      s2_rgba_d, s2_rgba_q;
-  logic             s2_pass_d, s2_pass_q;
-  logic [CovW-1:0]  s2_weight_d, s2_weight_q;
-
-  always_comb begin
-    s2_valid_d  = s1_valid_q;
-    s2_addr_d   = s2_addr_q;
-    s2_rgba_d   = s2_rgba_q;
-    s2_pass_d   = s2_pass_q;
-    s2_weight_d = s2_weight_q;
-    if (s1_valid_q) begin
-      s2_addr_d   = s1_addr_q;
-      s2_rgba_d   = s1_rgba_q;
-      s2_pass_d   = s1_pass;
-      s2_weight_d = s1_weight;
+    m_valid_d = m_valid_q;
+    m_addr_d  = m_addr_q;
+    m_z_d     = m_z_q;
+    m_rgba_d  = m_rgba_q;
+    m_cov_d   = m_cov_q;
+    m_a3_d    = m_a3_q;
+    hit_d     = {hit_q[Span-3:0], 1'b0};
+    if (m_adv) begin
+      m_valid_d = i_valid_q;
+      m_addr_d  = i_addr_q;
+      m_z_d     = i_z_q;
+      m_rgba_d  = i_rgba_q;
+      m_cov_d   = i_cov_q;
+      m_a3_d    = {2'b00, i_rgba_q[31:24]} + {1'b0, i_rgba_q[31:24], 1'b0};
+      hit_d[0]  = i_valid_q & issue & (i_addr_q == m_addr_q);
+      for (int unsigned k = 1; k < Span - 1; k++) begin
+        hit_d[k] = i_valid_q & x_valid_q[k] & (i_addr_q == x_addr_q[(k-1)*AddrW +: AddrW]);
+      end
     end
   end
 
   // ---------------------------------------------------------------------------------------
-  // S2: colour forwarding, blend, write mask, colour write
+  // Depth, coverage and peel planes: read at the issue edge E0 (M's address), written at E4.
   // ---------------------------------------------------------------------------------------
-  logic             cmem_re, cmem_we;
-  logic [AddrW-1:0] cmem_raddr, cmem_waddr;
-  logic [31:0]      cmem_rdata, cmem_wdata;
+  logic [DEPTH_BITS-1:0] dmem_rdata, pmem_rdata;
+  logic [CovW-1:0]       vmem_rdata;
+  logic                  x4_dwe, x4_vwe;
+  logic [DEPTH_BITS-1:0] x4_z_q;
+  logic [CovW-1:0]       x4_cov_new_q;
 
-  logic             cfwd_valid_d, cfwd_valid_q;
-  logic [AddrW-1:0] cfwd_addr_d, cfwd_addr_q;
-  logic [31:0]      cfwd_color_d, cfwd_color_q;
-  logic             s2_cfwd_hit;
-  logic [31:0]      s2_cs;          // stored colour as sequential processing sees it
-  logic [31:0]      s2_blended, s2_merged;
-  logic             s2_cwe;
+  zb_plane #(
+    .WIDTH    (DEPTH_BITS),
+    .WORDS    (Words),
+    .FORWARDED(1'b1)
+  ) u_depth_plane (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .tile_req_i  (tile_req_i),
+    .tile_we_i   (tile_we_i),
+    .tile_addr_i (tile_addr_i),
+    .tile_wdata_i(tile_wdepth_i),
+    .pipe_re_i   (issue),
+    .pipe_raddr_i(m_addr_q),
+    .pipe_we_i   (x4_dwe),
+    .pipe_waddr_i(x4_addr),
+    .pipe_wdata_i(x4_z_q),
+    .rdata_o     (dmem_rdata)
+  );
 
-  assign s2_cfwd_hit = cfwd_valid_q && (cfwd_addr_q == s2_addr_q);
-  assign s2_cs       = s2_cfwd_hit ? cfwd_color_q : cmem_rdata;
+  zb_plane #(
+    .WIDTH    (CovW),
+    .WORDS    (Words),
+    .FORWARDED(1'b1)
+  ) u_cov_plane (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .tile_req_i  (tile_req_i),
+    .tile_we_i   (tile_we_i),
+    .tile_addr_i (tile_addr_i),
+    .tile_wdata_i(tile_wcov_i),
+    .pipe_re_i   (issue),
+    .pipe_raddr_i(m_addr_q),
+    .pipe_we_i   (x4_vwe),
+    .pipe_waddr_i(x4_addr),
+    .pipe_wdata_i(x4_cov_new_q),
+    .rdata_o     (vmem_rdata)
+  );
+
+  // Peel: written only by the tile port, so its word is constant during a pass.
+  zb_plane #(
+    .WIDTH(DEPTH_BITS),
+    .WORDS(Words)
+  ) u_peel_plane (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .tile_req_i  (tile_req_i),
+    .tile_we_i   (tile_we_i),
+    .tile_addr_i (tile_addr_i),
+    .tile_wdata_i(tile_wpeel_i),
+    .pipe_re_i   (issue),
+    .pipe_raddr_i(m_addr_q),
+    .pipe_we_i   (1'b0),
+    .pipe_waddr_i(m_addr_q),
+    .pipe_wdata_i(m_z_q),
+    .rdata_o     (pmem_rdata)
+  );
+
+  // Depth and coverage forwarding: a fragment issued at an older one's E4 with its address
+  // reads the word that edge writes; the written word replaces the RAM's in X1.
+  logic                  dfwd_hit_q, vfwd_hit_q;
+  logic [DEPTH_BITS-1:0] dfwd_z_q, x1_zs;
+  logic [CovW-1:0]       vfwd_cov_q, x1_cs;
+  assign x1_zs = dfwd_hit_q ? dfwd_z_q : dmem_rdata;
+  assign x1_cs = vfwd_hit_q ? vfwd_cov_q : vmem_rdata;
+
+  // X1: read data arrives; registered with at most the forwarding mux (the RAM's clock-to-out
+  // is long on iCE40).
+  logic [DEPTH_BITS-1:0] x1_z_q, x2_z_q, x3_z_q;
+  logic [6*32-1:0]       x_rgba_q;          // X1..X6, Xk at [(k-1)*32 +: 32]
+  logic [31:0]           x1_rgba, x4_rgba, x6_rgba;
+  logic [CovW-1:0]       x1_cov_q, x2_cov_q, x3_cov_q;
+  logic [DEPTH_BITS-1:0] x2_zs_q, x2_peel_q;
+  logic [CovW-1:0]       x2_cs_q, x3_cs_q;
+  logic [39:0]           x2_s3_q, x3_s3_q, x4_s3_q;   // 3 s per channel
+
+  // X2: compares.
+  logic x3_lt_q, x3_eq_q, x3_behind_q;
+
+  // X3: decisions (zb_depth_test, zb_coverage_composite).
+  logic            x3_cmp, x3_pass, x3_nearer, x3_dwe;
+  logic [CovW-1:0] x3_weight, x3_cov_new;
+  logic            x4_pass_q, x4_dwe_q;
+  logic [CovW-1:0] x4_weight_q;
+
+  zb_depth_test u_depth_test (
+    .func_i(st_depth_func),
+    .lt_i  (x3_lt_q),
+    .eq_i  (x3_eq_q),
+    .pass_o(x3_cmp)
+  );
+
+  zb_coverage_composite #(
+    .COV_SAMPLES(COV_SAMPLES)
+  ) u_coverage (
+    .lt_i        (x3_lt_q),
+    .eq_i        (x3_eq_q),
+    .cov_i       (x3_cov_q),
+    .stored_cov_i(x3_cs_q),
+    .nearer_o    (x3_nearer),
+    .weight_o    (x3_weight),
+    .cov_o       (x3_cov_new)
+  );
+
+  // Test off: every fragment passes the depth test and depth is never written. Peel test on:
+  // a fragment must also lie strictly behind the peel plane. Coverage mode: every fragment
+  // passes to the compositing (the peel test is not used); depth is written only when nearer.
+  assign x3_pass = st_cov | ((~st_depth_test | x3_cmp) & (~st_peel_test | x3_behind_q));
+  assign x3_dwe  = x3_pass & st_depth_test & st_depth_write & (~st_cov | x3_nearer);
+
+  // X4: depth and coverage writes (edge E4); the fragment's counters.
+  assign x4_dwe = x_valid_q[4] & x4_dwe_q;
+  assign x4_vwe = x_valid_q[4] & st_cov;
+
+  // ---------------------------------------------------------------------------------------
+  // Fragment side of the blend, X1..X6: m(s, a) (zb_premul, X1 -> X5), the coverage weight's
+  // terms (X4 -> X6), then per mode k, 3k and the addend for zb_blend (X6 -> X7).
+  // ---------------------------------------------------------------------------------------
+  localparam logic [CovW-1:0] Full = CovW'(COV_SAMPLES);
+  localparam logic [QW-1:0]   Half = QW'(COV_SAMPLES / 2);
+
+  logic [31:0] x5_ms, x6_ms_q;
+  logic [39:0] x6_ms3_q;
+  logic [6*10-1:0] x_a3_q;                  // X1..X6, Xk at [(k-1)*10 +: 10]
+  logic [9:0]  x6_ia3_q;                    // 3 (255 - a)
+  logic [7:0]  x5_kc_q, x6_kc_q;            // coverage k = N - w
+  logic [9:0]  x6_kc3_q;
+  logic [4*12-1:0] x5_wsa_q, x5_wsb_q;      // w s = sel(w[1:0]) s + 4 sel(w[3:2]) s + 16 w[4] s
+  logic [4*QW-1:0] x6_q_q, x7_q_q;
+  logic [31:0] x7_k_q, x7_add_q;
+  logic [39:0] x7_k3_q;
+  logic [Last:4] x_pass_q;                  // X4..X11
+
+  assign x1_rgba = x_rgba_q[0*32 +: 32];
+  assign x4_rgba = x_rgba_q[3*32 +: 32];
+  assign x6_rgba = x_rgba_q[5*32 +: 32];
+
+  zb_premul u_premul (
+    .clk_i (clk_i),
+    .rgba_i(x1_rgba),
+    .a3_i  (x_a3_q[0*10 +: 10]),
+    .ms_o  (x5_ms)
+  );
+
+  // The weight terms need w (X4) and 3 s (X1 -> X2).
+  logic [4*12-1:0] x4_wsa, x4_wsb;
+  logic [CovW-1:0] x4_kc;
+  assign x4_kc = Full - x4_weight_q;
+  for (genvar c = 0; c < 4; c++) begin : g_weight
+    logic [7:0]  s;
+    logic [9:0]  s3;
+    logic [9:0]  sel_lo, sel_hi;
+    logic [CovW-1:0] w;
+    assign s  = x4_rgba[8*c +: 8];
+    assign s3 = x4_s3_q[10*c +: 10];
+    // w <= N <= 16: bits above 4 are zero; widen to five bits.
+    logic [4:0] w5;
+    assign w  = x4_weight_q;
+    assign w5 = 5'(w);
+    always_comb begin
+      unique case (w5[1:0])
+        2'd0:    sel_lo = '0;
+        2'd1:    sel_lo = {2'b00, s};
+        2'd2:    sel_lo = {1'b0, s, 1'b0};
+        default: sel_lo = s3;
+      endcase
+      unique case (w5[3:2])
+        2'd0:    sel_hi = '0;
+        2'd1:    sel_hi = {2'b00, s};
+        2'd2:    sel_hi = {1'b0, s, 1'b0};
+        default: sel_hi = s3;
+      endcase
+    end
+    assign x4_wsa[12*c +: 12] = {2'b00, sel_lo} + {sel_hi, 2'b00};
+    assign x4_wsb[12*c +: 12] = w5[4] ? {s, 4'h0} : 12'h000;
+  end
+
+  // Per mode: k, 3k and the addend (zb_blend's header), X6 -> X7.
+  logic [31:0] x6_k, x6_add;
+  logic [39:0] x6_k3;
+  logic [7:0]  x6_a;
+  assign x6_a = x6_rgba[31:24];
+
+  for (genvar c = 0; c < 4; c++) begin : g_operands
+    logic [7:0] s;
+    assign s = x6_rgba[8*c +: 8];
+    always_comb begin
+      x6_k[8*c +: 8]    = 8'h00;                    // replace: m(0) + s = s
+      x6_k3[10*c +: 10] = 10'h000;
+      x6_add[8*c +: 8]  = s;
+      unique case (st_blend)
+        3'd1: begin                                 // alpha
+          x6_k[8*c +: 8]    = ~x6_a;
+          x6_k3[10*c +: 10] = x6_ia3_q;
+          x6_add[8*c +: 8]  = x6_ms_q[8*c +: 8];
+        end
+        3'd2: begin                                 // additive: m(d, 255) = d
+          x6_k[8*c +: 8]    = 8'hff;
+          x6_k3[10*c +: 10] = 10'd765;
+          x6_add[8*c +: 8]  = x6_ms_q[8*c +: 8];
+        end
+        3'd3: begin                                 // coverage
+          x6_k[8*c +: 8]    = x6_kc_q;
+          x6_k3[10*c +: 10] = x6_kc3_q;
+          x6_add[8*c +: 8]  = 8'h00;
+        end
+        3'd4: begin                                 // under: RGB scale m(s, a), alpha a
+          x6_k[8*c +: 8]    = (c == 3) ? x6_a : x6_ms_q[8*c +: 8];
+          x6_k3[10*c +: 10] = (c == 3) ? x_a3_q[5*10 +: 10] : x6_ms3_q[10*c +: 10];
+          x6_add[8*c +: 8]  = 8'h00;
+        end
+        default: ;
+      endcase
+    end
+  end
+
+  // ---------------------------------------------------------------------------------------
+  // Colour: read at E6 (X6's address), blend X7..X11, write at E11 when passed and masked in.
+  // ---------------------------------------------------------------------------------------
+  logic [31:0] cmem_rdata, x11_color, x7_dst;
+  logic        x11_cwe;
+  logic        fwd_hit_q;       // X7: X6's read met X11's write of its pixel at E6
+  logic [31:0] fwd_color_q;     // the word written at that edge
+  logic        byp_hit_q;       // X7: the fragment now in X11 writes X7's pixel at this edge
+  logic        x10_cwe;
+
+  // Forwarding: the RAM's word for a read at the edge of a write to it is undefined
+  // (no_rw_check), and the write is the one the reader must see. Bypass: X7's read came one
+  // edge before the colour write of the fragment now in X11, the newest word of the pixel;
+  // it takes precedence over an older one in fwd_color_q.
+  assign x7_dst  = byp_hit_q ? x11_color : (fwd_hit_q ? fwd_color_q : cmem_rdata);
+  assign x10_cwe = x_valid_q[10] & x_pass_q[10] & (st_color_mask != 4'h0);
+
+  assign x11_cwe = x_valid_q[11] & x_pass_q[11] & (st_color_mask != 4'h0);
+
+  zb_plane #(
+    .WIDTH    (32),
+    .WORDS    (Words),
+    .FORWARDED(1'b1)
+  ) u_color_plane (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .tile_req_i  (tile_req_i),
+    .tile_we_i   (tile_we_i),
+    .tile_addr_i (tile_addr_i),
+    .tile_wdata_i(tile_wcolor_i),
+    .pipe_re_i   (x_valid_q[6]),
+    .pipe_raddr_i(x6_addr),
+    .pipe_we_i   (x11_cwe),
+    .pipe_waddr_i(x11_addr),
+    .pipe_wdata_i(x11_color),
+    .rdata_o     (cmem_rdata)
+  );
 
   zb_blend #(
     .COV_SAMPLES(COV_SAMPLES)
   ) u_blend (
-    .mode_i  (st_blend),
-    .src_i   (s2_rgba_q),
-    .dst_i   (s2_cs),
-    .weight_i(s2_weight_q),
-    .color_o (s2_blended)
-  );
-
-  zb_color_mask u_color_mask (
-    .mask_i   (st_color_mask),
-    .blended_i(s2_blended),
-    .dst_i    (s2_cs),
-    .color_o  (s2_merged)
-  );
-
-  assign s2_cwe = s2_valid_q & s2_pass_q & (st_color_mask != 4'h0);
-
-  always_comb begin
-    cfwd_valid_d = s2_valid_q;
-    cfwd_addr_d  = s2_addr_q;
-    cfwd_color_d = s2_cwe ? s2_merged : s2_cs;
-  end
-
-  always_comb begin
-    cmem_re    = s1_valid_q | tile_rd;
-    cmem_raddr = s1_valid_q ? s1_addr_q : tile_addr_i;
-    cmem_we    = s2_cwe | tile_wr;
-    cmem_waddr = s2_cwe ? s2_addr_q : tile_addr_i;
-    cmem_wdata = s2_cwe ? s2_merged : tile_wcolor_i;
-  end
-
-  zb_tile_mem #(
-    .WIDTH(32),
-    .WORDS(Words)
-  ) u_color_mem (
     .clk_i  (clk_i),
-    .re_i   (cmem_re),
-    .raddr_i(cmem_raddr),
-    .rdata_o(cmem_rdata),
-    .we_i   (cmem_we),
-    .waddr_i(cmem_waddr),
-    .wdata_i(cmem_wdata)
+    .mode_i (st_blend),
+    .mask_i (st_color_mask),
+    .dst_i  (x7_dst),
+    .k_i    (x7_k_q),
+    .k3_i   (x7_k3_q),
+    .add_i  (x7_add_q),
+    .q_i    (x7_q_q),
+    .color_o(x11_color)
   );
 
   assign tile_rcolor_o = cmem_rdata;
   assign tile_rdepth_o = dmem_rdata;
   assign tile_rcov_o   = vmem_rdata;
   assign tile_rpeel_o  = pmem_rdata;
-  assign busy_o        = s1_valid_q | s2_valid_q;
+  assign busy_o        = i_valid_q | s_valid_q | m_valid_q | (|x_valid_q);
 
   // ---------------------------------------------------------------------------------------
-  // Flops
+  // Flops. Control (valid bits, interlock, ready, pass state) reset; data not.
   // ---------------------------------------------------------------------------------------
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      state_q      <= '0;
-      s1_valid_q   <= 1'b0;
-      s1_addr_q    <= '0;
-      s1_z_q       <= '0;
-      s1_rgba_q    <= '0;
-      s1_cov_q     <= '0;
-      vfwd_valid_q <= 1'b0;
-      vfwd_addr_q  <= '0;
-      vfwd_cov_q   <= '0;
-      s2_weight_q  <= '0;
-      dfwd_valid_q <= 1'b0;
-      dfwd_addr_q  <= '0;
-      dfwd_depth_q <= '0;
-      s2_valid_q   <= 1'b0;
-      s2_addr_q    <= '0;
-      s2_rgba_q    <= '0;
-      s2_pass_q    <= 1'b0;
-      cfwd_valid_q <= 1'b0;
-      cfwd_addr_q  <= '0;
-      cfwd_color_q <= '0;
+      state_q    <= '0;
+      in_ready_q <= 1'b1;
+      i_valid_q  <= 1'b0;
+      s_valid_q  <= 1'b0;
+      m_valid_q  <= 1'b0;
+      hit_q      <= '0;
+      x_valid_q  <= '0;
     end else begin
-      state_q      <= state_d;
-      s1_valid_q   <= s1_valid_d;
-      s1_addr_q    <= s1_addr_d;
-      s1_z_q       <= s1_z_d;
-      s1_rgba_q    <= s1_rgba_d;
-      s1_cov_q     <= s1_cov_d;
-      vfwd_valid_q <= vfwd_valid_d;
-      vfwd_addr_q  <= vfwd_addr_d;
-      vfwd_cov_q   <= vfwd_cov_d;
-      s2_weight_q  <= s2_weight_d;
-      dfwd_valid_q <= dfwd_valid_d;
-      dfwd_addr_q  <= dfwd_addr_d;
-      dfwd_depth_q <= dfwd_depth_d;
-      s2_valid_q   <= s2_valid_d;
-      s2_addr_q    <= s2_addr_d;
-      s2_rgba_q    <= s2_rgba_d;
-      s2_pass_q    <= s2_pass_d;
-      cfwd_valid_q <= cfwd_valid_d;
-      cfwd_addr_q  <= cfwd_addr_d;
-      cfwd_color_q <= cfwd_color_d;
+      state_q    <= state_d;
+      in_ready_q <= in_ready_d;
+      i_valid_q  <= i_valid_d;
+      s_valid_q  <= s_valid_d;
+      m_valid_q  <= m_valid_d;
+      hit_q      <= hit_d;
+      x_valid_q  <= {x_valid_q[Last-1:1], issue};
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    i_addr_q <= i_addr_d;
+    i_z_q    <= i_z_d;
+    i_rgba_q <= i_rgba_d;
+    i_cov_q  <= i_cov_d;
+    s_addr_q <= s_addr_d;
+    s_z_q    <= s_z_d;
+    s_rgba_q <= s_rgba_d;
+    s_cov_q  <= s_cov_d;
+    m_addr_q <= m_addr_d;
+    m_z_q    <= m_z_d;
+    m_rgba_q <= m_rgba_d;
+    m_cov_q  <= m_cov_d;
+    m_a3_q   <= m_a3_d;
+
+    x_addr_q <= {x_addr_q[(Last-1)*AddrW-1:0], m_addr_q};
+    x_rgba_q <= {x_rgba_q[5*32-1:0], m_rgba_q};
+    x_a3_q   <= {x_a3_q[5*10-1:0], m_a3_q};
+
+    // X1 -> X2: read data; 3 s
+    x1_z_q    <= m_z_q;
+    x1_cov_q  <= m_cov_q;
+    x2_z_q    <= x1_z_q;
+    x2_cov_q  <= x1_cov_q;
+    x2_zs_q   <= x1_zs;
+    x2_peel_q <= pmem_rdata;
+    x2_cs_q   <= x1_cs;
+    for (int unsigned c = 0; c < 4; c++) begin
+      x2_s3_q[10*c +: 10] <= {2'b00, x1_rgba[8*c +: 8]} + {1'b0, x1_rgba[8*c +: 8], 1'b0};
+    end
+    // X2 -> X3: compares
+    x3_z_q      <= x2_z_q;
+    x3_cov_q    <= x2_cov_q;
+    x3_cs_q     <= x2_cs_q;
+    x3_s3_q     <= x2_s3_q;
+    x3_lt_q     <= x2_z_q < x2_zs_q;
+    x3_eq_q     <= x2_z_q == x2_zs_q;
+    x3_behind_q <= x2_z_q > x2_peel_q;
+    // X3 -> X4: decisions
+    x4_z_q       <= x3_z_q;
+    x4_s3_q      <= x3_s3_q;
+    x4_pass_q    <= x3_pass;
+    x4_dwe_q     <= x3_dwe;
+    x4_weight_q  <= x3_weight;
+    x4_cov_new_q <= x3_cov_new;
+    // X4 -> X5: coverage k = N - w and the w s terms
+    x5_kc_q  <= 8'(x4_kc);
+    x5_wsa_q <= x4_wsa;
+    x5_wsb_q <= x4_wsb;
+    // X5 -> X6: 3 k, q = w s + N/2, 3 m(s, a), 3 (255 - a)
+    x6_kc_q  <= x5_kc_q;
+    x6_kc3_q <= {2'b00, x5_kc_q} + {1'b0, x5_kc_q, 1'b0};
+    for (int unsigned c = 0; c < 4; c++) begin
+      x6_q_q[QW*c +: QW]    <= QW'(x5_wsa_q[12*c +: 12]) + QW'(x5_wsb_q[12*c +: 12]) + Half;
+      x6_ms3_q[10*c +: 10]  <= {2'b00, x5_ms[8*c +: 8]} + {1'b0, x5_ms[8*c +: 8], 1'b0};
+    end
+    x6_ms_q  <= x5_ms;
+    x6_ia3_q <= 10'd765 - x_a3_q[4*10 +: 10];
+    // X6 -> X7: zb_blend's operands
+    x7_k_q   <= x6_k;
+    x7_k3_q  <= x6_k3;
+    x7_add_q <= x6_add;
+    x7_q_q   <= x6_q_q;
+
+    dfwd_hit_q  <= x4_dwe & (m_addr_q == x4_addr);
+    dfwd_z_q    <= x4_z_q;
+    vfwd_hit_q  <= x4_vwe & (m_addr_q == x4_addr);
+    vfwd_cov_q  <= x4_cov_new_q;
+    fwd_hit_q   <= x_valid_q[6] & x11_cwe & (x6_addr == x11_addr);
+    fwd_color_q <= x11_color;
+    byp_hit_q   <= x_valid_q[6] & x10_cwe & (x6_addr == x10_addr);
+
+    x_pass_q[4] <= x3_pass;
+    for (int unsigned k = 5; k <= Last; k++) begin
+      x_pass_q[k] <= x_pass_q[k-1];
     end
   end
 
   // ---------------------------------------------------------------------------------------
-  // Counters (docs/datapath.md "Counters"); fragment events are counted in S1.
+  // Counters (docs/datapath.md "Counters"); fragment events are counted in X4.
   // ---------------------------------------------------------------------------------------
   localparam int unsigned NumCnt = 9;
 
-  logic                    s1_color_on, s1_reads_dest;
+  logic                    x4_valid, x4_color_on, reads_dest;
   logic [NumCnt-1:0]       cnt_inc;
   logic [NumCnt*CNT_W-1:0] cnt_all;
 
-  assign s1_color_on   = s1_valid_q & s1_pass & (st_color_mask != 4'h0);
+  assign x4_valid    = x_valid_q[4];
+  assign x4_color_on = x4_valid & x4_pass_q & (st_color_mask != 4'h0);
   // Replace with all four channels written needs no destination colour; the other modes
-  // (alpha, additive, coverage) blend with it.
-  assign s1_reads_dest = (st_blend != 3'd0) | (st_color_mask != 4'hf);
+  // (alpha, additive, coverage, under) blend with it.
+  assign reads_dest  = (st_blend != 3'd0) | (st_color_mask != 4'hf);
 
   always_comb begin
     cnt_inc    = '0;
-    cnt_inc[0] = s1_valid_q;                       // fragments_in
-    cnt_inc[1] = s1_valid_q & s1_pass;             // fragments_passed
-    cnt_inc[2] = s1_valid_q & ~s1_pass;            // fragments_killed
-    cnt_inc[3] = s1_valid_q & (st_depth_test | st_cov);  // depth_reads
-    cnt_inc[4] = s1_dwe;                           // depth_writes
-    cnt_inc[5] = s1_color_on & s1_reads_dest;      // color_reads
-    cnt_inc[6] = s1_color_on;                      // color_writes
-    cnt_inc[7] = frag_valid_i & ~frag_ready_o;     // stall cycles
-    cnt_inc[8] = 1'b1;                             // cycles
+    cnt_inc[0] = x4_valid;                              // fragments_in
+    cnt_inc[1] = x4_valid & x4_pass_q;                  // fragments_passed
+    cnt_inc[2] = x4_valid & ~x4_pass_q;                 // fragments_killed
+    cnt_inc[3] = x4_valid & (st_depth_test | st_cov);   // depth_reads
+    cnt_inc[4] = x4_dwe;                                // depth_writes
+    cnt_inc[5] = x4_color_on & reads_dest;              // color_reads
+    cnt_inc[6] = x4_color_on;                           // color_writes
+    cnt_inc[7] = frag_valid_i & ~frag_ready_o;          // stall cycles
+    cnt_inc[8] = 1'b1;                                  // cycles
   end
 
   zb_counters #(
@@ -499,73 +675,67 @@ module zb_rop #(
   // collide with the pipeline's).
   TilePortIdle: assert property (@(posedge clk_i) disable iff (!rst_ni)
       tile_req_i |-> !busy_o);
-
   // The pass state is written only while idle (a write in the cycle of an accept applies to
   // that fragment).
   StateWriteIdle: assert property (@(posedge clk_i) disable iff (!rst_ni)
       state_we_i |-> !busy_o);
 
-  // Forwarding invariant: a fragment's read can miss at most one write to its memory, the one
-  // landing on the read edge, and that write is the previous fragment's, held in the
-  // forwarding register. dwe_last_q/vwe_last_q/cwe_last_q record the writes of the previous
-  // edge.
-  logic             dwe_last_q, vwe_last_q, cwe_last_q;
-  logic [AddrW-1:0] dwaddr_last_q, vwaddr_last_q, cwaddr_last_q;
-
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      dwe_last_q    <= 1'b0;
-      dwaddr_last_q <= '0;
-      vwe_last_q    <= 1'b0;
-      vwaddr_last_q <= '0;
-      cwe_last_q    <= 1'b0;
-      cwaddr_last_q <= '0;
-    end else begin
-      dwe_last_q    <= dmem_we;
-      dwaddr_last_q <= dmem_waddr;
-      vwe_last_q    <= vmem_we;
-      vwaddr_last_q <= vmem_waddr;
-      cwe_last_q    <= cmem_we;
-      cwaddr_last_q <= cmem_waddr;
+  // The interlock's invariants, stated on the pipeline rather than on hit_q: no fragment reads
+  // a plane while an older fragment to its pixel has a write to that plane still to come,
+  // beyond the ones forwarded or bypassed (depth at the read edge, X4; colour at the read edge,
+  // X11, and at the next one, X10).
+  logic depth_older, color_older;
+  always_comb begin
+    depth_older = 1'b0;
+    for (int unsigned k = 1; k < 4; k++) begin
+      depth_older |= x_valid_q[k] && x_addr_q[(k-1)*AddrW +: AddrW] == m_addr_q;
+    end
+    color_older = 1'b0;
+    for (int unsigned k = 7; k < Last - 1; k++) begin
+      color_older |= x_valid_q[k] && x_addr_q[(k-1)*AddrW +: AddrW] == x6_addr;
     end
   end
+  DepthReadAfterWrite: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      issue |-> !depth_older);
+  ColorReadAfterWrite: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      x_valid_q[6] |-> !color_older);
+  // A read that meets a write of its pixel at one edge is forwarded; a colour read one edge
+  // before the write, bypassed.
+  DepthForwardCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (issue && x4_dwe && m_addr_q == x4_addr) |=> dfwd_hit_q);
+  CovForwardCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (issue && x4_vwe && m_addr_q == x4_addr) |=> vfwd_hit_q);
+  ColorForwardCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (x_valid_q[6] && x11_cwe && x6_addr == x11_addr) |=> fwd_hit_q);
+  ColorBypassCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (x_valid_q[6] && x10_cwe && x6_addr == x10_addr) |=> (byp_hit_q && x11_cwe));
+  // hit_q is exact: it flags x_k's address as long as M holds the same fragment.
+  for (genvar k = 1; k < Span; k++) begin : g_hit
+    HitExact: assert property (@(posedge clk_i) disable iff (!rst_ni)
+        m_valid_q |-> (hit_q[k-1] == (x_valid_q[k] && x_addr_q[(k-1)*AddrW +: AddrW] == m_addr_q)));
+  end
+  // frag_ready_o's flop is "S empty": it never drops for another reason.
+  ReadyIsSkidEmpty: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      in_ready_q == !s_valid_q);
 
-  DepthFwdCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (s1_valid_q && dwe_last_q) |-> (dfwd_valid_q && dfwd_addr_q == dwaddr_last_q));
-  CovFwdCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (s1_valid_q && vwe_last_q) |-> (vfwd_valid_q && vfwd_addr_q == vwaddr_last_q));
-  ColorFwdCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (s2_valid_q && cwe_last_q) |-> (cfwd_valid_q && cfwd_addr_q == cwaddr_last_q));
-
-  // The forwarding registers mirror the memory: they hold the pixel's current contents.
-  DepthFwdMirror: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      dfwd_valid_q |-> (u_depth_mem.mem_q[dfwd_addr_q] == dfwd_depth_q));
-  CovFwdMirror: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      vfwd_valid_q |-> (u_cov_mem.mem_q[vfwd_addr_q] == vfwd_cov_q));
-  ColorFwdMirror: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      cfwd_valid_q |-> (u_color_mem.mem_q[cfwd_addr_q] == cfwd_color_q));
-
+  // The coverage plane holds counts 0..N: a coverage-mode fragment never reads more.
+  StoredCoverageInRange: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (x_valid_q[2] && st_cov) |-> (x2_cs_q <= CovW'(COV_SAMPLES)));
   // Coverage mode: the depth never moves farther, and the pixel's coverage never shrinks.
   CovDepthNeverFarther: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (s1_valid_q && st_cov && s1_dwe) |-> (s1_z_q < s1_zs));
+      (x_valid_q[3] && st_cov && x3_dwe) |-> x3_lt_q);
   CovNeverShrinks: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (s1_valid_q && st_cov) |-> (s1_cov_new >= s1_cs));
-
-  // The peel plane is read-only during a pass: pmem_we is the tile port's write alone
-  // (structural), and TilePortIdle keeps the tile port away from fragments in flight. So the
-  // word a fragment read at accept is still the memory's word when it is compared.
+      (x_valid_q[3] && st_cov) |-> (x3_cov_new >= x3_cs_q));
+  // The peel plane is read-only during a pass (its pipe write is tied off and TilePortIdle
+  // keeps the tile port away), so the word a fragment read is still the memory's word.
   PeelStable: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      s1_valid_q |-> (u_peel_mem.mem_q[s1_addr_q] == pmem_rdata));
+      x_valid_q[1] |-> (u_peel_plane.u_mem.mem_q[x1_addr] == pmem_rdata));
   // A fragment that passes with the peel test on lies strictly behind the peel plane.
   PeelPassBehind: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (s1_valid_q && s1_pass && st_peel_test && !st_cov) |-> (s1_z_q > pmem_rdata));
+      (x_valid_q[3] && x3_pass && st_peel_test && !st_cov) |-> x3_behind_q);
   // Only the five blend codes are loaded.
   BlendCodeValid: assert property (@(posedge clk_i) disable iff (!rst_ni)
       state_we_i |-> (state_i[7:5] <= 3'd4));
-
-  // A fragment in S1 moves to S2 on the next edge: the pipeline never holds or drops one.
-  NoPipelineBubble: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      s1_valid_q |=> s2_valid_q);
 `endif
 
 endmodule

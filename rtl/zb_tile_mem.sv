@@ -1,7 +1,11 @@
-// zb_tile_mem: one tile memory of WORDS x WIDTH bits. One synchronous read port, one write
-// port, read-first: a read and a write of the same address in one cycle return the old data.
-// The read data register only loads when re_i is set, so rdata_o holds the last word read.
-// Written in the shape Yosys infers as block RAM (no reset on the array or the read register).
+// zb_tile_mem: one tile memory of WORDS x WIDTH bits. One synchronous read port with read
+// enable, one write port. The read data register only loads when re_i is set, so rdata_o holds
+// the last word read. Written in the shape Yosys infers as block RAM (no reset on the array or
+// the read register).
+// A read and a write of one address at one edge: the simulation returns the old word, but
+// no_rw_check tells Yosys the design never relies on it, so no bypass logic is added around the
+// iCE40 RAM. zb_rop guarantees it (its interlock; the assertion NoReadWriteCollision in
+// zb_plane).
 module zb_tile_mem #(
   parameter int unsigned WIDTH = 32,
   parameter int unsigned WORDS = 4096,
@@ -16,11 +20,9 @@ module zb_tile_mem #(
   input  logic [WIDTH-1:0] wdata_i
 );
 
-  logic [WIDTH-1:0] mem_q [WORDS];
+  (* no_rw_check *) logic [WIDTH-1:0] mem_q [WORDS];
   logic [WIDTH-1:0] rdata_q;
 
-  // Memory: write and registered read in one block (the RAM template); non-blocking
-  // assignments make the read see the array before this edge's write (read-first).
   always_ff @(posedge clk_i) begin
     if (we_i) begin
       mem_q[waddr_i] <= wdata_i;

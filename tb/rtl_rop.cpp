@@ -43,7 +43,7 @@ static_assert(VParams::CNT_W == 32, "the driver reads 32-bit counters");
 
 namespace {
 
-constexpr uint64_t kDrainLimit = 1000;  // cycles busy_o may stay high after the last accept
+constexpr uint64_t kDrainLimit = 1000;  // cycles busy_o (or frag_ready_o low) may last
 
 uint64_t splitmix64(uint64_t x) {
   x += 0x9e3779b97f4a7c15ull;
@@ -220,36 +220,35 @@ struct RtlRop::Impl {
     const double p = opt.backpressure;
     const uint64_t thr = p <= 0 ? 0 : p >= 1 ? std::numeric_limits<uint64_t>::max()
                                               : uint64_t(p * 18446744073709551616.0);
+    // Offer fragment k every cycle (or, with back-pressure, a random valid gap and stall_i);
+    // it is accepted at the edge of a cycle with frag_valid_i && frag_ready_o. frag_ready_o
+    // also drops while the interlock holds fragments (zb_rop's skid register is full).
     size_t k = 0;
-    if (thr == 0) {
-      t.stall_i = 0;
-      t.frag_valid_i = 1;
-      for (; k < n; ++k) {
-        t.frag_x_i = f[k].x;
-        t.frag_y_i = f[k].y;
-        t.frag_z_i = f[k].z;
-        t.frag_rgba_i = f[k].rgba;
-        t.frag_cov_i = f[k].cov;
+    uint64_t refused = 0;  // consecutive offers (valid, no stall_i) not accepted
+    while (k < n) {
+      bool stall = false, valid = true;
+      if (thr != 0) {
+        stall = rng.next() < thr;
+        valid = rng.next() >= thr;
+      }
+      t.stall_i = stall;
+      t.frag_valid_i = valid;
+      t.frag_x_i = f[k].x;
+      t.frag_y_i = f[k].y;
+      t.frag_z_i = f[k].z;
+      t.frag_rgba_i = f[k].rgba;
+      t.frag_cov_i = f[k].cov;
+      t.eval();  // frag_ready_o follows stall_i within the cycle
+      if (valid && t.frag_ready_o) {
         accept_out[f[k].index] = s.cycle;
-        s.tick();
+        ++k;
+        refused = 0;
+      } else if (valid && !stall && ++refused > kDrainLimit) {
+        throw std::runtime_error("rtl: frag_ready_o low for " + std::to_string(kDrainLimit) +
+                                 " cycles (tile " + std::to_string(x0) + "," +
+                                 std::to_string(y0) + ")");
       }
-    } else {
-      while (k < n) {
-        const bool stall = rng.next() < thr;
-        const bool valid = rng.next() >= thr;
-        t.stall_i = stall;
-        t.frag_valid_i = valid;
-        t.frag_x_i = f[k].x;
-        t.frag_y_i = f[k].y;
-        t.frag_z_i = f[k].z;
-        t.frag_rgba_i = f[k].rgba;
-        t.frag_cov_i = f[k].cov;
-        if (valid && !stall) {
-          accept_out[f[k].index] = s.cycle;
-          ++k;
-        }
-        s.tick();
-      }
+      s.tick();
     }
     t.frag_valid_i = 0;
     t.stall_i = 0;
