@@ -1,15 +1,23 @@
 // zblend render: a scene through one or more methods on the golden model, the RTL or both,
 // to PNG images, a table, summary.csv and JSON stats.
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <optional>
+
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
 #include "cosim.h"
+#include "frame_render.h"
 #include "image.h"
+#include "memory_use.h"
 #include "passes.h"
 #include "reference.h"
 #include "render.h"
@@ -33,6 +41,8 @@ struct RenderOptions {
   double backpressure = 0;
   uint64_t seed = 1;
   std::string waves;
+  int threads = default_threads();  // golden: render_frame's workers
+  bool no_error = false;            // skip the reference and the error columns
   bool quiet = false;
 };
 
@@ -51,6 +61,7 @@ void check_options(const RenderOptions& o, size_t method_count) {
   if (o.backend != "golden" && o.frame.depth_bits != kRtlDepthBits)
     throw UsageError(fmt::format("--depth-bits: the RTL model is built with {} bits, not {}",
                                  kRtlDepthBits, o.frame.depth_bits));
+  check_threads(o.threads);
   if (!(o.backpressure >= 0 && o.backpressure < 1))
     throw UsageError(fmt::format("--backpressure: {} is out of range (0 to below 1)", o.backpressure));
   if (!o.waves.empty()) {
@@ -102,22 +113,63 @@ void run_plan(const RenderOptions& o, const RasterizedScene& rs, const PassPlan&
   if (const auto* c = dynamic_cast<const Cosim*>(backend.get())) run.tile_io_cycles = c->rtl().tile_io_cycles();
 }
 
+// One pass plan on the golden model, the whole frame from the scene by the banded renderer
+// (frame_render.h): geometry, raster and datapath, which host_ms times.
+void run_golden(const RenderOptions& o, const Scene& scene, const Viewport& vp,
+                const PassPlan& plan, MethodRun& run) {
+  FrameRenderOptions options;
+  options.threads = o.threads;
+  RenderResult result = render_frame(scene, vp, plan, options);
+  run.passes = plan.passes.size();
+  run.total = PassStats{};
+  for (const PassStats& p : result.passes) *run.total += p;
+  run.image = std::move(result.framebuffer);
+}
+
 void run_render(const RenderOptions& o) {
   const Scene scene = resolve_scene(o.frame.scene, o.frame.camera);
+#ifdef __GLIBC__
+  // The scene loaders free large temporaries that glibc keeps resident; returned before the
+  // frame's buffers are allocated, they stay out of the run's peak memory.
+  malloc_trim(0);
+#endif
   const std::vector<std::string> methods = parse_methods(o.methods);
   const Viewport vp = check_viewport(o.frame.width, o.frame.height, o.frame.depth_bits);
   check_options(o, methods.size());
 
-  const auto t0 = Clock::now();
-  const RasterizedScene rs = rasterize_scene(scene, vp);
-  const double raster_ms = ms_since(t0);
-  const auto t1 = Clock::now();
-  const Framebuffer reference = render_reference(rs);
-  const double reference_ms = ms_since(t1);
-  if (!o.quiet)
+  // The exact reference feeds the error columns (the table, summary.csv, --stats) and the
+  // reference method; it needs the whole scene's fragments stored. The golden model renders
+  // without them, so a golden run that writes only images skips both.
+  const bool golden = o.backend == "golden";
+  const bool reference_method =
+      std::find(methods.begin(), methods.end(), kReferenceMethod) != methods.end();
+  if (o.no_error && reference_method)
+    throw UsageError("--no-error: the reference method is what errors are measured against; "
+                     "drop one of them");
+  const bool need_reference =
+      !o.no_error && (!o.quiet || !o.out_dir.empty() || !o.stats.empty() || reference_method);
+  std::optional<RasterizedScene> rs;
+  Framebuffer reference;
+  double raster_ms = 0, reference_ms = 0;
+  if (!golden || need_reference) {
+    const auto t0 = Clock::now();
+    // The reference draws no edges: the golden model's run sets them up itself.
+    rs = golden ? rasterize_triangles(setup_triangles(scene, vp), vp, scene.background)
+                : rasterize_scene(scene, vp);
+    raster_ms = ms_since(t0);
+  }
+  if (need_reference) {
+    const auto t1 = Clock::now();
+    reference = render_reference(*rs);
+    reference_ms = ms_since(t1);
+  }
+  if (!o.quiet && rs)
     fmt::print(stderr, "{}: {} triangles, {} fragments at {}x{} ({:.1f} ms geometry and raster), "
-               "backend {}\n", o.frame.scene, rs.triangles.size(), rs.fragments.size(),
+               "backend {}\n", o.frame.scene, rs->triangles.size(), rs->fragments.size(),
                o.frame.width, o.frame.height, raster_ms, o.backend);
+  else if (!o.quiet)
+    fmt::print(stderr, "{}: {} triangles at {}x{}, backend {}\n", o.frame.scene,
+               scene.triangle_count(), o.frame.width, o.frame.height, o.backend);
 
   std::vector<MethodRun> runs;
   uint64_t mismatches = 0;
@@ -126,13 +178,16 @@ void run_render(const RenderOptions& o) {
     run.method = m;
     const auto start = Clock::now();
     if (const PassPlan* plan = find_plan(m)) {
-      run_plan(o, rs, *plan, run);
+      if (golden)
+        run_golden(o, scene, vp, *plan, run);
+      else
+        run_plan(o, *rs, *plan, run);
       run.host_ms = ms_since(start);
     } else {
       run.image = reference;
       run.host_ms = reference_ms;
     }
-    run.error = compare_images(run.image, reference);
+    if (need_reference) run.error = compare_images(run.image, reference);
     mismatches += run.mismatches;
     if (!o.quiet) fmt::print(stderr, "  {:<12} {:8.1f} ms\n", m, run.host_ms);
     runs.push_back(std::move(run));
@@ -150,9 +205,19 @@ void run_render(const RenderOptions& o) {
                                    {"height", o.frame.height},
                                    {"depth_bits", o.frame.depth_bits},
                                    {"backend", o.backend},
-                                   {"triangles", rs.triangles.size()},
-                                   {"fragments", rs.fragments.size()}};
-    write_or_fail(write_file_atomic(o.stats, stats_json(runs, o.frame.depth_bits, header.dump())));
+                                   {"triangles", scene.triangle_count()},
+                                   {"fragments", rs ? nlohmann::json(rs->fragments.size())
+                                                    : nlohmann::json(nullptr)}};
+    nlohmann::json j = nlohmann::json::parse(header.dump());
+    // Peak so far: every method has run and its images are written.
+    j["memory"] = {{"frame_bytes", frame_bytes(vp.width, vp.height)},
+                   {"scene_bytes", scene_bytes(scene)},
+                   {"fragments", rs ? nlohmann::json(rs->fragments.size()) : nlohmann::json(nullptr)},
+                   {"fragment_bytes", rs ? nlohmann::json(rs->fragments.size() *
+                                                          kReferenceFragmentBytes)
+                                         : nlohmann::json(nullptr)},
+                   {"peak_rss_bytes", peak_rss_bytes()}};
+    write_or_fail(write_file_atomic(o.stats, stats_json(runs, o.frame.depth_bits, j.dump())));
   }
   if (!o.quiet) print_table(runs);
   if (mismatches) throw VerificationError("RTL and golden model differ (report above)");
@@ -182,6 +247,10 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--seed", o->seed, "RTL: seed of the back-pressure pattern")
       ->capture_default_str();
   cmd->add_option("--waves", o->waves, "RTL: FST waveform of the whole run");
+  add_threads_option(cmd, o->threads, "Golden model: threads rendering the frame's bands");
+  cmd->add_flag("--no-error", o->no_error,
+                "Skip the exact reference and the error columns (its fragments are stored for "
+                "the whole frame): the golden model's own time and memory");
   cmd->add_flag("--quiet,-q", o->quiet, "Print nothing but errors");
   cmd->callback([o] { run_render(*o); });
 }

@@ -40,6 +40,13 @@ struct FrameOptions {
 // Registers --scene, --camera, --width, --height and --depth-bits on `cmd`.
 void add_frame_options(CLI::App* cmd, FrameOptions& o);
 
+// --threads N: registers it on `cmd` (default: every core, default_threads()); check_threads
+// throws UsageError unless 1 <= N <= kMaxThreads.
+constexpr int kMaxThreads = 1024;
+int default_threads();
+void add_threads_option(CLI::App* cmd, int& threads, const std::string& help);
+void check_threads(int threads);
+
 // Option checks shared by the subcommands; each throws UsageError naming the option.
 // A built-in scene name or a scene file (scene_file.h, is_scene_path); `camera`, when not empty,
 // is the text of --camera.

@@ -1,6 +1,7 @@
 // Option checks shared by the subcommands.
 #include <algorithm>
 #include <filesystem>
+#include <thread>
 #include <unistd.h>
 
 #include <fmt/core.h>
@@ -95,6 +96,20 @@ void add_frame_options(CLI::App* cmd, FrameOptions& o) {
   cmd->add_option("--height,-H", o.height, "Frame height in pixels")->capture_default_str();
   cmd->add_option("--depth-bits", o.depth_bits, "Depth buffer width in bits")
       ->capture_default_str();
+}
+
+int default_threads() {
+  return std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, kMaxThreads);
+}
+
+void add_threads_option(CLI::App* cmd, int& threads, const std::string& help) {
+  cmd->add_option("--threads", threads, help + " (default: every core)")->capture_default_str();
+}
+
+void check_threads(int threads) {
+  if (threads < 1)
+    throw UsageError(fmt::format("--threads: {} is out of range (at least 1 thread)", threads));
+  check_range("--threads", threads, 1, kMaxThreads);
 }
 
 Viewport check_viewport(int width, int height, int depth_bits) {

@@ -42,10 +42,12 @@ std::string summary_csv(const std::vector<MethodRun>& runs, int depth_bits) {
         rtl = fmt::format("{},{},{}", s.cycles, r.tile_io_cycles,
                           r.compared ? std::to_string(r.mismatches) : "");
     }
-    csv += fmt::format("{},{},{:.4f},{},{},{:.6f},{:.6f},{:.4f},{:.4f},{:.1f},{}\n", r.method,
-                       cost, r.error.rmse, psnr_text(r.error.psnr), r.error.max_abs,
-                       r.error.share_over_2, r.error.share_over_16, r.error.delta_e_mean,
-                       r.error.delta_e_max, r.host_ms, rtl);
+    const std::string error =
+        r.error ? fmt::format("{:.4f},{},{},{:.6f},{:.6f},{:.4f},{:.4f}", r.error->rmse,
+                              psnr_text(r.error->psnr), r.error->max_abs, r.error->share_over_2,
+                              r.error->share_over_16, r.error->delta_e_mean, r.error->delta_e_max)
+                : ",,,,,,";
+    csv += fmt::format("{},{},{},{:.1f},{}\n", r.method, cost, error, r.host_ms, rtl);
   }
   return csv;
 }
@@ -63,8 +65,12 @@ void print_table(const std::vector<MethodRun>& runs) {
                  r.total->color_writes + r.total->depth_writes);
     else
       fmt::print("{:<16} {:>6} {:>10} {:>10} {:>10}", r.method, "-", "-", "-", "-");
-    fmt::print(" {:>8.3f} {:>8} {:>5} {:>7.2f}% {:>7.3f}", r.error.rmse, psnr_text(r.error.psnr),
-               r.error.max_abs, 100.0 * r.error.share_over_2, r.error.delta_e_mean);
+    if (r.error)
+      fmt::print(" {:>8.3f} {:>8} {:>5} {:>7.2f}% {:>7.3f}", r.error->rmse,
+                 psnr_text(r.error->psnr), r.error->max_abs, 100.0 * r.error->share_over_2,
+                 r.error->delta_e_mean);
+    else
+      fmt::print(" {:>8} {:>8} {:>5} {:>8} {:>7}", "-", "-", "-", "-", "-");
     if (rtl && r.total && r.rtl)
       fmt::print(" {:>10} {:>10}\n", r.total->cycles,
                  r.compared ? std::to_string(r.mismatches) : "-");
@@ -78,18 +84,18 @@ std::string stats_json(const std::vector<MethodRun>& runs, int depth_bits,
   nlohmann::json j = nlohmann::json::parse(header_json);
   j["methods"] = nlohmann::json::array();
   for (const MethodRun& r : runs) {
-    const ImageError& e = r.error;
-    nlohmann::json m = {
-        {"method", r.method},
-        {"host_ms", r.host_ms},
-        {"error",
-         {{"rmse", e.rmse},
+    nlohmann::json m = {{"method", r.method}, {"host_ms", r.host_ms}, {"error", nullptr}};
+    if (r.error) {
+      const ImageError& e = *r.error;
+      m["error"] = {
+          {"rmse", e.rmse},
           {"psnr_db", std::isinf(e.psnr) ? nlohmann::json(nullptr) : nlohmann::json(e.psnr)},
           {"max_abs", e.max_abs},
           {"share_over_2", e.share_over_2},
           {"share_over_16", e.share_over_16},
           {"delta_e_mean", e.delta_e_mean},
-          {"delta_e_max", e.delta_e_max}}}};
+          {"delta_e_max", e.delta_e_max}};
+    }
     if (r.total) {
       const PassStats& s = *r.total;
       m["passes"] = r.passes;

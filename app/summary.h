@@ -16,7 +16,7 @@ struct MethodRun {
   Framebuffer image;
   std::optional<PassStats> total;  // none for the reference
   size_t passes = 0;
-  ImageError error;
+  std::optional<ImageError> error;  // none under --no-error
   double host_ms = 0;
   bool rtl = false;                // ran on the RTL: cycles are meaningful
   uint64_t tile_io_cycles = 0;     // RTL cycles loading and storing tiles

@@ -6,6 +6,7 @@
 
 #include "fragment.h"
 #include "geometry.h"
+#include "raster.h"
 
 namespace zb {
 
@@ -25,7 +26,8 @@ const std::vector<SamplePos>& sample_pattern(int n);
 // centre by the rasterizer's exact formula clamped to the vertex depth range; rows top to
 // bottom, each left to right. Samples use the same edge functions and top-left rule as pixel
 // centres. When `z_exact` is given, appends each fragment's unrounded (clamped) depth too.
+// `rows` scissors rows as for rasterize (raster.h): the rows kept give the same fragments.
 void rasterize_coverage(const ScreenTriangle& tri, const Viewport& vp, std::vector<Fragment>& out,
-                        std::vector<double>* z_exact = nullptr);
+                        std::vector<double>* z_exact = nullptr, RowRange rows = {});
 
 }  // namespace zb

@@ -41,7 +41,7 @@ Edge make_edge(const ScreenVertex& a, const ScreenVertex& b, int64_t x0, int64_t
 }  // namespace
 
 void rasterize(const ScreenTriangle& tri, const Viewport& vp, std::vector<Fragment>& out,
-               std::vector<double>* z_exact) {
+               std::vector<double>* z_exact, RowRange rows) {
   if (vp.width < 1 || vp.width > kMaxFrameSize || vp.height < 1 || vp.height > kMaxFrameSize)
     return;
   setup::OrientedTriangle t;  // depth weights and facing flags follow their vertices
@@ -50,15 +50,17 @@ void rasterize(const ScreenTriangle& tri, const Viewport& vp, std::vector<Fragme
   const bool(&facing)[3] = t.facing;
   const int64_t area = t.area;
 
-  // Bounding box of the pixel centres (px * 256 + 128) inside the vertices' box, scissored.
+  // Bounding box of the pixel centres (px * 256 + 128) inside the vertices' box, scissored to
+  // the viewport and the row range.
   const int64_t min_x = std::min({v[0].x, v[1].x, v[2].x});
   const int64_t max_x = std::max({v[0].x, v[1].x, v[2].x});
   const int64_t min_y = std::min({v[0].y, v[1].y, v[2].y});
   const int64_t max_y = std::max({v[0].y, v[1].y, v[2].y});
   const int64_t px_lo = std::max<int64_t>(0, ceil_div(min_x - kHalf, kSubpixelOne));
   const int64_t px_hi = std::min<int64_t>(vp.width - 1, floor_div(max_x - kHalf, kSubpixelOne));
-  const int64_t py_lo = std::max<int64_t>(0, ceil_div(min_y - kHalf, kSubpixelOne));
-  const int64_t py_hi = std::min<int64_t>(vp.height - 1, floor_div(max_y - kHalf, kSubpixelOne));
+  const int64_t py_lo = std::max<int64_t>({0, rows.begin, ceil_div(min_y - kHalf, kSubpixelOne)});
+  const int64_t py_hi = std::min<int64_t>({vp.height - 1, int64_t{rows.end} - 1,
+                                           floor_div(max_y - kHalf, kSubpixelOne)});
   if (px_lo > px_hi || py_lo > py_hi) return;
 
   const int64_t cx = px_lo * kSubpixelOne + kHalf;

@@ -55,8 +55,38 @@ RasterizedScene rasterize_triangles(std::vector<ScreenTriangle> triangles, const
   return rs;
 }
 
-namespace {
+// --- the feeder's per-fragment stage (docs/datapath.md, "The feeder") ---
 
+bool feeder_rewrites(const PassState& p) {
+  return p.facing != FacingFilter::kAll || p.zero_alpha_toward || p.offset.any() ||
+         p.constant_color;
+}
+
+uint64_t depth_offset_of(const DepthOffset& o, uint32_t slope) {
+  uint64_t off = uint64_t{o.units} + (uint64_t{o.slope_q8} * slope + 255) / 256;
+  if (o.clamp != 0) off = std::min<uint64_t>(off, o.clamp);
+  return off;
+}
+
+bool feed_fragment(const PassState& p, uint64_t offset, Fragment& f) {
+  if (p.facing == FacingFilter::kToward && !f.facing) return false;
+  if (p.facing == FacingFilter::kAway && f.facing) return false;
+  if (p.constant_color) f.color = p.color;
+  if (p.zero_alpha_toward && f.facing) f.color.a = 0;
+  f.z = f.z > offset ? static_cast<uint32_t>(f.z - offset) : 0;
+  return true;
+}
+
+std::vector<uint32_t> primitive_slopes(const std::vector<ScreenTriangle>& triangles) {
+  std::vector<uint32_t> slope;
+  for (const ScreenTriangle& t : triangles) {
+    if (t.prim >= slope.size()) slope.resize(size_t(t.prim) + 1, 0);
+    slope[t.prim] = std::max(slope[t.prim], depth_slope(t));
+  }
+  return slope;
+}
+
+namespace {
 
 // Calls draw(first, count) for each run of consecutive fragments the pass draws.
 template <class Draw>
@@ -80,40 +110,12 @@ void for_each_pass_range(const RasterizedScene& rs, const PassState& pass, Draw&
   if (run_end > run_begin) draw(rs.fragments.data() + run_begin, run_end - run_begin);
 }
 
-// --- the feeder's per-fragment stage (docs/datapath.md, "The feeder") ---
-
-// True when the pass changes or drops fragments on their way to the datapath.
-bool rewrites(const PassState& p) {
-  return p.facing != FacingFilter::kAll || p.zero_alpha_toward || p.offset.any() ||
-         p.constant_color;
-}
-
-// The depth offset of a primitive with depth slope `slope`:
-// units + ceil(slope_q8 * slope / 256), at most `clamp` when clamp > 0.
-uint64_t offset_of(const DepthOffset& o, uint32_t slope) {
-  uint64_t off = uint64_t{o.units} + (uint64_t{o.slope_q8} * slope + 255) / 256;
-  if (o.clamp != 0) off = std::min<uint64_t>(off, o.clamp);
-  return off;
-}
-
-// Applies the pass's feeder rules to one fragment, in this order: facing filter (false:
-// dropped), constant colour, zero alpha for fragments facing the viewer, depth offset
-// (saturating at 0, the near plane).
-bool feed_fragment(const PassState& p, uint64_t offset, Fragment& f) {
-  if (p.facing == FacingFilter::kToward && !f.facing) return false;
-  if (p.facing == FacingFilter::kAway && f.facing) return false;
-  if (p.constant_color) f.color = p.color;
-  if (p.zero_alpha_toward && f.facing) f.color.a = 0;
-  f.z = f.z > offset ? static_cast<uint32_t>(f.z - offset) : 0;
-  return true;
-}
-
 // Calls draw(first, count) with the fragments the pass sends to the datapath, in primitive
 // order: the triangles' (for_each_pass_range) or the edges' (PrimFilter::kEdges), rewritten by
 // feed_fragment when the pass asks for it.
 template <class Draw>
 void feed_pass(const RasterizedScene& rs, const PassState& pass, Draw&& draw) {
-  if (pass.filter != PrimFilter::kEdges && !rewrites(pass)) {
+  if (pass.filter != PrimFilter::kEdges && !feeder_rewrites(pass)) {
     for_each_pass_range(rs, pass, draw);
     return;
   }
@@ -135,19 +137,14 @@ void feed_pass(const RasterizedScene& rs, const PassState& pass, Draw&& draw) {
     for (size_t i = 0; i < rs.lines.size(); ++i) {
       const size_t first = rs.first_line_fragment[i];
       emit(rs.line_fragments.data() + first, rs.first_line_fragment[i + 1] - first,
-           pass.offset.any() ? offset_of(pass.offset, rs.lines[i].depth_slope) : 0);
+           pass.offset.any() ? depth_offset_of(pass.offset, rs.lines[i].depth_slope) : 0);
     }
   } else if (!pass.offset.any()) {
     for_each_pass_range(rs, pass, [&](const Fragment* f, size_t n) { emit(f, n, 0); });
   } else {
-    // A triangle's slope is that of its source primitive (the largest of its clipped pieces).
-    std::vector<uint32_t> slope;
-    for (const ScreenTriangle& t : rs.triangles) {
-      if (t.prim >= slope.size()) slope.resize(size_t(t.prim) + 1, 0);
-      slope[t.prim] = std::max(slope[t.prim], depth_slope(t));
-    }
+    const std::vector<uint32_t> slope = primitive_slopes(rs.triangles);
     for_each_pass_range(rs, pass, [&](const Fragment* f, size_t n) {
-      for (size_t i = 0; i < n; ++i) emit(f + i, 1, offset_of(pass.offset, slope[f[i].prim]));
+      for (size_t i = 0; i < n; ++i) emit(f + i, 1, depth_offset_of(pass.offset, slope[f[i].prim]));
     });
   }
   if (!buf.empty()) draw(buf.data(), buf.size());

@@ -41,6 +41,21 @@ void add_lines(RasterizedScene& rs, std::vector<ScreenLine> lines);
 // The feeder's primitive filter and cull: true when `pass` draws triangle `t`.
 bool pass_draws(const PassState& pass, const ScreenTriangle& t);
 
+// The feeder's per-fragment stage (docs/datapath.md, "The feeder"), shared by render() and the
+// banded renderer (frame_render.h).
+// True when the pass changes or drops fragments on their way to the datapath.
+bool feeder_rewrites(const PassState& pass);
+// The depth offset of a primitive with depth slope `slope`:
+// units + ceil(slope_q8 * slope / 256), at most `clamp` when clamp > 0.
+uint64_t depth_offset_of(const DepthOffset& o, uint32_t slope);
+// Applies the pass's feeder rules to one fragment, in this order: facing filter (false:
+// dropped), constant colour, zero alpha for fragments facing the viewer, depth offset
+// (saturating at 0, the near plane).
+bool feed_fragment(const PassState& pass, uint64_t offset, Fragment& f);
+// A triangle's depth slope for the offset is its source primitive's, the largest of its
+// clipped pieces: indexed by ScreenTriangle::prim.
+std::vector<uint32_t> primitive_slopes(const std::vector<ScreenTriangle>& triangles);
+
 // The fragments a pass draws, in primitive order, as the feeder sends them to the datapath
 // (filtered, culled and rewritten by the pass's feeder rules).
 std::vector<Fragment> pass_fragments(const RasterizedScene& rs, const PassState& pass);

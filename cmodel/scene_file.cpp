@@ -316,10 +316,20 @@ Scene load_obj(const std::string& path, const std::string& text, const SceneFile
   std::vector<tinyobj::shape_t> shapes;
   std::vector<tinyobj::material_t> mats;
   std::string warn, err;
-  std::istringstream in(checked.text);
-  CheckedMtlReader mtl_reader(checked.mtl_texts);
-  if (!tinyobj::LoadObj(&attrib, &shapes, &mats, &warn, &err, &in, &mtl_reader, true))
-    fail(path, "tinyobjloader", one_line(err));
+  {
+    // A stream over the checked text itself: an istringstream would hold a third copy of the
+    // file at the loader's peak.
+    struct TextBuf : std::streambuf {
+      explicit TextBuf(const std::string& t) {
+        char* p = const_cast<char*>(t.data());  // read only: the get area is never written
+        setg(p, p, p + t.size());
+      }
+    } buf(checked.text);
+    std::istream in(&buf);
+    CheckedMtlReader mtl_reader(checked.mtl_texts);
+    if (!tinyobj::LoadObj(&attrib, &shapes, &mats, &warn, &err, &in, &mtl_reader, true))
+      fail(path, "tinyobjloader", one_line(err));
+  }
 
   Scene scene;
   scene.name = path;
@@ -353,6 +363,14 @@ Scene load_obj(const std::string& path, const std::string& text, const SceneFile
     // One object per shape, split further by material (Object has one material).
     std::vector<int> order;
     std::map<int, MeshBuilder> builders;
+    // Triangles per material, so each mesh is allocated once (growth by doubling would hold
+    // old and new arrays at the loader's peak): at most three vertices per triangle.
+    std::map<int, size_t> tri_count;
+    for (size_t f = 0; f < m.num_face_vertices.size(); ++f) {
+      if (m.num_face_vertices[f] != 3) continue;
+      const int mat = f < m.material_ids.size() ? m.material_ids[f] : -1;
+      ++tri_count[(mat < 0 || static_cast<size_t>(mat) >= mats.size()) ? -1 : mat];
+    }
     size_t offset = 0;
     for (size_t f = 0; f < m.num_face_vertices.size(); ++f) {
       const size_t nfv = m.num_face_vertices[f];
@@ -364,6 +382,10 @@ Scene load_obj(const std::string& path, const std::string& text, const SceneFile
         auto it = builders.find(mat);
         if (it == builders.end()) {
           it = builders.emplace(mat, MeshBuilder{positions, normals, {}, {}}).first;
+          const size_t tris = tri_count[mat];
+          it->second.mesh.triangles.reserve(tris);
+          it->second.mesh.positions.reserve(3 * tris);
+          it->second.mesh.normals.reserve(3 * tris);
           order.push_back(mat);
         }
         uint32_t p[3];
@@ -384,6 +406,8 @@ Scene load_obj(const std::string& path, const std::string& text, const SceneFile
       obj.name = shapes[s].name.empty() ? fmt::format("shape {}", s) : shapes[s].name;
       if (order.size() > 1) obj.name += "/" + (mat < 0 ? std::string("default") : mats[mat].name);
       obj.mesh = std::move(builders.at(mat).mesh);
+      obj.mesh.positions.shrink_to_fit();  // shared corners: fewer than reserved
+      obj.mesh.normals.shrink_to_fit();
       obj.material = mat < 0 ? default_material : static_cast<uint32_t>(mat);
       used_default = used_default || mat < 0;
       scene.objects.push_back(std::move(obj));

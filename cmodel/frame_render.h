@@ -1,0 +1,65 @@
+// A whole frame on the golden model, fast: the screen cut into bands of rows, each band
+// rasterized and drawn through its own GoldenRop by a pool of threads, fragments streamed
+// through a small buffer instead of stored for the whole frame. Bit for bit the framebuffer
+// and per-pass statistics of render(rasterize_scene(scene, vp), plan, GoldenRop)
+// (docs/raster.md, "Banded rendering").
+#pragma once
+
+#include <vector>
+
+#include "edges.h"
+#include "geometry.h"
+#include "passes.h"
+#include "render.h"
+#include "scene.h"
+
+namespace zb {
+
+// Rows per band: small enough that a band's planes (13 bytes a pixel) stay in the cache while
+// every pass runs over it, large enough that few triangles straddle bands; 32 to 128 measured
+// alike on bunny.obj at 1024x1024, and smaller bands hold less memory per thread.
+constexpr int kDefaultBandRows = 32;
+
+struct FrameRenderOptions {
+  int threads = 0;    // workers, the caller included; 0 = std::thread::hardware_concurrency()
+  int band_rows = 0;  // 0 = kDefaultBandRows
+  // render_frame(scene, ...): split setup_triangles over the threads too. Faster (bunny.obj,
+  // 2 cores: 7.5 ms serial, 4.7 ms split), but each thread holds its part's vertices, clipped
+  // and set-up triangles at once: megabytes more at the peak (docs/raster.md).
+  bool parallel_setup = false;
+};
+
+// What a frame is drawn from: the set-up triangles in scene order and, when a pass draws
+// edges, the scene's unique edges (edges.h).
+struct FrameGeometry {
+  Viewport viewport;
+  Rgba8 background;
+  std::vector<ScreenTriangle> triangles;
+  std::vector<ScreenLine> lines;
+};
+
+// True when a pass of `plan` draws the scene's edges (PrimFilter::kEdges).
+bool plan_draws_edges(const PassPlan& plan);
+
+// The triangles of setup_triangles(scene, vp), bit for bit and in the same order, computed on
+// `threads` threads (0 = all cores).
+std::vector<ScreenTriangle> setup_triangles_parallel(const Scene& scene, const Viewport& vp,
+                                                     int threads);
+
+// setup_triangles on `threads` threads (setup_triangles_parallel; 1: serial, 0: all cores),
+// and setup_lines when `with_lines`.
+FrameGeometry setup_frame(const Scene& scene, const Viewport& vp, bool with_lines,
+                          int threads = 1);
+
+// The frame and per-pass statistics of `plan` drawn over `geometry` on the golden model,
+// exactly as render() gives them. Throws std::invalid_argument as GoldenRop does (a coverage
+// sample count that is not 1, 2, 4, 8 or 16) and for a viewport outside 1..kMaxFrameSize.
+RenderResult render_frame(const FrameGeometry& geometry, const PassPlan& plan,
+                          const FrameRenderOptions& options = {});
+
+// setup_frame (edges only when the plan draws them; on options.threads threads with
+// options.parallel_setup, else serially), then render_frame.
+RenderResult render_frame(const Scene& scene, const Viewport& vp, const PassPlan& plan,
+                          const FrameRenderOptions& options = {});
+
+}  // namespace zb
