@@ -6,10 +6,10 @@ ZBLEND     := $(BUILD)/zblend
 RUN_SIZE   ?= --width 640 --height 480
 
 .DEFAULT_GOAL := build
-.PHONY: help setup build run test test-asan bench lint soak waves coverage fuzz fuzz-ci fuzz-build clean
+.PHONY: help setup build run test test-asan bench bench-verilator synth lint soak waves coverage fuzz fuzz-ci fuzz-build clean
 
 help: ## List the targets
-	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 12
+	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | awk -F'\t' '{printf "%-16s %s\n", $$1, $$2}'
 
 setup: ## Install the missing Debian packages (apt-get)
 	@scripts/setup.sh
@@ -37,9 +37,15 @@ test-asan: setup ## The tests built with AddressSanitizer and UndefinedBehaviorS
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS)
 
-bench: build ## Benchmarks: golden and RTL fragments/s, RTL fragments/clock, cad RTL/golden time
-	$(BUILD)/zblend_bench --benchmark_min_time=1
-	$(BUILD)/zblend_bench_rtl --benchmark_min_time=1
+bench: build ## Benchmarks: datapath, golden vs llvmpipe, memory, RTL, cost growth: out/bench/
+	@/usr/bin/python3 scripts/bench.py --build $(BUILD) --out out/bench
+
+bench-verilator: setup ## Verilator option sets measured against each other: out/bench/verilator_options.csv
+	@scripts/verilator_options.sh -j $(JOBS)
+
+synth: ## Yosys and nextpnr-ice40 on the datapath: cells, LUTs, RAMs, FFs, max clock on HX8K: out/synth/
+	@scripts/setup.sh synth
+	@scripts/synth.sh
 
 SOAK_FRAGMENTS ?= 50000000
 

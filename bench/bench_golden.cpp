@@ -1,6 +1,7 @@
 // Benchmarks of the golden model: the datapath alone in fragments per second, and whole frames.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <random>
 
 #include "passes.h"
@@ -10,23 +11,36 @@
 
 namespace {
 
-std::vector<zb::Fragment> random_fragments(size_t n, int w, int h) {
+// Spans of 32 fragments along a row at random places of a w x h frame (the rasterizer's
+// order, without its cost), random depths and colours.
+std::vector<zb::Fragment> span_fragments(size_t n, int w, int h) {
+  constexpr int kSpan = 32;
   std::mt19937 rng(1);
   std::vector<zb::Fragment> out(n);
-  for (zb::Fragment& f : out) {
-    f.x = uint16_t(rng() % uint32_t(w));
-    f.y = uint16_t(rng() % uint32_t(h));
-    f.z = rng() & 0xffffff;
-    f.color = {uint8_t(rng()), uint8_t(rng()), uint8_t(rng()), uint8_t(rng())};
+  for (size_t i = 0; i < n; i += kSpan) {
+    const int x0 = int(rng() % uint32_t(w - kSpan)), y = int(rng() % uint32_t(h));
+    for (size_t k = i; k < std::min(n, i + kSpan); ++k) {
+      zb::Fragment& f = out[k];
+      f.x = uint16_t(x0 + int(k - i));
+      f.y = uint16_t(y);
+      f.z = rng() & 0xffffff;
+      f.color = {uint8_t(rng()), uint8_t(rng()), uint8_t(rng()), uint8_t(rng())};
+    }
   }
   return out;
 }
 
-// The datapath alone: depth LESS, alpha blend, z-write on, random pixels of 1024x768.
-void BM_GoldenDatapath(benchmark::State& state) {
-  const auto frags = random_fragments(1 << 20, 1024, 768);
+// The datapath alone, per blend mode, on 2^20 fragments in spans over 1024x768. Depth
+// function ALWAYS with z-write, so that every fragment runs the whole path (depth read and
+// write, colour read, blend, colour write); coverage mode: coverage counts 0..16 and the three
+// depth cases.
+void BM_GoldenDatapath(benchmark::State& state, zb::BlendMode mode) {
+  auto frags = span_fragments(1 << 20, 1024, 768);
+  if (mode == zb::BlendMode::kCoverage)
+    for (size_t i = 0; i < frags.size(); ++i) frags[i].coverage = uint8_t(i * 7 % 17);
   zb::RopState rop;
-  rop.blend = zb::BlendMode::kAlpha;
+  rop.depth_func = zb::DepthFunc::kAlways;
+  rop.blend = mode;
   zb::GoldenRop golden;
   golden.begin_frame(1024, 768, zb::kDefaultDepthBits, {255, 255, 255, 255});
   for (auto _ : state) {
@@ -36,7 +50,24 @@ void BM_GoldenDatapath(benchmark::State& state) {
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(frags.size()));
 }
-BENCHMARK(BM_GoldenDatapath)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GoldenDatapath, replace, zb::BlendMode::kReplace)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GoldenDatapath, alpha, zb::BlendMode::kAlpha)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GoldenDatapath, additive, zb::BlendMode::kAdditive)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GoldenDatapath, coverage, zb::BlendMode::kCoverage)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GoldenDatapath, under, zb::BlendMode::kUnder)->Unit(benchmark::kMillisecond);
+
+// The frame's planes alone, allocated and cleared: the part of a frame's cost that grows with
+// the frame whatever the scene touches.
+void BM_FrameBuffers(benchmark::State& state) {
+  const int n = int(state.range(0));
+  for (auto _ : state) {
+    zb::Framebuffer fb(n, n, zb::kDefaultDepthBits, {255, 255, 255, 255});
+    benchmark::DoNotOptimize(fb.color.data());
+  }
+}
+BENCHMARK(BM_FrameBuffers)->Arg(256)->Arg(512)->Arg(1024)->Arg(2048)->Unit(benchmark::kMillisecond);
 
 // A whole frame: geometry, raster and every pass of a method.
 void BM_Frame(benchmark::State& state, const char* scene_name, const char* method) {

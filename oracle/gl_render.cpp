@@ -132,26 +132,36 @@ std::string unsupported_reason(const PassPlan& plan) {
   return "";
 }
 
-Framebuffer render_gl(GlContext& gl, const std::vector<ClipTriangle>& triangles,
-                      const PassPlan& plan, Rgba8 background, WindowY window_y) {
-  if (const std::string why = unsupported_reason(plan); !why.empty())
-    throw std::invalid_argument(fmt::format("method '{}': {}", plan.name, why));
-
-  const GLuint program = link_program();
-  GLuint vao = 0, vbo = 0;
-  glGenVertexArrays(1, &vao);
-  glBindVertexArray(vao);
-  glGenBuffers(1, &vbo);
-  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+GlRenderer::GlRenderer(GlContext& gl) : gl_(gl), program_(link_program()) {
+  glGenVertexArrays(1, &vao_);
+  glBindVertexArray(vao_);
+  glGenBuffers(1, &vbo_);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo_);
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, sizeof(Vertex),
                         reinterpret_cast<const void*>(offsetof(Vertex, clip)));
   glEnableVertexAttribArray(1);
   glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(Vertex),
                         reinterpret_cast<const void*>(offsetof(Vertex, color)));
-  glUseProgram(program);
+  check_gl("vertex array setup");
+}
+
+GlRenderer::~GlRenderer() {
+  glDeleteBuffers(1, &vbo_);
+  glDeleteVertexArrays(1, &vao_);
+  glDeleteProgram(program_);
+}
+
+Framebuffer GlRenderer::draw(const std::vector<ClipTriangle>& triangles, const PassPlan& plan,
+                             Rgba8 background, WindowY window_y) {
+  if (const std::string why = unsupported_reason(plan); !why.empty())
+    throw std::invalid_argument(fmt::format("method '{}': {}", plan.name, why));
+
+  glBindVertexArray(vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+  glUseProgram(program_);
   // Negated clip y and GL's y-up viewport give window y = (1 - y_ndc) H / 2: zblend's formula.
-  glUniform1f(glGetUniformLocation(program, "y_sign"), window_y == WindowY::kDown ? -1.0f : 1.0f);
+  glUniform1f(glGetUniformLocation(program_, "y_sign"), window_y == WindowY::kDown ? -1.0f : 1.0f);
 
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);
@@ -161,6 +171,7 @@ Framebuffer render_gl(GlContext& gl, const std::vector<ClipTriangle>& triangles,
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
   std::vector<Vertex> vertices;
+  vertices.reserve(3 * triangles.size());
   for (const PassState& pass : plan.passes) {
     vertices.clear();
     for (const ClipTriangle& t : triangles) {
@@ -176,7 +187,7 @@ Framebuffer render_gl(GlContext& gl, const std::vector<ClipTriangle>& triangles,
   }
 
   // GL's row 0 is window y = 0: the top row of the picture under kDown, the bottom under kUp.
-  const int w = gl.width(), h = gl.height();
+  const int w = gl_.width(), h = gl_.height();
   Framebuffer fb(w, h, 24, background);
   std::vector<Rgba8> rgba(static_cast<size_t>(w) * h);
   std::vector<uint32_t> depth(static_cast<size_t>(w) * h);
@@ -192,11 +203,15 @@ Framebuffer render_gl(GlContext& gl, const std::vector<ClipTriangle>& triangles,
       fb.color[fb.index(x, y)] = rgba[src];
       fb.depth[fb.index(x, y)] = depth[src] >> 8;
     }
-
-  glDeleteBuffers(1, &vbo);
-  glDeleteVertexArrays(1, &vao);
-  glDeleteProgram(program);
   return fb;
+}
+
+Framebuffer render_gl(GlContext& gl, const std::vector<ClipTriangle>& triangles,
+                      const PassPlan& plan, Rgba8 background, WindowY window_y) {
+  if (const std::string why = unsupported_reason(plan); !why.empty())
+    throw std::invalid_argument(fmt::format("method '{}': {}", plan.name, why));
+  GlRenderer renderer(gl);
+  return renderer.draw(triangles, plan, background, window_y);
 }
 
 }  // namespace zb::oracle

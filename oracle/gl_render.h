@@ -23,6 +23,24 @@ std::string unsupported_reason(const PassPlan& plan);
 // then go to the other triangle (docs/oracle.md, "Edges through pixel centres").
 enum class WindowY { kDown, kUp };
 
+// The GL objects a plan is drawn with (program, vertex array, buffer), made once so that
+// repeated frames time the drawing, not the shader compiler.
+class GlRenderer {
+ public:
+  explicit GlRenderer(GlContext& gl);
+  ~GlRenderer();
+  GlRenderer(const GlRenderer&) = delete;
+  GlRenderer& operator=(const GlRenderer&) = delete;
+
+  // As render_gl below.
+  Framebuffer draw(const std::vector<ClipTriangle>& triangles, const PassPlan& plan,
+                   Rgba8 background, WindowY window_y = WindowY::kDown);
+
+ private:
+  GlContext& gl_;
+  unsigned program_ = 0, vao_ = 0, vbo_ = 0;
+};
+
 // Draws `plan` into `gl`'s framebuffer cleared to `background` and far depth, and reads it
 // back as a zblend frame: row 0 at the top, 24-bit depth. Throws std::invalid_argument when
 // the plan is unsupported, GlUnavailable when GL fails.

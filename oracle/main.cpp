@@ -1,7 +1,11 @@
 // zblend_oracle: renders a scene with pass plans on the golden model and through OpenGL on
 // Mesa's llvmpipe, and compares the frames pixel by pixel (docs/oracle.md).
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <exception>
+#include <functional>
+#include <stdexcept>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -12,6 +16,7 @@
 #include "commands.h"
 #include "exact_depth.h"
 #include "frame_diff.h"
+#include "frame_render.h"
 #include "gl_render.h"
 #include "image.h"
 #include "render.h"
@@ -31,6 +36,8 @@ struct Options {
   double min_identical = 99.9;
   std::string window_y = "down";
   bool quiet = false;
+  bool time = false;
+  int repeat = 5;
 };
 
 struct Row {
@@ -39,7 +46,37 @@ struct Row {
   zb::Rgba8 golden, gl;  // at the first differing pixel
   // Differing pixels by what the plan replayed with exact depths gives there (exact_depth.h).
   uint64_t exact_golden = 0, exact_gl = 0, exact_neither = 0;
+  double golden_ms = 0, gl_ms = 0;  // --time: median frame times
 };
+
+// Median wall time of `repeat` calls of `frame`, after one call to warm caches and JITs.
+double median_ms(int repeat, const std::function<void()>& frame) {
+  using Clock = std::chrono::steady_clock;
+  frame();
+  std::vector<double> ms;
+  for (int i = 0; i < repeat; ++i) {
+    const auto t0 = Clock::now();
+    frame();
+    ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+  }
+  std::sort(ms.begin(), ms.end());
+  return ms[ms.size() / 2];
+}
+
+// The golden model's whole frame, from the scene, as `zblend render` draws it: vertex stage,
+// setup, raster and passes, in bands on every core (frame_render.h).
+zb::Framebuffer golden_frame(const zb::Scene& scene, const zb::Viewport& vp,
+                             const zb::PassPlan& plan) {
+  return zb::render_frame(scene, vp, plan).framebuffer;
+}
+
+// llvmpipe's whole frame, from the same scene: the vertex stage (on the host, as the oracle
+// feeds GL clip coordinates), drawing every pass, and reading colour and depth back.
+zb::Framebuffer gl_frame(zb::oracle::GlRenderer& gl, const zb::Scene& scene,
+                         const zb::Viewport& vp, const zb::PassPlan& plan,
+                         zb::oracle::WindowY window_y) {
+  return gl.draw(zb::transform_triangles(scene, vp), plan, scene.background, window_y);
+}
 
 // Sorts the differing pixels by which frame the exact-depth replay agrees with.
 void classify(const zb::RasterizedScene& rs, const zb::PassPlan& plan, const zb::Framebuffer& g,
@@ -78,13 +115,16 @@ std::string rgba(zb::Rgba8 c) { return fmt::format("{},{},{},{}", c.r, c.g, c.b,
 std::string csv(const Options& o, const std::vector<Row>& rows) {
   std::string s =
       "scene,method,width,height,pixels,identical,identical_pct,max_diff,depth_identical_pct,"
-      "max_depth_diff,first_x,first_y,exact_sides_golden,exact_sides_llvmpipe,exact_sides_neither\n";
+      "max_depth_diff,first_x,first_y,exact_sides_golden,exact_sides_llvmpipe,exact_sides_neither,"
+      "golden_ms,llvmpipe_ms\n";
   for (const Row& r : rows)
-    s += fmt::format("{},{},{},{},{},{},{:.4f},{},{:.4f},{},{},{},{},{},{}\n", o.frame.scene, r.method,
-                     o.frame.width, o.frame.height, r.diff.pixels, r.diff.identical,
+    s += fmt::format("{},{},{},{},{},{},{:.4f},{},{:.4f},{},{},{},{},{},{},{},{}\n", o.frame.scene,
+                     r.method, o.frame.width, o.frame.height, r.diff.pixels, r.diff.identical,
                      100 * r.diff.identical_share(), r.diff.max_diff,
                      100 * r.diff.depth_identical_share(), r.diff.max_depth_diff, r.diff.first_x,
-                     r.diff.first_y, r.exact_golden, r.exact_gl, r.exact_neither);
+                     r.diff.first_y, r.exact_golden, r.exact_gl, r.exact_neither,
+                     o.time ? fmt::format("{:.3f}", r.golden_ms) : "",
+                     o.time ? fmt::format("{:.3f}", r.gl_ms) : "");
   return s;
 }
 
@@ -96,6 +136,8 @@ int run(const Options& o) {
                                  "not {} bits", vp.depth_bits));
   if (!(o.min_identical >= 0 && o.min_identical <= 100))
     throw UsageError(fmt::format("--min-identical: {} is out of range (0 to 100)", o.min_identical));
+  if (o.repeat < 1 || o.repeat > 1000)
+    throw UsageError(fmt::format("--repeat: {} is out of range (1 to 1000)", o.repeat));
   if (o.window_y != "down" && o.window_y != "up")
     throw UsageError(fmt::format("--window-y: unknown direction '{}' (choose from down, up)",
                                  o.window_y));
@@ -115,13 +157,26 @@ int run(const Options& o) {
     fmt::print("{}: {}x{}, {} triangles; OpenGL: {}, {}\n", o.frame.scene, vp.width, vp.height,
                clip.size(), gl.renderer(), gl.version());
 
+  zb::oracle::GlRenderer renderer(gl);
   std::vector<Row> rows;
   std::vector<std::pair<std::string, zb::Framebuffer>> images;
   for (const zb::PassPlan* plan : plans) {
     zb::GoldenRop golden;
     const zb::Framebuffer g = zb::render(rs, *plan, golden).framebuffer;
-    const zb::Framebuffer l = zb::oracle::render_gl(gl, clip, *plan, scene.background, window_y);
+    const zb::Framebuffer l = renderer.draw(clip, *plan, scene.background, window_y);
     Row row{plan->name, zb::oracle::diff_frames(g, l), {}, {}};
+    if (o.time) {
+      // Each timed frame is checked against the compared one: speed never at the cost of bits.
+      const auto same = [&](const zb::Framebuffer& a, const zb::Framebuffer& b, const char* who) {
+        if (a.color != b.color || a.depth != b.depth)
+          throw std::runtime_error(fmt::format("{}: the timed {} frame differs from the "
+                                               "compared one", plan->name, who));
+      };
+      row.golden_ms = median_ms(o.repeat, [&] { same(golden_frame(scene, vp, *plan), g, "golden"); });
+      row.gl_ms = median_ms(o.repeat, [&] {
+        same(gl_frame(renderer, scene, vp, *plan, window_y), l, "llvmpipe");
+      });
+    }
     classify(rs, *plan, g, l, row);
     if (row.diff.first_x >= 0) {
       row.golden = g.color_at(row.diff.first_x, row.diff.first_y);
@@ -151,6 +206,13 @@ int run(const Options& o) {
                  100 * r.diff.identical_share(), r.diff.max_diff,
                  100 * r.diff.depth_identical_share(), r.diff.max_depth_diff, r.exact_golden,
                  r.exact_gl, r.exact_neither);
+    if (o.time) {
+      fmt::print("\n{:<12} {:>12} {:>12} {:>18}   (median of {} frames each, after a warm-up)\n",
+                 "method", "golden ms", "llvmpipe ms", "llvmpipe / golden", o.repeat);
+      for (const Row& r : rows)
+        fmt::print("{:<12} {:>12.2f} {:>12.2f} {:>18.2f}\n", r.method, r.golden_ms, r.gl_ms,
+                   r.gl_ms / r.golden_ms);
+    }
   }
   int failed = 0;
   for (const Row& r : rows) {
@@ -187,6 +249,11 @@ int main(int argc, char** argv) {
                  "down: GL's window y runs down the picture as zblend's (the picture drawn upside "
                  "down); up: GL's usual y up, where pixels on horizontal edges go to the other "
                  "triangle")
+      ->capture_default_str();
+  app.add_flag("--time", o.time,
+               "Also time each method's whole frame (vertex stage to read-back) on both, checking "
+               "every timed frame against the compared one");
+  app.add_option("--repeat", o.repeat, "--time: frames timed per method and renderer (median)")
       ->capture_default_str();
   app.add_flag("--quiet,-q", o.quiet, "Print nothing but failures and errors");
   try {

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages zblend needs, only those missing. Quiet when all are present.
+# Usage: setup.sh [synth]   (synth: also Yosys and nextpnr-ice40, for `make synth`)
 set -euo pipefail
 
 packages=(
@@ -12,6 +13,12 @@ packages=(
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
   python3-matplotlib
 )
+if [[ ${1:-} == synth ]]; then
+  packages+=(yosys nextpnr-ice40 fpga-icestorm)
+elif [[ $# -gt 0 ]]; then
+  echo "setup: error: unknown group '$1' (the only one is 'synth')" >&2
+  exit 2
+fi
 
 missing=()
 for p in "${packages[@]}"; do
