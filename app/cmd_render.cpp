@@ -135,17 +135,17 @@ void run_render(const RenderOptions& o) {
 #endif
   const std::vector<std::string> methods = parse_methods(o.methods);
   const Viewport vp = check_viewport(o.frame.width, o.frame.height, o.frame.depth_bits);
+  const bool reference_method =
+      std::find(methods.begin(), methods.end(), kReferenceMethod) != methods.end();
+  if (o.no_error && reference_method)
+    throw UsageError("--no-error: the reference method is what errors are measured against; "
+                     "drop one of them");
   check_options(o, methods.size());
 
   // The exact reference feeds the error columns (the table, summary.csv, --stats) and the
   // reference method; it needs the whole scene's fragments stored. The golden model renders
   // without them, so a golden run that writes only images skips both.
   const bool golden = o.backend == "golden";
-  const bool reference_method =
-      std::find(methods.begin(), methods.end(), kReferenceMethod) != methods.end();
-  if (o.no_error && reference_method)
-    throw UsageError("--no-error: the reference method is what errors are measured against; "
-                     "drop one of them");
   const bool need_reference =
       !o.no_error && (!o.quiet || !o.out_dir.empty() || !o.stats.empty() || reference_method);
   std::optional<RasterizedScene> rs;

@@ -238,7 +238,9 @@ struct RtlRop::Impl {
       t.frag_z_i = f[k].z;
       t.frag_rgba_i = f[k].rgba;
       t.frag_cov_i = f[k].cov;
-      t.eval();  // frag_ready_o follows stall_i within the cycle
+      // frag_ready_o follows stall_i within the cycle, so a changed stall_i needs an eval;
+      // without back-pressure only flops move it, and the last edge's eval already shows it.
+      if (thr != 0 || k == 0) t.eval();
       if (valid && t.frag_ready_o) {
         accept_out[f[k].index] = s.cycle;
         ++k;

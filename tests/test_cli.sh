@@ -106,6 +106,20 @@ expect_zblend_error "sweep name" "unknown sweep 'bogus'" sweep bogus --out-dir "
 expect_zblend_error "plan of reference" "no pass plan" plan --method reference
 expect_zblend_error "trace of reference" "no pass plan" trace --method reference --out "$tmp/out/t.zbt"
 expect_zblend_error "trace extension" "must end in .zbt" trace --out "$tmp/out/t.bin"
+# --no-error: the golden model alone, the same image, no error in the stats, memory reported.
+if "$zblend" render -q --scene cad --method three-pass --width 96 --height 72 --out "$tmp/a.png" &&
+   "$zblend" render -q --scene cad --method three-pass --width 96 --height 72 --no-error \
+     --out "$tmp/b.png" --stats "$tmp/b.json"; then
+  cmp -s "$tmp/a.png" "$tmp/b.png" && ok || bad "--no-error changes the image"
+  grep -q '"error": null' "$tmp/b.json" && ok || bad "--no-error: error in stats"
+  grep -q '"frame_bytes": 89856' "$tmp/b.json" && ok || bad "memory.frame_bytes (96 x 72 x 13)"
+  grep -qE '"peak_rss_bytes": [1-9][0-9]+' "$tmp/b.json" && ok || bad "memory.peak_rss_bytes"
+else
+  bad "render --no-error"
+fi
+expect_zblend_error "no-error with reference" "--no-error: the reference method" render \
+  --method three-pass,reference --no-error --out-dir "$tmp/out/d"
+expect_zblend_error "threads" "--threads" render --threads 0 --out "$tmp/out/a.png"
 expect_zblend_error "trace size" "--width: 9000 is out of range" trace --width 9000 --out "$tmp/out/t.zbt"
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n' >"$tmp/bad.obj"
 expect_zblend_error "obj index" "bad.obj: line 4: vertex index 9 out of range" render --scene "$tmp/bad.obj" --out "$tmp/out/a.png"
