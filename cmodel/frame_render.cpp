@@ -8,22 +8,19 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
-#include <exception>
 #include <stdexcept>
 #include <string>
-#include <system_error>
-#include <thread>
 
+#include "band_bins.h"
 #include "coverage.h"
 #include "fixed_point_setup.h"
 #include "lines.h"
 #include "raster.h"
 #include "rop.h"
+#include "workers.h"
 
 namespace zb {
 namespace {
-
-using setup::floor_div;
 
 // Fragments handed to the datapath at a time: a per-thread buffer that stays in the cache.
 constexpr size_t kChunk = 4096;
@@ -32,173 +29,6 @@ constexpr size_t kChunk = 4096;
 constexpr size_t kCacheFragments = size_t{1} << 14;
 // Triangles fetched ahead in a band's list.
 constexpr size_t kPrefetch = 8;
-// Below this many triangles per thread the setup is not split: little work per thread start.
-constexpr size_t kMinParallelSetup = 4096;
-
-int resolve_threads(int threads) {
-  if (threads > 0) return threads;
-  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-}
-
-// Runs work(i) for i in [0, n): i = 0 on the calling thread, the others on threads of their
-// own. Rethrows the exception of the lowest-numbered worker that threw.
-template <class Work>
-void run_workers(int n, Work&& work) {
-  std::vector<std::exception_ptr> errors(static_cast<size_t>(n));
-  auto guarded = [&](int i) {
-    try {
-      work(i);
-    } catch (...) {
-      errors[size_t(i)] = std::current_exception();
-    }
-  };
-  std::vector<std::thread> pool;
-  pool.reserve(size_t(n > 0 ? n - 1 : 0));
-  int spawned = 1;
-  try {
-    for (; spawned < n; ++spawned) pool.emplace_back(guarded, spawned);
-  } catch (const std::system_error&) {
-    // No more threads to be had: the caller does the rest of the work itself.
-  }
-  guarded(0);
-  for (int i = spawned; i < n; ++i) guarded(i);
-  for (std::thread& t : pool) t.join();
-  for (const std::exception_ptr& e : errors)
-    if (e) std::rethrow_exception(e);
-}
-
-// The part of `scene` holding its triangles [first, last) in scene order, with every object
-// that has some of them. setup_triangles numbers the part's triangles from 0. An object's
-// vertices are cut down to those the part's triangles use (each transformed as in the whole
-// scene: the same bits) when every vertex has a normal or none has; otherwise, where which
-// vertices have one depends on their index, the whole arrays are kept. Throws
-// std::out_of_range for a missing vertex (the caller then lets the serial setup report it).
-Scene scene_part(const Scene& scene, size_t first, size_t last) {
-  Scene part;
-  part.materials = scene.materials;
-  part.camera = scene.camera;
-  part.background = scene.background;
-  size_t base = 0;
-  std::vector<uint32_t> remap;
-  for (const Object& obj : scene.objects) {
-    const Mesh& mesh = obj.mesh;
-    const size_t n = mesh.triangles.size();
-    const size_t lo = std::max(first, base), hi = std::min(last, base + n);
-    base += n;
-    if (lo >= hi) continue;
-    Object o;
-    o.name = obj.name;
-    o.material = obj.material;
-    o.transform = obj.transform;
-    const auto tri_first = mesh.triangles.begin() + std::ptrdiff_t(lo - (base - n));
-    const auto tri_last = mesh.triangles.begin() + std::ptrdiff_t(hi - (base - n));
-    const bool compact = mesh.normals.empty() || mesh.normals.size() == mesh.positions.size();
-    if (!compact) {
-      o.mesh.positions = mesh.positions;
-      o.mesh.normals = mesh.normals;
-      o.mesh.triangles.assign(tri_first, tri_last);
-    } else {
-      constexpr uint32_t kUnused = UINT32_MAX;
-      remap.assign(mesh.positions.size(), kUnused);
-      o.mesh.triangles.reserve(hi - lo);
-      for (auto t = tri_first; t != tri_last; ++t) {
-        glm::uvec3 c;
-        for (int k = 0; k < 3; ++k) {
-          const uint32_t v = (*t)[k];
-          if (v >= remap.size()) throw std::out_of_range("scene part: missing vertex");
-          if (remap[v] == kUnused) {
-            remap[v] = static_cast<uint32_t>(o.mesh.positions.size());
-            o.mesh.positions.push_back(mesh.positions[v]);
-            if (!mesh.normals.empty()) o.mesh.normals.push_back(mesh.normals[v]);
-          }
-          c[k] = remap[v];
-        }
-        o.mesh.triangles.push_back(c);
-      }
-    }
-    part.objects.push_back(std::move(o));
-  }
-  return part;
-}
-
-// A primitive in a band's list: its index and the passes that draw it (bit i: pass i; plans of
-// more than 32 passes ask pass_draws for the others), so a pass skips what it filters out
-// without touching the primitive.
-struct BinItem {
-  uint32_t index = 0;
-  uint32_t passes = 0;
-};
-
-// Primitives binned by band, in primitive order. The primitives are cut into contiguous
-// slices binned by different threads: band b's list is slice 0's list for b, then slice 1's...
-struct Bins {
-  int bands = 0;
-  std::vector<std::vector<BinItem>> lists;  // [slice * bands + band]
-  size_t slices() const { return bands ? lists.size() / size_t(bands) : 0; }
-  const std::vector<BinItem>& list(size_t slice, int band) const {
-    return lists[slice * size_t(bands) + size_t(band)];
-  }
-};
-
-// Bins `count` primitives on `threads` threads. rows(i, lo, hi, passes) gives the rows
-// primitive i may touch (false: none; hi inclusive, both within the frame) and its pass bits.
-// The threads find each primitive's bands and count; the lists are then allocated by the
-// caller at their exact sizes (lists grown in the workers' own malloc arenas cost megabytes of
-// resident memory, measured) and filled.
-template <class Rows>
-Bins bin_by_band(size_t count, int bands, int band_rows, int threads, Rows&& rows) {
-  const int slices = static_cast<int>(std::clamp<size_t>(count / 4096, 1, size_t(threads)));
-  auto slice_range = [&](int s, size_t& first, size_t& last) {
-    first = count * size_t(s) / size_t(slices);
-    last = count * size_t(s + 1) / size_t(slices);
-  };
-  struct Span {
-    int32_t lo = 0, hi = -1;  // bands; none when hi < lo
-    uint32_t passes = 0;
-  };
-  std::vector<Span> spans(count);
-  std::vector<size_t> sizes(size_t(slices) * size_t(bands), 0);
-  run_workers(slices, [&](int s) {
-    size_t first = 0, last = 0;
-    slice_range(s, first, last);
-    size_t* n = &sizes[size_t(s) * size_t(bands)];
-    for (size_t i = first; i < last; ++i) {
-      int lo = 0, hi = 0;
-      Span& sp = spans[i];
-      if (!rows(i, lo, hi, sp.passes)) continue;
-      sp.lo = lo / band_rows;
-      sp.hi = hi / band_rows;
-      for (int b = sp.lo; b <= sp.hi; ++b) ++n[b];
-    }
-  });
-  Bins bins;
-  bins.bands = bands;
-  bins.lists.resize(sizes.size());
-  for (size_t k = 0; k < sizes.size(); ++k) bins.lists[k].reserve(sizes[k]);
-  run_workers(slices, [&](int s) {
-    size_t first = 0, last = 0;
-    slice_range(s, first, last);
-    std::vector<BinItem>* lists = &bins.lists[size_t(s) * size_t(bands)];
-    for (size_t i = first; i < last; ++i)
-      for (int b = spans[i].lo; b <= spans[i].hi; ++b)
-        lists[b].push_back(BinItem{static_cast<uint32_t>(i), spans[i].passes});
-  });
-  return bins;
-}
-
-// Rows [floor(y_lo / 256), floor(y_hi / 256)] clipped to the frame; false when the box misses
-// it. Every rasterizer (pixel centres, coverage samples, lines) stays inside this box.
-inline bool box_rows(const Viewport& vp, int64_t x_lo, int64_t x_hi, int64_t y_lo,
-                     int64_t y_hi, int& lo, int& hi) {
-  if (floor_div(x_hi, kSubpixelOne) < 0 || floor_div(x_lo, kSubpixelOne) >= vp.width) return false;
-  const int64_t r0 = std::max<int64_t>(0, floor_div(y_lo, kSubpixelOne));
-  const int64_t r1 = std::min<int64_t>(vp.height - 1, floor_div(y_hi, kSubpixelOne));
-  if (r0 > r1) return false;
-  lo = static_cast<int>(r0);
-  hi = static_cast<int>(r1);
-  return true;
-}
-
 // Everything the bands share, read-only while they run.
 struct FrameJob {
   const FrameGeometry& geometry;
@@ -392,48 +222,6 @@ class BandRenderer {
 };
 
 }  // namespace
-
-bool plan_draws_edges(const PassPlan& plan) {
-  return std::any_of(plan.passes.begin(), plan.passes.end(),
-                     [](const PassState& p) { return p.filter == PrimFilter::kEdges; });
-}
-
-std::vector<ScreenTriangle> setup_triangles_parallel(const Scene& scene, const Viewport& vp,
-                                                     int threads) {
-  const size_t total = scene.triangle_count();
-  const int n = static_cast<int>(
-      std::min<size_t>(size_t(resolve_threads(threads)), total / kMinParallelSetup));
-  if (n <= 1) return setup_triangles(scene, vp);
-  std::vector<std::vector<ScreenTriangle>> parts(static_cast<size_t>(n));
-  try {
-    run_workers(n, [&](int i) {
-      const size_t first = total * size_t(i) / size_t(n), last = total * size_t(i + 1) / size_t(n);
-      parts[size_t(i)] = setup_triangles(scene_part(scene, first, last), vp);
-      for (ScreenTriangle& t : parts[size_t(i)]) t.prim += static_cast<uint32_t>(first);
-    });
-  } catch (const std::exception&) {
-    // A bad scene: the whole setup says what is wrong, in its own words.
-    return setup_triangles(scene, vp);
-  }
-  size_t count = 0;
-  for (const auto& p : parts) count += p.size();
-  std::vector<ScreenTriangle> out;
-  out.reserve(count);
-  for (auto& p : parts) {
-    out.insert(out.end(), p.begin(), p.end());
-    std::vector<ScreenTriangle>().swap(p);
-  }
-  return out;
-}
-
-FrameGeometry setup_frame(const Scene& scene, const Viewport& vp, bool with_lines, int threads) {
-  FrameGeometry g;
-  g.viewport = vp;
-  g.background = scene.background;
-  g.triangles = setup_triangles_parallel(scene, vp, threads);
-  if (with_lines) g.lines = setup_lines(scene, vp, g.triangles);
-  return g;
-}
 
 RenderResult render_frame(const FrameGeometry& geometry, const PassPlan& plan,
                           const FrameRenderOptions& options) {

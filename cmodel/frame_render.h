@@ -7,8 +7,7 @@
 
 #include <vector>
 
-#include "edges.h"
-#include "geometry.h"
+#include "frame_setup.h"
 #include "passes.h"
 #include "render.h"
 #include "scene.h"
@@ -28,28 +27,6 @@ struct FrameRenderOptions {
   // and set-up triangles at once: megabytes more at the peak (docs/raster.md).
   bool parallel_setup = false;
 };
-
-// What a frame is drawn from: the set-up triangles in scene order and, when a pass draws
-// edges, the scene's unique edges (edges.h).
-struct FrameGeometry {
-  Viewport viewport;
-  Rgba8 background;
-  std::vector<ScreenTriangle> triangles;
-  std::vector<ScreenLine> lines;
-};
-
-// True when a pass of `plan` draws the scene's edges (PrimFilter::kEdges).
-bool plan_draws_edges(const PassPlan& plan);
-
-// The triangles of setup_triangles(scene, vp), bit for bit and in the same order, computed on
-// `threads` threads (0 = all cores).
-std::vector<ScreenTriangle> setup_triangles_parallel(const Scene& scene, const Viewport& vp,
-                                                     int threads);
-
-// setup_triangles on `threads` threads (setup_triangles_parallel; 1: serial, 0: all cores),
-// and setup_lines when `with_lines`.
-FrameGeometry setup_frame(const Scene& scene, const Viewport& vp, bool with_lines,
-                          int threads = 1);
 
 // The frame and per-pass statistics of `plan` drawn over `geometry` on the golden model,
 // exactly as render() gives them. Throws std::invalid_argument as GoldenRop does (a coverage
