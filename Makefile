@@ -6,7 +6,7 @@ ZBLEND     := $(BUILD)/zblend
 RUN_SIZE   ?= --width 640 --height 480
 
 .DEFAULT_GOAL := build
-.PHONY: help setup build run test test-asan bench bench-verilator synth lint soak waves coverage fuzz fuzz-ci fuzz-build clean
+.PHONY: help setup build run test test-asan bench bench-verilator synth systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
 
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | awk -F'\t' '{printf "%-16s %s\n", $$1, $$2}'
@@ -42,6 +42,10 @@ bench: build ## Benchmarks: datapath, golden vs llvmpipe, memory, RTL, cost grow
 
 bench-verilator: setup ## Verilator option sets measured against each other: out/bench/verilator_options.csv
 	@scripts/verilator_options.sh -j $(JOBS)
+
+systemc: setup $(BUILD)/CMakeCache.txt ## Golden model and RTL as SystemC modules, co-simulated on cad (docs/systemc.md)
+	@cmake --build $(BUILD) -j $(JOBS) --target zblend_systemc
+	$(BUILD)/zblend_systemc --scene cad --method all $(RUN_SIZE)
 
 synth: ## Yosys and nextpnr-ice40 on the datapath: cells, LUTs, RAMs, FFs, max clock on HX8K: out/synth/
 	@scripts/setup.sh synth

@@ -167,6 +167,23 @@ def rtl(b, reps):
                       1 / r["fragments_per_clock"], "cycles", "1", cmd)
 
 
+def cosim(b):
+    """Wall time per fragment of the golden-RTL co-simulation: SystemC against plain C++."""
+    cmd = [b.exe("zblend_systemc"), "--scene", "cad", "--method", METHOD]
+    out = b.run(cmd)
+    row = next(line.split() for line in out.splitlines() if line.startswith(METHOD))
+    b.add(f"co-simulation wall time per fragment, cad {METHOD} 640x480: SystemC modules",
+          float(row[-1]), "ns", "", cmd)
+    stats = os.path.join(b.out, "cosim-stats.json")
+    cmd = [b.exe("zblend"), "render", "--scene", "cad", "-m", METHOD, "--backend", "both",
+           "--no-error", "-q", "--stats", stats, "--out", os.path.join(b.out, "cosim.png")]
+    b.run(cmd)
+    with open(stats) as f:
+        m = json.load(f)["methods"][0]
+    b.add(f"co-simulation wall time per fragment, cad {METHOD} 640x480: plain C++ testbench",
+          m["host_ms"] * 1e6 / m["total"]["fragments_in"], "ns", "", cmd)
+
+
 def host_ms(b, scene, w, h, reps, camera=None):
     """Median `host_ms` of zblend render over reps runs, and the fragments and triangles."""
     stats = os.path.join(b.out, "growth-stats.json")
@@ -278,6 +295,7 @@ def main():
     memory(b, scene)
     step(4, "RTL simulation")
     rtl(b, reps)
+    cosim(b)
     step(5, "cost growth")
     growth(b, scene, reps, a.quick)
     write_table(b, started)

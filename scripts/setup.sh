@@ -7,7 +7,7 @@ packages=(
   build-essential cmake make
   libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libbenchmark-dev
-  verilator zlib1g-dev
+  verilator zlib1g-dev libsystemc-dev
   clang libclang-rt-14-dev
   libtinyobjloader-dev libtinygltf-dev assimp-testmodels glmark2-data
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri

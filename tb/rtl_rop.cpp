@@ -14,6 +14,8 @@
 #include "coverage.h"
 #endif
 
+#include "tile_bins.h"
+
 #ifdef ZB_TB_BUG
 #include "Vzb_rop_bug.h"
 #include "Vzb_rop_bug_zb_rop.h"
@@ -291,18 +293,15 @@ struct RtlRop::Impl {
     run.store_end = s.cycle;
   }
 
-  // Bins `frags` into tiles, stably.
+  // Bins `frags` into tiles, stably (tile_bins.h).
   void bin() {
-    const int tx = tiles_x(), ty = (fb.height + kRtlTileH - 1) / kRtlTileH;
-    tile_first.assign(size_t(tx) * ty + 1, 0);
-    for (const Fragment& f : frags) ++tile_first[size_t(f.y / kRtlTileH) * tx + f.x / kRtlTileW + 1];
-    for (size_t i = 1; i < tile_first.size(); ++i) tile_first[i] += tile_first[i - 1];
+    TileBins bins;
+    bin_by_tile(frags.data(), frags.size(), fb.width, fb.height, kRtlTileW, kRtlTileH, bins);
+    tile_first = std::move(bins.first);
     binned.resize(frags.size());
-    std::vector<uint32_t> pos(tile_first.begin(), tile_first.end() - 1);
-    for (size_t i = 0; i < frags.size(); ++i) {
-      const Fragment& f = frags[i];
-      binned[pos[size_t(f.y / kRtlTileH) * tx + f.x / kRtlTileW]++] =
-          Streamed{f.x, f.y, f.z, pack_rgba(f.color), uint32_t(i), f.coverage};
+    for (size_t k = 0; k < bins.order.size(); ++k) {
+      const Fragment& f = frags[bins.order[k]];
+      binned[k] = Streamed{f.x, f.y, f.z, pack_rgba(f.color), bins.order[k], f.coverage};
     }
   }
 };

@@ -1,0 +1,207 @@
+#include "zb_rtl_sc.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "Vzb_rop_sc.h"
+#include "Vzb_rop_sc_zb_rop.h"
+#include "rtl_rop.h"
+
+namespace zb::sc {
+
+static_assert(Vzb_rop_sc_zb_rop::TILE_W == kRtlTileW, "zbsc_vlt's TILE_W disagrees with zbtb's");
+static_assert(Vzb_rop_sc_zb_rop::DEPTH_BITS == kRtlDepthBits, "DEPTH_BITS disagrees");
+static_assert(Vzb_rop_sc_zb_rop::COV_SAMPLES == kRtlCoverageSamples, "COV_SAMPLES disagrees");
+
+namespace {
+
+constexpr uint64_t kDrainLimit = 1000;  // as tb/rtl_rop.cpp: cycles busy_o may stay high
+
+uint32_t pack_rgba(Rgba8 c) {
+  return uint32_t{c.r} | uint32_t{c.g} << 8 | uint32_t{c.b} << 16 | uint32_t{c.a} << 24;
+}
+Rgba8 unpack_rgba(uint32_t v) {
+  return {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
+}
+
+}  // namespace
+
+ZbRtlSc::ZbRtlSc(sc_core::sc_module_name name)
+    : sc_core::sc_module(name), rtl_(std::make_unique<Vzb_rop_sc>("zb_rop")) {
+  Vzb_rop_sc& r = *rtl_;
+  r.clk_i(clk_i);
+  r.rst_ni(rst_n_);
+  r.state_we_i(state_we_);
+  r.state_i(state_);
+  r.tile_x0_i(tile_x0_);
+  r.tile_y0_i(tile_y0_);
+  r.frag_valid_i(frag_valid_);
+  r.frag_ready_o(frag_ready_);
+  r.frag_x_i(frag_x_);
+  r.frag_y_i(frag_y_);
+  r.frag_z_i(frag_z_);
+  r.frag_rgba_i(frag_rgba_);
+  r.frag_cov_i(frag_cov_);
+  r.stall_i(stall_);
+  r.tile_req_i(tile_req_);
+  r.tile_we_i(tile_we_);
+  r.tile_addr_i(tile_addr_);
+  r.tile_wcolor_i(tile_wcolor_);
+  r.tile_wdepth_i(tile_wdepth_);
+  r.tile_wcov_i(tile_wcov_);
+  r.tile_wpeel_i(tile_wpeel_);
+  r.tile_rcolor_o(tile_rcolor_);
+  r.tile_rdepth_o(tile_rdepth_);
+  r.tile_rcov_o(tile_rcov_);
+  r.tile_rpeel_o(tile_rpeel_);
+  r.busy_o(busy_);
+  r.cnt_clear_i(cnt_clear_);
+  r.cnt_frag_in_o(cnt_frag_in_);
+  r.cnt_frag_passed_o(cnt_frag_passed_);
+  r.cnt_frag_killed_o(cnt_frag_killed_);
+  r.cnt_depth_reads_o(cnt_depth_reads_);
+  r.cnt_depth_writes_o(cnt_depth_writes_);
+  r.cnt_color_reads_o(cnt_color_reads_);
+  r.cnt_color_writes_o(cnt_color_writes_);
+  r.cnt_stall_cycles_o(cnt_stall_cycles_);
+  r.cnt_cycles_o(cnt_cycles_);
+  SC_HAS_PROCESS(ZbRtlSc);
+  SC_THREAD(run);
+}
+
+ZbRtlSc::~ZbRtlSc() = default;
+
+// Inputs change at the falling edge and zb_rop samples them at the rising one; outputs read at
+// a falling edge are those of the last rising edge.
+void ZbRtlSc::run() {
+  rst_n_.write(false);
+  for (int i = 0; i < 3; ++i) cycle();
+  rst_n_.write(true);
+  cycle();
+  for (;;) {
+    const PassCommand c = cmd_i.read();
+    switch (c.kind) {
+      case PassCommand::Kind::kBeginFrame:
+        if (c.coverage_samples != kRtlCoverageSamples || c.depth_bits != kRtlDepthBits)
+          throw std::invalid_argument("zb_rtl_sc: the Verilated zb_rop has " +
+                                      std::to_string(kRtlDepthBits) + " depth bits and " +
+                                      std::to_string(kRtlCoverageSamples) + " coverage samples");
+        fb_ = Framebuffer(c.width, c.height, c.depth_bits, c.clear, c.coverage_samples);
+        break;
+      case PassCommand::Kind::kBeginPass:
+        state_value_ = c.state;
+        frags_.resize(c.fragments);
+        for (Fragment& f : frags_) f = frag_i.read();
+        break;
+      case PassCommand::Kind::kEndPass: stats_o.write(run_pass()); break;
+      case PassCommand::Kind::kFrameOp: apply_frame_op(fb_, c.op); break;
+    }
+  }
+}
+
+PassStats ZbRtlSc::run_pass() {
+  // The command may arrive at a rising edge, in a delta before or after zb_rop samples it:
+  // inputs change only at falling edges, so every write lands at a known edge.
+  wait(clk_i.negedge_event());
+  ++cycles_;
+  const uint64_t start = cycles_;
+  const sc_core::sc_time start_time = sc_core::sc_time_stamp();
+  bin_by_tile(frags_.data(), frags_.size(), fb_.width, fb_.height, kRtlTileW, kRtlTileH, bins_);
+  PassStats stats;
+  for (size_t t = 0; t + 1 < bins_.first.size(); ++t)
+    if (bins_.first[t] != bins_.first[t + 1])
+      run_tile(int(t % size_t(bins_.columns)) * kRtlTileW, int(t / size_t(bins_.columns)) * kRtlTileH,
+               bins_.first[t], bins_.first[t + 1], stats);
+  busy_cycles_ += cycles_ - start;
+  busy_time_ += sc_core::sc_time_stamp() - start_time;
+  return stats;
+}
+
+// One tile as RtlRop::run_tile (no back-pressure): load it a word a clock, write the state and
+// clear the counters, offer a fragment every clock (held while frag_ready_o is low), drain
+// while busy_o, read the counters, store the tile back a word a clock.
+void ZbRtlSc::run_tile(int x0, int y0, uint32_t b, uint32_t e, PassStats& stats) {
+  const int w = std::min(kRtlTileW, fb_.width - x0), h = std::min(kRtlTileH, fb_.height - y0);
+  const uint64_t load_begin = cycles_;
+  tile_req_.write(true);
+  tile_we_.write(true);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const size_t i = fb_.index(x0 + x, y0 + y);
+      tile_addr_.write(uint32_t(y * kRtlTileW + x));
+      tile_wcolor_.write(pack_rgba(fb_.color[i]));
+      tile_wdepth_.write(fb_.depth[i]);
+      tile_wcov_.write(fb_.coverage[i]);
+      tile_wpeel_.write(fb_.peel[i]);
+      cycle();
+    }
+  tile_req_.write(false);
+  tile_we_.write(false);
+  tile_x0_.write(uint32_t(x0));
+  tile_y0_.write(uint32_t(y0));
+  state_.write(pack_state(state_value_));
+  state_we_.write(true);
+  cnt_clear_.write(true);
+  cycle();
+  state_we_.write(false);
+  cnt_clear_.write(false);
+
+  const uint64_t stream_begin = cycles_;
+  uint64_t refused = 0;
+  for (uint32_t k = b; k < e;) {
+    const Fragment& f = frags_[bins_.order[k]];
+    frag_valid_.write(true);
+    frag_x_.write(f.x);
+    frag_y_.write(f.y);
+    frag_z_.write(f.z);
+    frag_rgba_.write(pack_rgba(f.color));
+    frag_cov_.write(f.coverage);
+    // frag_ready_o depends on flops, stall_i and tile_req_i only (both low now): its value
+    // since the last rising edge is the one the next edge sees.
+    const bool accepted = frag_ready_.read();
+    cycle();
+    if (accepted) {
+      ++k;
+      refused = 0;
+    } else if (++refused > kDrainLimit) {
+      throw std::runtime_error("zb_rtl_sc: frag_ready_o low for " + std::to_string(kDrainLimit) +
+                               " cycles (tile " + std::to_string(x0) + "," + std::to_string(y0) +
+                               ")");
+    }
+  }
+  frag_valid_.write(false);
+  const uint64_t last = cycles_;
+  while (busy_.read()) {
+    if (cycles_ - last > kDrainLimit)
+      throw std::runtime_error("zb_rtl_sc: busy_o still high " + std::to_string(kDrainLimit) +
+                               " cycles after the last fragment");
+    cycle();
+  }
+  const uint64_t stream_end = cycles_;
+  stats.fragments_in += cnt_frag_in_.read();
+  stats.fragments_passed += cnt_frag_passed_.read();
+  stats.depth_reads += cnt_depth_reads_.read();
+  stats.depth_writes += cnt_depth_writes_.read();
+  stats.color_reads += cnt_color_reads_.read();
+  stats.color_writes += cnt_color_writes_.read();
+  stats.cycles += stream_end - stream_begin;
+  if (uint64_t{cnt_frag_killed_.read()} != uint64_t{cnt_frag_in_.read()} - cnt_frag_passed_.read())
+    throw std::runtime_error("zb_rtl_sc: cnt_frag_killed_o != cnt_frag_in_o - cnt_frag_passed_o");
+
+  tile_req_.write(true);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      tile_addr_.write(uint32_t(y * kRtlTileW + x));
+      cycle();
+      const size_t i = fb_.index(x0 + x, y0 + y);
+      fb_.color[i] = unpack_rgba(tile_rcolor_.read());
+      fb_.depth[i] = tile_rdepth_.read();
+      fb_.coverage[i] = uint8_t(tile_rcov_.read());
+      fb_.peel[i] = tile_rpeel_.read();
+    }
+  tile_req_.write(false);
+  io_cycles_ += (stream_begin - load_begin) + (cycles_ - stream_end);
+}
+
+}  // namespace zb::sc
