@@ -75,12 +75,10 @@ void CostCounter::draw(const Fragment* fragments, size_t count) {
       const Fragment& f = fragments[i];
       const size_t t = size_t(f.y / g.size) * size_t(g.columns) + size_t(f.x / g.size);
       const size_t p = size_t(f.y) * size_t(width_) + size_t(f.x);
-      uint64_t issue = kRtlFirstIssue;
-      if (g.count[t]++ == 0)
-        g.touched.push_back(uint32_t(t));
-      else
-        issue = g.issue[t] + 1;
-      if (g.pixel_pass[p] == pass_) issue = std::max(issue, g.pixel_issue[p] + kRtlIssueSpan);
+      const bool first = g.count[t]++ == 0;
+      if (first) g.touched.push_back(uint32_t(t));
+      const uint64_t issue =
+          rtl_issue_cycle(first, g.issue[t], g.pixel_pass[p] == pass_, g.pixel_issue[p]);
       g.issue[t] = issue;
       g.pixel_issue[p] = issue;
       g.pixel_pass[p] = pass_;

@@ -21,6 +21,16 @@ constexpr uint64_t kRtlFirstIssue = 2;
 constexpr uint64_t kRtlIssueSpan = 4;
 constexpr uint64_t kRtlDrain = 12;
 
+// The cycle a fragment issues in, by that rule: `first` for the tile's first fragment, else
+// `previous` is the tile's previous issue; `pixel_seen` when an earlier fragment of this
+// tile's run hit the same pixel, issued in `pixel_previous`.
+constexpr uint64_t rtl_issue_cycle(bool first, uint64_t previous, bool pixel_seen,
+                                   uint64_t pixel_previous) {
+  const uint64_t issue = first ? kRtlFirstIssue : previous + 1;
+  return pixel_seen && pixel_previous + kRtlIssueSpan > issue ? pixel_previous + kRtlIssueSpan
+                                                              : issue;
+}
+
 // A method's cost with square tiles of one size.
 struct TileCost {
   int tile = 0;

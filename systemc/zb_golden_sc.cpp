@@ -1,6 +1,5 @@
 #include "zb_golden_sc.h"
 
-#include <algorithm>
 #include <stdexcept>
 
 #include "rtl_rop.h"
@@ -55,8 +54,7 @@ PassStats ZbGoldenSc::run_pass() {
     for (uint32_t k = b; k < e; ++k) {
       const Fragment& f = frags_[bins_.order[k]];
       const size_t p = fb.index(f.x, f.y);
-      issue = k == b ? kRtlFirstIssue : issue + 1;
-      if (pixel_tile_[p] == tile_stamp_) issue = std::max(issue, pixel_issue_[p] + kRtlIssueSpan);
+      issue = rtl_issue_cycle(k == b, issue, pixel_tile_[p] == tile_stamp_, pixel_issue_[p]);
       pixel_tile_[p] = tile_stamp_;
       pixel_issue_[p] = issue;
       wait_cycles(issue - now);
