@@ -200,24 +200,26 @@ void run_render(const RenderOptions& o) {
     write_or_fail(write_file_atomic((fs::path(o.out_dir) / "summary.csv").string(),
                                     summary_csv(runs, o.frame.depth_bits)));
   if (!o.stats.empty()) {
-    const nlohmann::json header = {{"scene", o.frame.scene},
-                                   {"width", o.frame.width},
-                                   {"height", o.frame.height},
-                                   {"depth_bits", o.frame.depth_bits},
-                                   {"backend", o.backend},
-                                   {"triangles", scene.triangle_count()},
-                                   {"fragments", rs ? nlohmann::json(rs->fragments.size())
-                                                    : nlohmann::json(nullptr)}};
-    nlohmann::json j = nlohmann::json::parse(header.dump());
-    // Peak so far: every method has run and its images are written.
-    j["memory"] = {{"frame_bytes", frame_bytes(vp.width, vp.height)},
-                   {"scene_bytes", scene_bytes(scene)},
-                   {"fragments", rs ? nlohmann::json(rs->fragments.size()) : nlohmann::json(nullptr)},
-                   {"fragment_bytes", rs ? nlohmann::json(rs->fragments.size() *
-                                                          kReferenceFragmentBytes)
-                                         : nlohmann::json(nullptr)},
-                   {"peak_rss_bytes", peak_rss_bytes()}};
-    write_or_fail(write_file_atomic(o.stats, stats_json(runs, o.frame.depth_bits, j.dump())));
+    // The stored fragments exist only where the reference (or the RTL) needed them.
+    const nlohmann::json fragments = rs ? nlohmann::json(rs->fragments.size()) : nlohmann::json();
+    const nlohmann::json fragment_bytes =
+        rs ? nlohmann::json(rs->fragments.size() * kReferenceFragmentBytes) : nlohmann::json();
+    const nlohmann::json header = {
+        {"scene", o.frame.scene},
+        {"width", o.frame.width},
+        {"height", o.frame.height},
+        {"depth_bits", o.frame.depth_bits},
+        {"backend", o.backend},
+        {"triangles", scene.triangle_count()},
+        {"fragments", fragments},
+        // Peak so far: every method has run and its images are written.
+        {"memory",
+         {{"frame_bytes", frame_bytes(vp.width, vp.height)},
+          {"scene_bytes", scene_bytes(scene)},
+          {"fragments", fragments},
+          {"fragment_bytes", fragment_bytes},
+          {"peak_rss_bytes", peak_rss_bytes()}}}};
+    write_or_fail(write_file_atomic(o.stats, stats_json(runs, o.frame.depth_bits, header.dump())));
   }
   if (!o.quiet) print_table(runs);
   if (mismatches) throw VerificationError("RTL and golden model differ (report above)");

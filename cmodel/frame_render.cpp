@@ -67,7 +67,8 @@ class BandRenderer {
     y0_ = band * job_.band_rows;
     const int y1 = std::min(vp.height, y0_ + job_.band_rows);
     const RowRange rows{y0_, y1};
-    if (band_items(job_.triangles, band) == 0 && band_items(job_.lines, band) == 0) {
+    const size_t items = band_items(job_.triangles, band);
+    if (items == 0 && band_items(job_.lines, band) == 0) {
       if (!job_.empty_is_clear) fill_rows(y0_, y1);
       return;  // passes without fragments add nothing to the statistics
     }
@@ -75,9 +76,6 @@ class BandRenderer {
     // and freed, they are what malloc hands back, pages already resident.
     rop_ = GoldenRop();
     rop_.begin_frame(vp.width, y1 - y0_, vp.depth_bits, bg, vp.coverage_samples);
-    size_t items = 0;
-    for (size_t s = 0; s < job_.triangles.slices(); ++s)
-      items += job_.triangles.list(s, band).size();
     cached_.assign(items, Span{});
     cache_.clear();
     for (size_t i = 0; i < job_.plan.passes.size(); ++i) {
