@@ -92,7 +92,7 @@ plan-rtl: setup $(BUILD)/CMakeCache.txt ## Size a model to SCENE within MAX_ERRO
 	if [ "$$c" != 16 ]; then echo "plan-rtl: $$m at $$c coverage samples: 'zblend render' draws" \
 	  "16-sample frames, so it cannot drive that RTL (docs/sizing.md)" >&2; exit 1; fi; \
 	echo "plan-rtl: $$m on zb_rop DEPTH_BITS=$$d COV_SAMPLES=$$c TILE_W=TILE_H=$$t in $$tree"; \
-	verilator $(LINT_ARGS) -GDEPTH_BITS=$$d -GCOV_SAMPLES=$$c -GTILE_W=$$t -GTILE_H=$$t; \
+	scripts/lint_rtl.sh -GDEPTH_BITS=$$d -GCOV_SAMPLES=$$c -GTILE_W=$$t -GTILE_H=$$t; \
 	echo "plan-rtl: zb_rop lints clean (verilator -Wall) with those parameters"; \
 	[ -f $$tree/CMakeCache.txt ] || cmake -S . -B $$tree -DCMAKE_BUILD_TYPE=Release \
 	  -DZBLEND_RTL_DEPTH_BITS=$$d -DZBLEND_RTL_COV_SAMPLES=$$c -DZBLEND_RTL_TILE=$$t >/dev/null; \
@@ -154,16 +154,8 @@ fuzz-ci: fuzz-build ## The fuzzers FUZZ_CI_SECONDS each, from the seeds only (pa
 	@rm -rf out/fuzz-ci
 	@JOBS=$(JOBS) scripts/fuzz.sh $(FUZZ_BUILD) $(FUZZ_CI_SECONDS) out/fuzz-ci out/fuzz/crashes
 
-RTL       := $(sort $(wildcard rtl/*.sv))
-LINT_ARGS := --lint-only -Wall rtl/lint_waivers.vlt $(RTL) --top-module zb_rop
-
-lint: setup ## Verilator lint of the RTL (-Wall), for several parameter sets
-	verilator $(LINT_ARGS)
-	verilator $(LINT_ARGS) -GDEPTH_BITS=16 -GTILE_W=32 -GTILE_H=16 -GCOV_SAMPLES=4
-	verilator $(LINT_ARGS) -GDEPTH_BITS=32 -GCOV_SAMPLES=1 +define+ZB_INJECT_BLEND_BUG
-	verilator $(LINT_ARGS) -GCOV_SAMPLES=2
-	verilator $(LINT_ARGS) -GCOV_SAMPLES=8
-	@echo "lint: clean"
+lint: setup ## Verilator lint of the RTL (-Wall), for every parameter set of rtl/lint_sets.txt
+	@scripts/lint_rtl.sh --all
 
 clean: ## Remove build trees and outputs
 	rm -rf $(BUILD) $(ASAN_BUILD) $(COV_BUILD) $(FUZZ_BUILD) out

@@ -5,10 +5,10 @@
 #include <fmt/format.h>
 
 #include "commands.h"
-#include "image.h"
-#include "passes.h"
-#include "scene_suite.h"
-#include "scenes.h"
+#include "io/image.h"
+#include "pipeline/passes.h"
+#include "scene/scene_suite.h"
+#include "scene/builtin_scenes.h"
 #include "sizing.h"
 #include "sizing_report.h"
 

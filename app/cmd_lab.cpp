@@ -10,20 +10,20 @@
 #include <memory>
 #include <mutex>
 #include <sstream>
-#include <thread>
 
 #include <fmt/core.h>
 
 #include "chart_tools.h"
 #include "commands.h"
-#include "image.h"
+#include "io/image.h"
 #include "lab.h"
-#include "passes.h"
+#include "parallel/parallel.h"
+#include "pipeline/passes.h"
 #include "report.h"
 #include "rtl_rop.h"
-#include "scene_file.h"
-#include "scene_suite.h"
-#include "scenes.h"
+#include "io/scene_file.h"
+#include "scene/scene_suite.h"
+#include "scene/builtin_scenes.h"
 
 namespace zb::app {
 namespace {
@@ -215,10 +215,7 @@ std::vector<lab::SceneRun> run_scenes(const std::vector<lab::LabScene>& scenes,
       }
     }
   };
-  std::vector<std::thread> threads;
-  const int n = std::min<int>(o.jobs, static_cast<int>(scenes.size()));
-  for (int t = 0; t < n; ++t) threads.emplace_back(worker);
-  for (std::thread& t : threads) t.join();
+  run_workers(std::min<int>(o.jobs, static_cast<int>(scenes.size())), [&](int) { worker(); });
   for (const std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);
   return runs;

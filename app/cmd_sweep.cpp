@@ -9,7 +9,7 @@
 
 #include "chart_tools.h"
 #include "commands.h"
-#include "image.h"
+#include "io/image.h"
 #include "sweeps.h"
 
 namespace zb::app {

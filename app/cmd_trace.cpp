@@ -5,9 +5,9 @@
 #include <fmt/core.h>
 
 #include "commands.h"
-#include "passes.h"
-#include "render.h"
-#include "trace.h"
+#include "pipeline/passes.h"
+#include "pipeline/render.h"
+#include "io/trace.h"
 
 namespace zb::app {
 namespace {

@@ -7,8 +7,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "geometry.h"
-#include "scene.h"
+#include "geometry/geometry.h"
+#include "scene/scene.h"
 
 namespace zb::app {
 

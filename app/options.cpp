@@ -7,9 +7,10 @@
 #include <fmt/core.h>
 
 #include "commands.h"
-#include "passes.h"
-#include "scene_file.h"
-#include "scenes.h"
+#include "pipeline/passes.h"
+#include "io/scene_file.h"
+#include "scene/camera.h"
+#include "scene/builtin_scenes.h"
 
 namespace zb::app {
 
@@ -28,7 +29,7 @@ Scene resolve_scene(const std::string& name, const std::string& camera) {
     try {
       spec = parse_camera_spec(camera);
     } catch (const std::invalid_argument& e) {
-      throw UsageError(e.what());
+      throw UsageError(fmt::format("--camera: {}", e.what()));
     }
   }
   // A built-in name wins; any other name that exists on disk (a directory, a file without a
@@ -52,7 +53,7 @@ Scene resolve_scene(const std::string& name, const std::string& camera) {
     try {
       aim_camera(*scene, *spec);
     } catch (const std::invalid_argument& e) {
-      throw UsageError(e.what());
+      throw UsageError(fmt::format("--camera: {}", e.what()));
     }
   }
   return std::move(*scene);

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "backend.h"
-#include "metrics.h"
+#include "rop/backend.h"
+#include "metrics/metrics.h"
 
 namespace zb::app {
 

@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <random>
 
-#include "frame_render.h"
-#include "passes.h"
-#include "render.h"
-#include "rop.h"
-#include "scenes.h"
+#include "pipeline/frame_render.h"
+#include "pipeline/passes.h"
+#include "pipeline/render.h"
+#include "rop/rop.h"
+#include "scene/builtin_scenes.h"
 
 namespace {
 

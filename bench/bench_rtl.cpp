@@ -6,11 +6,11 @@
 #include <chrono>
 #include <vector>
 
-#include "passes.h"
-#include "render.h"
-#include "rop.h"
+#include "pipeline/passes.h"
+#include "pipeline/render.h"
+#include "rop/rop.h"
 #include "rtl_rop.h"
-#include "scenes.h"
+#include "scene/builtin_scenes.h"
 #include "suites.h"
 
 namespace {

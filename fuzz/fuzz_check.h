@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "render.h"
-#include "scene.h"
+#include "pipeline/render.h"
+#include "scene/scene.h"
 
 #define FUZZ_CHECK(cond)                                                                 \
   do {                                                                                   \

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "fuzz_check.h"
-#include "scene_file.h"
+#include "io/scene_file.h"
 
 namespace {
 

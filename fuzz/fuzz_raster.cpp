@@ -9,10 +9,11 @@
 #include <stdexcept>
 
 #include "fuzz_check.h"
-#include "passes.h"
-#include "reference.h"
-#include "rop.h"
-#include "scene_file.h"
+#include "pipeline/passes.h"
+#include "reference/reference.h"
+#include "rop/rop.h"
+#include "io/scene_file.h"
+#include "scene/camera.h"
 
 namespace {
 

@@ -5,8 +5,8 @@
 #include <string>
 
 #include "fuzz_check.h"
-#include "rop.h"
-#include "trace.h"
+#include "rop/rop.h"
+#include "io/trace.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string bytes(reinterpret_cast<const char*>(data), size);

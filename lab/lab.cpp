@@ -8,10 +8,10 @@
 
 #include <fmt/core.h>
 
-#include "passes.h"
-#include "reference.h"
-#include "render.h"
-#include "rop.h"
+#include "pipeline/passes.h"
+#include "reference/reference.h"
+#include "pipeline/render.h"
+#include "rop/rop.h"
 #include "rtl_rop.h"
 
 namespace zb::lab {

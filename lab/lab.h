@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "backend.h"
-#include "framebuffer.h"
-#include "geometry.h"
-#include "metrics.h"
-#include "scene.h"
+#include "rop/backend.h"
+#include "rop/framebuffer.h"
+#include "geometry/geometry.h"
+#include "metrics/metrics.h"
+#include "scene/scene.h"
 
 namespace zb::lab {
 

@@ -7,8 +7,8 @@
 
 #include <fmt/core.h>
 
-#include "metrics.h"
-#include "passes.h"
+#include "metrics/metrics.h"
+#include "pipeline/passes.h"
 
 namespace zb::lab {
 namespace {

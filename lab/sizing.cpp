@@ -9,10 +9,10 @@
 
 #include <fmt/core.h>
 
-#include "passes.h"
-#include "reference.h"
-#include "render.h"
-#include "rop.h"
+#include "pipeline/passes.h"
+#include "reference/reference.h"
+#include "pipeline/render.h"
+#include "rop/rop.h"
 
 namespace zb {
 

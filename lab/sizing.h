@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "analysis.h"
-#include "metrics.h"
-#include "scene.h"
+#include "metrics/scene_analysis.h"
+#include "metrics/metrics.h"
+#include "scene/scene.h"
 #include "sizing_cost.h"
 
 namespace zb {

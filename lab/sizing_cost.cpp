@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "analysis.h"
+#include "metrics/scene_analysis.h"
 
 namespace zb {
 

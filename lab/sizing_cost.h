@@ -7,29 +7,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "backend.h"
+#include "rop/backend.h"
+#include "rtl_timing.h"
 
 namespace zb {
-
-// zb_rop's streaming timing (docs/rtl.md "Pipeline" and "Interlock"), fragments offered every
-// cycle from the tile's first streaming cycle (cycle 0): the first issues in cycle
-// kRtlFirstIssue; each later one in max(the previous one's cycle + 1, the cycle of the
-// previous fragment to its pixel + kRtlIssueSpan); busy_o falls kRtlDrain cycles after the
-// last issue. So a tile streams last issue + kRtlDrain cycles: its fragments + 13 when no
-// fragment waits.
-constexpr uint64_t kRtlFirstIssue = 2;
-constexpr uint64_t kRtlIssueSpan = 4;
-constexpr uint64_t kRtlDrain = 12;
-
-// The cycle a fragment issues in, by that rule: `first` for the tile's first fragment, else
-// `previous` is the tile's previous issue; `pixel_seen` when an earlier fragment of this
-// tile's run hit the same pixel, issued in `pixel_previous`.
-constexpr uint64_t rtl_issue_cycle(bool first, uint64_t previous, bool pixel_seen,
-                                   uint64_t pixel_previous) {
-  const uint64_t issue = first ? kRtlFirstIssue : previous + 1;
-  return pixel_seen && pixel_previous + kRtlIssueSpan > issue ? pixel_previous + kRtlIssueSpan
-                                                              : issue;
-}
 
 // A method's cost with square tiles of one size.
 struct TileCost {

@@ -6,9 +6,9 @@
 
 #include <fmt/core.h>
 
-#include "passes.h"
-#include "reference.h"
-#include "scene_suite.h"
+#include "pipeline/passes.h"
+#include "reference/reference.h"
+#include "scene/scene_suite.h"
 #include "sweeps.h"
 
 namespace zb::lab {

@@ -7,8 +7,8 @@
 #include <fmt/core.h>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "passes.h"
-#include "reference.h"
+#include "pipeline/passes.h"
+#include "reference/reference.h"
 #include "sweeps.h"
 
 namespace zb::lab {

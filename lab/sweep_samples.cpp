@@ -5,9 +5,9 @@
 
 #include <fmt/core.h>
 
-#include "passes.h"
-#include "reference.h"
-#include "scene_build.h"
+#include "pipeline/passes.h"
+#include "reference/reference.h"
+#include "scene/scene_build.h"
 #include "sweeps.h"
 
 namespace zb::lab {

@@ -4,7 +4,7 @@
 
 #include <fmt/core.h>
 
-#include "passes.h"
+#include "pipeline/passes.h"
 #include "sweeps.h"
 
 namespace zb::lab {

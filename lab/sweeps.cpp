@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "passes.h"
-#include "reference.h"
-#include "rop.h"
+#include "pipeline/passes.h"
+#include "reference/reference.h"
+#include "rop/rop.h"
 
 namespace zb::lab {
 

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "framebuffer.h"
-#include "geometry.h"
-#include "metrics.h"
-#include "render.h"
-#include "scene.h"
+#include "rop/framebuffer.h"
+#include "geometry/geometry.h"
+#include "metrics/metrics.h"
+#include "pipeline/render.h"
+#include "scene/scene.h"
 
 namespace zb::lab {
 

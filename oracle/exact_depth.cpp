@@ -2,7 +2,7 @@
 
 #include <unordered_map>
 
-#include "rop.h"
+#include "rop/rop.h"
 
 namespace zb::oracle {
 

@@ -7,8 +7,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "passes.h"
-#include "render.h"
+#include "pipeline/passes.h"
+#include "pipeline/render.h"
 
 namespace zb::oracle {
 

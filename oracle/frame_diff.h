@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "framebuffer.h"
+#include "rop/framebuffer.h"
 
 namespace zb::oracle {
 

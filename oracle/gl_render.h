@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "framebuffer.h"
-#include "geometry.h"
+#include "rop/framebuffer.h"
+#include "geometry/geometry.h"
 #include "gl_context.h"
-#include "passes.h"
+#include "pipeline/passes.h"
 
 namespace zb::oracle {
 

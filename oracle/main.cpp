@@ -16,11 +16,11 @@
 #include "commands.h"
 #include "exact_depth.h"
 #include "frame_diff.h"
-#include "frame_render.h"
+#include "pipeline/frame_render.h"
 #include "gl_render.h"
-#include "image.h"
-#include "render.h"
-#include "rop.h"
+#include "io/image.h"
+#include "pipeline/render.h"
+#include "rop/rop.h"
 
 namespace {
 

@@ -13,11 +13,11 @@
 #include <systemc>
 
 #include "commands.h"
-#include "passes.h"
-#include "render.h"
-#include "rtl_rop.h"
-#include "scenes.h"
-#include "trace.h"
+#include "pipeline/passes.h"
+#include "pipeline/render.h"
+#include "rtl_params.h"
+#include "scene/builtin_scenes.h"
+#include "io/trace.h"
 #include "zb_cosim_sc.h"
 #include "zb_golden_sc.h"
 #include "zb_rtl_sc.h"

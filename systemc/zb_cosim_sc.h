@@ -8,7 +8,7 @@
 
 #include <systemc>
 
-#include "trace.h"
+#include "io/trace.h"
 #include "zb_sc_types.h"
 
 namespace zb::sc {

@@ -2,8 +2,8 @@
 
 #include <stdexcept>
 
-#include "rtl_rop.h"
-#include "sizing_cost.h"
+#include "rtl_params.h"
+#include "rtl_timing.h"
 
 namespace zb::sc {
 

@@ -6,7 +6,7 @@
 
 #include <systemc>
 
-#include "rop.h"
+#include "rop/rop.h"
 #include "tile_bins.h"
 #include "zb_sc_types.h"
 

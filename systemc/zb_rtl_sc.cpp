@@ -6,7 +6,7 @@
 
 #include "Vzb_rop_sc.h"
 #include "Vzb_rop_sc_zb_rop.h"
-#include "rtl_rop.h"
+#include "rtl_params.h"
 
 namespace zb::sc {
 

@@ -8,7 +8,7 @@
 
 #include <systemc>
 
-#include "framebuffer.h"
+#include "rop/framebuffer.h"
 #include "tile_bins.h"
 #include "zb_sc_types.h"
 

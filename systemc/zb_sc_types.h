@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <ostream>
 
-#include "backend.h"
-#include "fragment.h"
+#include "rop/backend.h"
+#include "rop/fragment.h"
 
 namespace zb::sc {
 

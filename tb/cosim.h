@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "backend.h"
-#include "rop.h"
+#include "rop/backend.h"
+#include "rop/rop.h"
 #include "rtl_rop.h"
 
 namespace zb {

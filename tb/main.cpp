@@ -9,9 +9,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "coverage.h"
+#include "code_coverage.h"
 #include "suites.h"
-#include "trace.h"
+#include "io/trace.h"
 
 using namespace zb;
 using namespace zb::tb;

@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <functional>
 
-#include "fixed.h"
-#include "passes.h"
-#include "render.h"
-#include "scenes.h"
+#include "rop/blend.h"
+#include "pipeline/passes.h"
+#include "pipeline/render.h"
+#include "scene/builtin_scenes.h"
 
 namespace zb::tb {
 

@@ -1,0 +1,77 @@
+# The RTL as the C++ side builds it: its sources, its widths (one set of -G parameters for every
+# Verilated model and for the C++ mirrors), Verilator's options, and zblend_verilate(), the one
+# place a model of zb_rop is Verilated (rtlmodel/ for the testbench, systemc/ with --sc).
+file(GLOB ZBLEND_RTL CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/rtl/*.sv)
+set(ZBLEND_RTL_WAIVERS ${PROJECT_SOURCE_DIR}/rtl/lint_waivers.vlt)
+
+# The widths (docs/sizing.md; `make plan-rtl` builds a tree with those `zblend plan` chooses).
+set(ZBLEND_RTL_DEPTH_BITS 24 CACHE STRING "zb_rop DEPTH_BITS: depth width, 8 to 32")
+set(ZBLEND_RTL_COV_SAMPLES 16 CACHE STRING "zb_rop COV_SAMPLES: coverage samples, 1, 2, 4, 8 or 16")
+set(ZBLEND_RTL_TILE 64 CACHE STRING "zb_rop TILE_W and TILE_H: square tile, a power of two >= 2")
+if(NOT ZBLEND_RTL_DEPTH_BITS MATCHES "^[0-9]+$" OR ZBLEND_RTL_DEPTH_BITS LESS 8
+   OR ZBLEND_RTL_DEPTH_BITS GREATER 32)
+  message(FATAL_ERROR "ZBLEND_RTL_DEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS}: choose 8 to 32")
+endif()
+if(NOT ZBLEND_RTL_COV_SAMPLES MATCHES "^(1|2|4|8|16)$")
+  message(FATAL_ERROR "ZBLEND_RTL_COV_SAMPLES=${ZBLEND_RTL_COV_SAMPLES}: choose 1, 2, 4, 8 or 16")
+endif()
+if(NOT ZBLEND_RTL_TILE MATCHES "^(2|4|8|16|32|64|128|256|512|1024)$")
+  message(FATAL_ERROR "ZBLEND_RTL_TILE=${ZBLEND_RTL_TILE}: choose a power of two from 2 to 1024")
+endif()
+set(ZBLEND_RTL_PARAMS -GDEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS} -GCOV_SAMPLES=${ZBLEND_RTL_COV_SAMPLES}
+    -GTILE_W=${ZBLEND_RTL_TILE} -GTILE_H=${ZBLEND_RTL_TILE})
+# The same values for the C++ mirrors (rtlmodel/rtl_params.h).
+set(ZBLEND_RTL_DEFINES ZBLEND_RTL_DEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS}
+    ZBLEND_RTL_COV_SAMPLES=${ZBLEND_RTL_COV_SAMPLES} ZBLEND_RTL_TILE=${ZBLEND_RTL_TILE})
+
+# Verilator's optimisation options, the model's threads and the C++ flags of its hot code:
+# chosen by measurement (scripts/verilator_options.sh, docs/bench.md), overridable for it.
+set(ZBLEND_VERILATOR_OPT -O3 --x-assign fast --x-initial fast CACHE STRING
+    "Verilator optimisation options of the RTL model")
+set(ZBLEND_VERILATOR_THREADS 1 CACHE STRING "Verilator --threads of the RTL model")
+set(ZBLEND_VERILATOR_OPT_FAST "" CACHE STRING "C++ flags added to the model's hot code")
+
+# zblend_verilate(TARGET PREFIX P DIRECTORY D [SYSTEMC] [BUG] [COVERAGE] [TRACE]): a static
+# library TARGET holding zb_rop Verilated with the widths above. BUG adds
+# +define+ZB_INJECT_BLEND_BUG (the defect the checkers must catch); SYSTEMC builds it with --sc.
+function(zblend_verilate target)
+  cmake_parse_arguments(V "SYSTEMC;BUG;COVERAGE;TRACE" "PREFIX;DIRECTORY" "" ${ARGN})
+  set(args --assert ${ZBLEND_VERILATOR_OPT} -Wall ${ZBLEND_RTL_PARAMS})
+  if(V_BUG)
+    list(APPEND args +define+ZB_INJECT_BLEND_BUG)
+  endif()
+  set(kind "")
+  if(V_SYSTEMC)
+    set(kind SYSTEMC)
+  endif()
+  set(extra "")
+  if(V_TRACE)
+    list(APPEND extra TRACE_FST)
+  endif()
+  if(V_COVERAGE)
+    list(APPEND extra COVERAGE)
+  endif()
+  add_library(${target} STATIC)
+  verilate(${target} ${kind} ${extra}
+    SOURCES ${PROJECT_SOURCE_DIR}/rtlmodel/zb_rop_public.vlt ${ZBLEND_RTL_WAIVERS} ${ZBLEND_RTL}
+    TOP_MODULE zb_rop PREFIX ${V_PREFIX}
+    THREADS ${ZBLEND_VERILATOR_THREADS} OPT_FAST ${ZBLEND_VERILATOR_OPT_FAST}
+    DIRECTORY ${V_DIRECTORY}
+    VERILATOR_ARGS ${args})
+  if(V_SYSTEMC)
+    verilator_link_systemc(${target})  # verilate() only sets VM_SC; this adds libsystemc
+  endif()
+  # Generated and Verilator runtime code: not held to the project's warning flags.
+  target_compile_options(${target} PRIVATE -w -Wno-error)
+  set_target_properties(${target} PROPERTIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES
+    $<TARGET_PROPERTY:${target},INTERFACE_INCLUDE_DIRECTORIES>)
+  if(V_COVERAGE)
+    target_compile_definitions(${target} INTERFACE VM_COVERAGE=1)
+  endif()
+  if(ZBLEND_SANITIZE)
+    # Verilator's trace buffer (verilated_trace.h, chgQData) reads 64-bit signals through 32-bit
+    # aligned slots; the generated trace code inlines it. Only the alignment check is lifted
+    # there: the rest of UBSan and all of ASan still cover the model.
+    target_compile_options(${target} PRIVATE -fno-sanitize=alignment)
+  endif()
+endfunction()

@@ -1,0 +1,250 @@
+#include "trace.h"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/core.h>
+
+#include "geometry/geometry.h"
+#include "image.h"
+
+namespace zb {
+namespace {
+
+constexpr char kMagic[8] = {'Z', 'B', 'T', 'R', 'A', 'C', 'E', '\0'};
+// 2: coverage samples in the header, coverage per fragment; 3: 13-bit pass state (3-bit blend,
+// peel_test), frame operations before each pass and after the last.
+constexpr uint32_t kVersion = 3;
+constexpr uint32_t kMaxFrameOps = 64;
+constexpr uint32_t kMaxPasses = 1024;
+constexpr uint32_t kMaxNameLength = 256;
+constexpr size_t kFragmentBytes = 20;
+
+void put(std::string& out, const void* p, size_t n) { out.append(static_cast<const char*>(p), n); }
+void put_u8(std::string& out, uint8_t v) { out.push_back(static_cast<char>(v)); }
+void put_u16(std::string& out, uint16_t v) { for (int i = 0; i < 2; ++i) put_u8(out, uint8_t(v >> (8 * i))); }
+void put_u32(std::string& out, uint32_t v) { for (int i = 0; i < 4; ++i) put_u8(out, uint8_t(v >> (8 * i))); }
+void put_u64(std::string& out, uint64_t v) { for (int i = 0; i < 8; ++i) put_u8(out, uint8_t(v >> (8 * i))); }
+
+// Reads little-endian fields, with the offset of each for error messages.
+class Reader {
+ public:
+  Reader(const std::string& bytes, const std::string& name) : bytes_(bytes), name_(name) {}
+
+  [[noreturn]] void fail(size_t at, const std::string& what) const {
+    throw TraceError(fmt::format("trace '{}': byte {}: {}", name_, at, what));
+  }
+  size_t offset() const { return pos_; }
+  size_t remaining() const { return bytes_.size() - pos_; }
+  uint64_t get(int n, const char* what) {
+    if (remaining() < size_t(n)) fail(pos_, fmt::format("truncated, expected {}", what));
+    uint64_t v = 0;
+    for (int i = 0; i < n; ++i) v |= uint64_t(uint8_t(bytes_[pos_ + size_t(i)])) << (8 * i);
+    pos_ += size_t(n);
+    return v;
+  }
+  std::string get_string(size_t n, const char* what) {
+    if (remaining() < n) fail(pos_, fmt::format("truncated, expected {}", what));
+    std::string s = bytes_.substr(pos_, n);
+    pos_ += n;
+    return s;
+  }
+
+ private:
+  const std::string& bytes_;
+  const std::string& name_;
+  size_t pos_ = 0;
+};
+
+void put_ops(std::string& out, const std::vector<FrameOp>& ops) {
+  put_u32(out, uint32_t(ops.size()));
+  for (const FrameOp& op : ops) {
+    put_u8(out, uint8_t(op.kind));
+    for (uint8_t c : {op.value.r, op.value.g, op.value.b, op.value.a}) put_u8(out, c);
+    put_u32(out, op.depth);
+  }
+}
+
+std::vector<FrameOp> get_ops(Reader& r, const std::string& where) {
+  const size_t at = r.offset();
+  const uint64_t n = r.get(4, "a frame op count");
+  if (n > kMaxFrameOps) r.fail(at, fmt::format("{}: {} frame ops is more than {}", where, n, kMaxFrameOps));
+  std::vector<FrameOp> ops(static_cast<size_t>(n));
+  for (FrameOp& op : ops) {
+    const size_t at_op = r.offset();
+    const uint64_t kind = r.get(1, "a frame op kind");
+    if (kind >= kFrameOpKinds) r.fail(at_op, fmt::format("{}: frame op kind {} is unknown", where, kind));
+    op.kind = FrameOpKind(kind);
+    op.value.r = uint8_t(r.get(1, "a frame op value"));
+    op.value.g = uint8_t(r.get(1, "a frame op value"));
+    op.value.b = uint8_t(r.get(1, "a frame op value"));
+    op.value.a = uint8_t(r.get(1, "a frame op value"));
+    op.depth = uint32_t(r.get(4, "a frame op depth"));
+  }
+  return ops;
+}
+
+}  // namespace
+
+Trace make_trace(const RasterizedScene& rs, const PassPlan& plan) {
+  Trace t;
+  t.width = rs.viewport.width;
+  t.height = rs.viewport.height;
+  t.depth_bits = rs.viewport.depth_bits;
+  t.coverage_samples = rs.viewport.coverage_samples;
+  t.clear_color = rs.background;
+  for (const PassState& p : plan.passes) {
+    TracePass tp{p.name, {}, p.rop, pass_fragments(rs, p)};
+    for (const FrameOp& op : p.frame_ops) tp.frame_ops.push_back(resolve_op(op, rs.background));
+    t.passes.push_back(std::move(tp));
+  }
+  for (const FrameOp& op : plan.final_ops) t.final_ops.push_back(resolve_op(op, rs.background));
+  return t;
+}
+
+std::string serialize_trace(const Trace& t) {
+  std::string out;
+  put(out, kMagic, sizeof kMagic);
+  put_u32(out, kVersion);
+  put_u32(out, uint32_t(t.width));
+  put_u32(out, uint32_t(t.height));
+  put_u32(out, uint32_t(t.depth_bits));
+  put_u32(out, uint32_t(t.coverage_samples));
+  for (uint8_t c : {t.clear_color.r, t.clear_color.g, t.clear_color.b, t.clear_color.a}) put_u8(out, c);
+  put_u32(out, uint32_t(t.passes.size()));
+  for (const TracePass& p : t.passes) {
+    put_u32(out, uint32_t(p.name.size()));
+    put(out, p.name.data(), p.name.size());
+    put_ops(out, p.frame_ops);
+    put_u16(out, pack_state(p.state));
+    put_u64(out, p.fragments.size());
+    for (const Fragment& f : p.fragments) {
+      put_u16(out, f.x);
+      put_u16(out, f.y);
+      put_u32(out, f.z);
+      for (uint8_t c : {f.color.r, f.color.g, f.color.b, f.color.a}) put_u8(out, c);
+      put_u8(out, f.front ? 1 : 0);
+      put_u8(out, f.coverage);  // flags bits 8..15
+      put_u16(out, 0);
+      put_u32(out, f.prim);
+    }
+  }
+  put_ops(out, t.final_ops);
+  return out;
+}
+
+std::string write_trace(const std::string& path, const Trace& trace) {
+  return write_file_atomic(path, serialize_trace(trace));
+}
+
+Trace parse_trace(const std::string& bytes, const std::string& name) {
+  Reader r(bytes, name);
+  if (r.get_string(sizeof kMagic, "the magic 'ZBTRACE'") != std::string(kMagic, sizeof kMagic))
+    r.fail(0, "not a zblend trace (bad magic)");
+  const size_t at_version = r.offset();
+  if (const uint64_t v = r.get(4, "the version"); v != kVersion)
+    r.fail(at_version, fmt::format("version {} is not supported (this zblend reads {})", v, kVersion));
+  Trace t;
+  const size_t at_size = r.offset();
+  const uint64_t w = r.get(4, "the width"), h = r.get(4, "the height");
+  if (w < 1 || w > uint64_t(kMaxFrameSize) || h < 1 || h > uint64_t(kMaxFrameSize))
+    r.fail(at_size, fmt::format("frame {}x{} is out of range (1 to {})", w, h, kMaxFrameSize));
+  t.width = int(w);
+  t.height = int(h);
+  const size_t at_bits = r.offset();
+  const uint64_t bits = r.get(4, "the depth width");
+  if (bits < uint64_t(kMinDepthBits) || bits > uint64_t(kMaxDepthBits))
+    r.fail(at_bits, fmt::format("depth width {} is out of range ({} to {})", bits, kMinDepthBits,
+                                kMaxDepthBits));
+  t.depth_bits = int(bits);
+  const size_t at_samples = r.offset();
+  const uint64_t samples = r.get(4, "the coverage samples");
+  if (samples > uint64_t(kMaxCoverageSamples) || !valid_coverage_samples(int(samples)))
+    r.fail(at_samples, fmt::format("coverage samples {} is not a power of two from 1 to {}",
+                                   samples, kMaxCoverageSamples));
+  t.coverage_samples = int(samples);
+  t.clear_color.r = uint8_t(r.get(1, "the clear colour"));
+  t.clear_color.g = uint8_t(r.get(1, "the clear colour"));
+  t.clear_color.b = uint8_t(r.get(1, "the clear colour"));
+  t.clear_color.a = uint8_t(r.get(1, "the clear colour"));
+  const size_t at_passes = r.offset();
+  const uint64_t passes = r.get(4, "the pass count");
+  if (passes > kMaxPasses)
+    r.fail(at_passes, fmt::format("{} passes is more than {}", passes, kMaxPasses));
+  for (uint64_t p = 0; p < passes; ++p) {
+    TracePass pass;
+    const size_t at_name = r.offset();
+    const uint64_t len = r.get(4, "a pass name length");
+    if (len > kMaxNameLength) r.fail(at_name, fmt::format("pass name of {} bytes", len));
+    pass.name = r.get_string(size_t(len), "a pass name");
+    pass.frame_ops = get_ops(r, fmt::format("pass {}", p + 1));
+    const size_t at_state = r.offset();
+    if (!unpack_state(uint16_t(r.get(2, "a pass state")), pass.state))
+      r.fail(at_state, fmt::format("pass {}: invalid pass state", p + 1));
+    const size_t at_count = r.offset();
+    const uint64_t count = r.get(8, "a fragment count");
+    if (count > r.remaining() / kFragmentBytes)
+      r.fail(at_count, fmt::format("pass {}: {} fragments announced, {} bytes left", p + 1, count,
+                                   r.remaining()));
+    pass.fragments.resize(size_t(count));
+    for (Fragment& f : pass.fragments) {
+      const size_t at = r.offset();
+      f.x = uint16_t(r.get(2, "x"));
+      f.y = uint16_t(r.get(2, "y"));
+      const uint64_t z = r.get(4, "z");
+      f.color = {uint8_t(r.get(1, "r")), uint8_t(r.get(1, "g")), uint8_t(r.get(1, "b")),
+                 uint8_t(r.get(1, "a"))};
+      const uint64_t flags = r.get(4, "flags");
+      f.prim = uint32_t(r.get(4, "prim"));
+      if (f.x >= t.width || f.y >= t.height)
+        r.fail(at, fmt::format("fragment ({}, {}) is outside the {}x{} frame", f.x, f.y, t.width,
+                               t.height));
+      if (z > depth_max(t.depth_bits))
+        r.fail(at, fmt::format("fragment depth {} exceeds {} bits", z, t.depth_bits));
+      if (flags & ~uint64_t{0xff01}) r.fail(at, "fragment flags have reserved bits set");
+      const uint64_t coverage = (flags >> 8) & 0xffu;
+      if (coverage > uint64_t(t.coverage_samples))
+        r.fail(at, fmt::format("fragment coverage {} exceeds the {} samples", coverage,
+                               t.coverage_samples));
+      f.z = uint32_t(z);
+      f.front = flags & 1;
+      f.coverage = uint8_t(coverage);
+    }
+    t.passes.push_back(std::move(pass));
+  }
+  t.final_ops = get_ops(r, "after the last pass");
+  if (r.remaining() != 0) r.fail(r.offset(), fmt::format("{} bytes after the last pass", r.remaining()));
+  return t;
+}
+
+Trace read_trace(const std::string& path) {
+  std::error_code ec;
+  // An ifstream opens a directory and then reads nothing: say what it is.
+  if (std::filesystem::is_directory(path, ec)) throw TraceError(fmt::format("trace '{}': is a directory", path));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw TraceError(fmt::format("trace '{}': cannot open: {}", path, std::strerror(errno)));
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (in.bad()) throw TraceError(fmt::format("trace '{}': cannot read: {}", path, std::strerror(errno)));
+  return parse_trace(bytes.str(), path);
+}
+
+std::vector<PassStats> replay_trace(const Trace& trace, Backend& backend) {
+  backend.begin_frame(trace.width, trace.height, trace.depth_bits, trace.clear_color,
+                      trace.coverage_samples);
+  std::vector<PassStats> stats;
+  for (const TracePass& p : trace.passes) {
+    for (const FrameOp& op : p.frame_ops) backend.frame_op(op);
+    backend.label_pass(p.name);
+    backend.begin_pass(p.state);
+    backend.draw(p.fragments);
+    stats.push_back(backend.end_pass());
+  }
+  for (const FrameOp& op : trace.final_ops) backend.frame_op(op);
+  return stats;
+}
+
+}  // namespace zb

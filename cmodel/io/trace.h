@@ -1,0 +1,51 @@
+// Trace files: a frame's fragment streams and pass states, so that a run on either backend is
+// reproduced from the file alone. Format in docs/datapath.md, "Trace files".
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "rop/backend.h"
+#include "pipeline/passes.h"
+#include "pipeline/render.h"
+
+namespace zb {
+
+struct TracePass {
+  std::string name;
+  std::vector<FrameOp> frame_ops;  // done before the pass (background already substituted)
+  RopState state;
+  std::vector<Fragment> fragments;
+};
+
+struct Trace {
+  int width = 0;
+  int height = 0;
+  int depth_bits = kDefaultDepthBits;
+  int coverage_samples = kDefaultCoverageSamples;
+  Rgba8 clear_color;
+  std::vector<TracePass> passes;
+  std::vector<FrameOp> final_ops;  // after the last pass
+};
+
+// A malformed trace file; what() names the file, the byte offset and what is wrong.
+struct TraceError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The trace of rendering `rs` with `plan`: every pass's state and fragments.
+Trace make_trace(const RasterizedScene& rs, const PassPlan& plan);
+
+// Serialises `trace`. Returns an empty string, or what went wrong (no partial file is left).
+std::string write_trace(const std::string& path, const Trace& trace);
+std::string serialize_trace(const Trace& trace);
+
+// Reads and validates a trace; throws TraceError.
+Trace read_trace(const std::string& path);
+Trace parse_trace(const std::string& bytes, const std::string& name);
+
+// Runs every pass of the trace on `backend`; returns the stats of each pass.
+std::vector<PassStats> replay_trace(const Trace& trace, Backend& backend);
+
+}  // namespace zb

@@ -1,0 +1,30 @@
+// Error of an image against the reference, over the RGB channels of RGBA8.
+#pragma once
+
+#include "rop/framebuffer.h"
+
+namespace zb {
+
+struct ImageError {
+  double rmse = 0;            // root mean square error over RGB, in 8-bit units
+  double psnr = 0;            // dB; infinity when identical
+  int max_abs = 0;            // largest channel difference
+  double share_over_2 = 0;    // share of pixels with a channel off by more than 2
+  double share_over_16 = 0;   // share of pixels with a channel off by more than 16
+  double delta_e_mean = 0;    // CIEDE2000 (color_difference.h) per pixel, mean over the frame
+  double delta_e_max = 0;     // and its largest value
+};
+
+// Frames of different sizes compare as an all-zero ImageError.
+ImageError compare_images(const Framebuffer& image, const Framebuffer& reference);
+
+// The error image maps each pixel's CIEDE2000 against the reference, from 0 (black) through
+// purple, red and orange to pale yellow at kErrorImageFullScale and above. About 1 is the
+// smallest difference a viewer notices side by side; 20 is a different colour.
+constexpr double kErrorImageFullScale = 20.0;
+Framebuffer error_image(const Framebuffer& image, const Framebuffer& reference);
+
+// The heat map's colour for a CIEDE2000 value (error_image's legend).
+Rgba8 error_color(double delta_e);
+
+}  // namespace zb

@@ -1,0 +1,102 @@
+#include "feeder.h"
+
+#include <algorithm>
+
+namespace zb {
+
+namespace {
+
+// Fragments handed to the datapath at a time: a buffer that stays in the cache.
+constexpr size_t kChunk = 4096;
+
+}  // namespace
+
+bool pass_draws(const PassState& pass, const ScreenTriangle& t) {
+  switch (pass.filter) {
+    case PrimFilter::kOpaque: if (t.transparent) return false; break;
+    case PrimFilter::kTransparent: if (!t.transparent) return false; break;
+    case PrimFilter::kAll: break;
+    case PrimFilter::kEdges: return false;  // lines, not triangles
+  }
+  switch (pass.cull) {
+    case Cull::kFront: return !t.front;
+    case Cull::kBack: return t.front;
+    case Cull::kNone: return true;
+  }
+  return true;
+}
+
+bool feeder_rewrites(const PassState& p) {
+  return p.facing != FacingFilter::kAll || p.zero_alpha_toward || p.offset.any() ||
+         p.constant_color;
+}
+
+uint64_t depth_offset_of(const DepthOffset& o, uint32_t slope) {
+  uint64_t off = uint64_t{o.units} + (uint64_t{o.slope_q8} * slope + 255) / 256;
+  if (o.clamp != 0) off = std::min<uint64_t>(off, o.clamp);
+  return off;
+}
+
+bool feed_fragment(const PassState& p, uint64_t offset, Fragment& f) {
+  if (p.facing == FacingFilter::kToward && !f.facing) return false;
+  if (p.facing == FacingFilter::kAway && f.facing) return false;
+  if (p.constant_color) f.color = p.color;
+  if (p.zero_alpha_toward && f.facing) f.color.a = 0;
+  f.z = f.z > offset ? static_cast<uint32_t>(f.z - offset) : 0;
+  return true;
+}
+
+std::vector<uint32_t> primitive_slopes(const std::vector<ScreenTriangle>& triangles) {
+  std::vector<uint32_t> slope;
+  for (const ScreenTriangle& t : triangles) {
+    if (t.prim >= slope.size()) slope.resize(size_t(t.prim) + 1, 0);
+    slope[t.prim] = std::max(slope[t.prim], depth_slope(t));
+  }
+  return slope;
+}
+
+FrameOp resolve_op(FrameOp op, Rgba8 background) {
+  if (op.background) {
+    op.value = background;
+    op.background = false;
+  }
+  return op;
+}
+
+void feed_pass(FragmentSource& source, size_t index, const PassState& pass, const DrawFn& draw) {
+  const bool edges = pass.filter == PrimFilter::kEdges;
+  const bool rewrite = edges || feeder_rewrites(pass);
+  std::vector<Fragment> buf;
+  buf.reserve(2 * kChunk);
+  // One primitive's fragments, buf[from..]: rewritten (or dropped) in place with `offset`; the
+  // buffer drawn once it holds a chunk.
+  auto finish = [&](size_t from, uint64_t offset) {
+    if (rewrite) {
+      size_t keep = from;
+      for (size_t k = from; k < buf.size(); ++k) {
+        Fragment f = buf[k];
+        if (feed_fragment(pass, offset, f)) buf[keep++] = f;
+      }
+      buf.resize(keep);
+    }
+    if (buf.size() >= kChunk) {
+      draw(buf.data(), buf.size());
+      buf.clear();
+    }
+  };
+  if (edges) {
+    source.lines(buf, [&](const ScreenLine& l, size_t from) {
+      finish(from, pass.offset.any() ? depth_offset_of(pass.offset, l.depth_slope) : 0);
+    });
+  } else {
+    const bool offset = rewrite && pass.offset.any();
+    const FragmentKind kind = is_coverage_pass(pass.rop) ? FragmentKind::kCoverage
+                                                         : FragmentKind::kPixel;
+    source.triangles(index, pass, kind, buf, [&](const ScreenTriangle& t, size_t from) {
+      finish(from, offset ? depth_offset_of(pass.offset, source.slope(t)) : 0);
+    });
+  }
+  if (!buf.empty()) draw(buf.data(), buf.size());
+}
+
+}  // namespace zb

@@ -1,0 +1,41 @@
+// Pass plans: each method as data, a list of passes with their state.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rop/fragment.h"
+
+namespace zb {
+
+struct PassPlan {
+  std::string name;
+  std::string source;       // where the method comes from
+  std::string description;
+  std::vector<PassState> passes;
+  std::vector<FrameOp> final_ops;  // frame operations after the last pass (a resolve)
+};
+
+// depth-peel-K (Everitt 2001): the plans registered are K = 2, 4 and 8; any K >= 1 is built
+// by make_depth_peel_plan (docs/datapath.md "Depth peeling").
+constexpr int kDepthPeelLayers[] = {2, 4, 8};
+PassPlan make_depth_peel_plan(int k);
+
+// hidden-line's edge passes: depth offset (raster.md "Depth offset"), visible and hidden colours.
+constexpr DepthOffset kEdgeOffset{2, 256, 0};  // 2 units + 1.0 x slope, unclamped
+constexpr Rgba8 kEdgeColor{0, 0, 0, 255};
+constexpr Rgba8 kHiddenEdgeColor{190, 190, 190, 255};
+
+// Every pass plan, in the order methods are listed.
+const std::vector<PassPlan>& pass_plans();
+
+// The plan called `name`, or nullptr.
+const PassPlan* find_plan(const std::string& name);
+
+// The name of the exact floating-point ground truth, which is not a pass plan.
+constexpr const char* kReferenceMethod = "reference";
+
+// Every method name: the pass plans, then the reference.
+std::vector<std::string> method_names();
+
+}  // namespace zb

@@ -1,0 +1,53 @@
+// The host side shared by every backend: counters summed, frame operations applied.
+#include "backend.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "blend.h"
+
+namespace zb {
+
+PassStats& PassStats::operator+=(const PassStats& o) {
+  fragments_in += o.fragments_in;
+  fragments_passed += o.fragments_passed;
+  color_reads += o.color_reads;
+  color_writes += o.color_writes;
+  depth_reads += o.depth_reads;
+  depth_writes += o.depth_writes;
+  cycles += o.cycles;
+  return *this;
+}
+
+void apply_frame_op(Framebuffer& fb, const FrameOp& op) {
+  switch (op.kind) {
+    case FrameOpKind::kClearColor:
+      std::fill(fb.color.begin(), fb.color.end(), op.value);
+      return;
+    case FrameOpKind::kClearDepth:
+      std::fill(fb.depth.begin(), fb.depth.end(), std::min(op.depth, depth_max(fb.depth_bits)));
+      return;
+    case FrameOpKind::kCopyDepthToPeel:
+      fb.peel = fb.depth;
+      return;
+    case FrameOpKind::kResolveUnder:
+      for (Rgba8& c : fb.color)
+        c = {resolve_under(c.r, op.value.r, c.a), resolve_under(c.g, op.value.g, c.a),
+             resolve_under(c.b, op.value.b, c.a), resolve_under(c.a, op.value.a, c.a)};
+      return;
+  }
+  throw std::invalid_argument("frame op: unknown kind " + std::to_string(unsigned(op.kind)));
+}
+
+const char* to_string(FrameOpKind k) {
+  switch (k) {
+    case FrameOpKind::kClearColor: return "clear-color";
+    case FrameOpKind::kClearDepth: return "clear-depth";
+    case FrameOpKind::kCopyDepthToPeel: return "copy-depth-to-peel";
+    case FrameOpKind::kResolveUnder: return "resolve-under";
+  }
+  return "?";
+}
+
+}  // namespace zb

@@ -1,0 +1,50 @@
+// The datapath's number formats (docs/datapath.md, "Numerics"): RGBA8, sub-pixel coordinates,
+// depth widths and coverage sample counts. Their arithmetic is in blend.h.
+#pragma once
+
+#include <cstdint>
+
+namespace zb {
+
+struct Rgba8 {
+  uint8_t r = 0, g = 0, b = 0, a = 0;
+  friend bool operator==(Rgba8 x, Rgba8 y) {
+    return x.r == y.r && x.g == y.g && x.b == y.b && x.a == y.a;
+  }
+  friend bool operator!=(Rgba8 x, Rgba8 y) { return !(x == y); }
+};
+
+// Sub-pixel precision of window coordinates: 8 fractional bits.
+constexpr int kSubpixelBits = 8;
+constexpr int32_t kSubpixelOne = 1 << kSubpixelBits;
+
+constexpr int kMinDepthBits = 8;
+constexpr int kMaxDepthBits = 32;
+constexpr int kDefaultDepthBits = 24;
+
+// Largest depth value of a `bits`-wide unorm depth buffer (window depth 1.0).
+constexpr uint32_t depth_max(int bits) {
+  return bits >= 32 ? 0xffffffffu : (uint32_t{1} << bits) - 1u;
+}
+
+// Coverage anti-aliasing (US 5,123,085; docs/datapath.md "Coverage blend", raster.md
+// "Coverage"). N samples per pixel, a power of two from 1 to 16; the coverage plane stores a
+// count 0..N in coverage_bits(N) = ceil(log2(N + 1)) bits.
+constexpr int kMaxCoverageSamples = 16;
+constexpr int kDefaultCoverageSamples = 16;
+
+constexpr bool valid_coverage_samples(int n) {
+  return n >= 1 && n <= kMaxCoverageSamples && (n & (n - 1)) == 0;
+}
+
+// log2(N) for a valid N.
+constexpr int coverage_log2(int n) {
+  int l = 0;
+  while ((1 << l) < n) ++l;
+  return l;
+}
+
+// ceil(log2(N + 1)): bits of a count 0..N.
+constexpr int coverage_bits(int n) { return coverage_log2(n + 1); }
+
+}  // namespace zb

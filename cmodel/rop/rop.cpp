@@ -1,0 +1,159 @@
+#include "rop.h"
+
+#include "blend.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace zb {
+
+Rgba8 blend(BlendMode mode, Rgba8 s, Rgba8 d) {
+  switch (mode) {
+    case BlendMode::kReplace:
+      return s;
+    case BlendMode::kAlpha:
+      return {blend_alpha(s.r, s.a, d.r), blend_alpha(s.g, s.a, d.g), blend_alpha(s.b, s.a, d.b),
+              blend_alpha(s.a, s.a, d.a)};
+    case BlendMode::kAdditive:
+      return {blend_additive(s.r, s.a, d.r), blend_additive(s.g, s.a, d.g),
+              blend_additive(s.b, s.a, d.b), blend_additive(s.a, s.a, d.a)};
+    case BlendMode::kCoverage:  // needs the depths and coverages: composite_coverage
+      return s;
+    case BlendMode::kUnder:
+      return {blend_under(s.r, s.a, d.r, d.a), blend_under(s.g, s.a, d.g, d.a),
+              blend_under(s.b, s.a, d.b, d.a), blend_under_alpha(s.a, d.a)};
+  }
+  return s;
+}
+
+namespace {
+
+// w of the N samples from p, the rest from d, every channel (alpha too).
+Rgba8 proportionate(Rgba8 p, Rgba8 d, uint32_t w, int n) {
+  return {blend_coverage(p.r, d.r, w, n), blend_coverage(p.g, d.g, w, n),
+          blend_coverage(p.b, d.b, w, n), blend_coverage(p.a, d.a, w, n)};
+}
+
+}  // namespace
+
+// US 5,123,085, claim 1, "the step of compositing": the polygon pixel (z, p, k) onto the
+// background pixel (zs, b, cs). The combined coverage is min(N, k + cs) in every case.
+CoveragePixel composite_coverage(uint32_t z, Rgba8 p, int k, uint32_t zs, Rgba8 b, int cs,
+                                 int n) {
+  const int combined = std::min(n, k + cs);
+  CoveragePixel out;
+  if (z < zs) {
+    // "if the depth value of the polygon pixel is less than ...: a first proportionate blend
+    // ... dependent upon the extent of coverage of the polygon pixel"; depth of the polygon.
+    out.color = proportionate(p, b, uint32_t(k), n);
+    out.depth = z;
+    out.coverage = uint8_t(combined);
+  } else if (z > zs) {
+    // "greater than ...: a second proportionate blend ... dependent upon the extent of
+    // coverage of the background pixel"; the background keeps its cs samples and its depth.
+    out.color = proportionate(b, p, uint32_t(cs), n);
+    out.depth = zs;
+    out.coverage = uint8_t(combined);
+  } else if (k + cs >= n) {
+    // "equal ... and the combination ... represents full coverage: the color of the polygon
+    // pixel", full coverage.
+    out.color = p;
+    out.depth = zs;
+    out.coverage = uint8_t(n);
+  } else {
+    // "equal ... does not indicate full coverage: the first proportionate blend".
+    out.color = proportionate(p, b, uint32_t(k), n);
+    out.depth = z;
+    out.coverage = uint8_t(combined);
+  }
+  return out;
+}
+
+Rgba8 resolve_coverage(Rgba8 stored, int /*coverage*/, int /*n*/) { return stored; }
+
+Rgba8 apply_color_mask(uint8_t mask, Rgba8 blended, Rgba8 d) {
+  return {(mask & kMaskR) ? blended.r : d.r, (mask & kMaskG) ? blended.g : d.g,
+          (mask & kMaskB) ? blended.b : d.b, (mask & kMaskA) ? blended.a : d.a};
+}
+
+void GoldenRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
+                            int coverage_samples) {
+  if (!valid_coverage_samples(coverage_samples))
+    throw std::invalid_argument("golden: coverage samples " + std::to_string(coverage_samples) +
+                                " is not a power of two from 1 to " +
+                                std::to_string(kMaxCoverageSamples));
+  fb_ = Framebuffer(width, height, depth_bits, clear_color, coverage_samples);
+}
+
+void GoldenRop::begin_pass(const RopState& state) {
+  state_ = state;
+  stats_ = PassStats{};
+}
+
+void GoldenRop::draw(const Fragment* fragments, size_t count) {
+  for (size_t i = 0; i < count; ++i) process(fragments[i]);
+}
+
+PassStats GoldenRop::end_pass() { return stats_; }
+
+void GoldenRop::frame_op(const FrameOp& op) { apply_frame_op(fb_, op); }
+
+// Stages as in the RTL: fetch the stored depth, test, fetch the destination colour, blend,
+// mask, write. "If the depth test is disabled ... the depth buffer is not updated" (GL 4.6,
+// 14.9.4): a disabled test passes every fragment and never writes depth.
+void GoldenRop::process(const Fragment& f) {
+  if (state_.blend == BlendMode::kCoverage) return process_coverage(f);
+  const size_t i = fb_.index(f.x, f.y);
+  ++stats_.fragments_in;
+
+  bool pass = true;
+  if (state_.depth_test) {
+    ++stats_.depth_reads;
+    pass = depth_test(state_.depth_func, f.z, fb_.depth[i]);
+  }
+  // Peel test: the second compare, strictly behind the previous layer (z > peel).
+  if (state_.peel_test && !(f.z > fb_.peel[i])) pass = false;
+  if (!pass) return;
+  ++stats_.fragments_passed;
+
+  if (state_.depth_test && state_.depth_write) {
+    fb_.depth[i] = f.z;
+    ++stats_.depth_writes;
+  }
+  if (state_.color_mask == 0) return;
+
+  const bool reads_dest = state_.blend != BlendMode::kReplace || state_.color_mask != kMaskRgba;
+  if (reads_dest) ++stats_.color_reads;
+  const Rgba8 d = fb_.color[i];
+  fb_.color[i] = apply_color_mask(state_.color_mask, blend(state_.blend, f.color, d), d);
+  ++stats_.color_writes;
+}
+
+// Coverage mode (datapath.md "Coverage blend"): the depth unit compares three ways instead of
+// testing, so every fragment passes and is composited; depth is written (when depth_test and
+// depth_write) only in the nearer case; coverage always; colour under the write mask.
+void GoldenRop::process_coverage(const Fragment& f) {
+  if (f.coverage > fb_.coverage_samples)
+    throw std::invalid_argument("golden: fragment coverage " + std::to_string(f.coverage) +
+                                " exceeds the " + std::to_string(fb_.coverage_samples) +
+                                " samples of the frame");
+  const size_t i = fb_.index(f.x, f.y);
+  ++stats_.fragments_in;
+  ++stats_.fragments_passed;
+  ++stats_.depth_reads;
+  const CoveragePixel c = composite_coverage(f.z, f.color, f.coverage, fb_.depth[i],
+                                             fb_.color[i], fb_.coverage[i],
+                                             fb_.coverage_samples);
+  if (state_.depth_test && state_.depth_write && c.depth != fb_.depth[i]) {
+    fb_.depth[i] = c.depth;
+    ++stats_.depth_writes;
+  }
+  fb_.coverage[i] = c.coverage;
+  if (state_.color_mask == 0) return;
+  ++stats_.color_reads;
+  fb_.color[i] = apply_color_mask(state_.color_mask, c.color, fb_.color[i]);
+  ++stats_.color_writes;
+}
+
+}  // namespace zb

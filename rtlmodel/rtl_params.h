@@ -1,0 +1,16 @@
+// zb_rop's parameters as the C++ side sees them. CMake defines them from its cache options
+// ZBLEND_RTL_* (the same values it gives Verilator as -G parameters) for every target that
+// links zbrtl_common; rtl_rop.cpp static_asserts them against the Verilated model.
+#pragma once
+
+#if !defined(ZBLEND_RTL_DEPTH_BITS) || !defined(ZBLEND_RTL_COV_SAMPLES) || !defined(ZBLEND_RTL_TILE)
+#error "ZBLEND_RTL_DEPTH_BITS, _COV_SAMPLES and _TILE come from CMake: link zbrtl_common"
+#endif
+namespace zb {
+
+constexpr int kRtlTileW = ZBLEND_RTL_TILE;
+constexpr int kRtlTileH = ZBLEND_RTL_TILE;
+constexpr int kRtlDepthBits = ZBLEND_RTL_DEPTH_BITS;
+constexpr int kRtlCoverageSamples = ZBLEND_RTL_COV_SAMPLES;  // COV_SAMPLES
+
+}  // namespace zb

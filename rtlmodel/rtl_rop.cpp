@@ -1,0 +1,419 @@
+#include "rtl_rop.h"
+
+#include <filesystem>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include <verilated.h>
+#include <verilated_fst_c.h>
+#if defined(VM_COVERAGE) && VM_COVERAGE
+#include <cstdio>
+#include <verilated_cov.h>
+
+#include "code_coverage.h"
+#endif
+
+#include "tile_bins.h"
+
+#ifdef ZB_RTL_BUG
+#include "Vzb_rop_bug.h"
+#include "Vzb_rop_bug_zb_rop.h"
+using VModel = Vzb_rop_bug;
+using VParams = Vzb_rop_bug_zb_rop;
+#else
+#include "Vzb_rop.h"
+#include "Vzb_rop_zb_rop.h"
+using VModel = Vzb_rop;
+using VParams = Vzb_rop_zb_rop;
+#endif
+
+#if defined(__SANITIZE_ADDRESS__)
+// Verilator 5.006's Verilated::catName keeps a thread_local buffer it never frees, so every
+// thread that builds an RTL model (the lab's workers) loses it when it ends: not ours to fix.
+// Here, beside the model, it holds for every program that links the RTL.
+extern "C" const char* __lsan_default_suppressions() { return "leak:Verilated::catName\n"; }
+#endif
+
+namespace zb {
+
+static_assert(VParams::TILE_W == kRtlTileW, "tb mirror of TILE_W disagrees with the RTL");
+static_assert(VParams::TILE_H == kRtlTileH, "tb mirror of TILE_H disagrees with the RTL");
+static_assert(VParams::DEPTH_BITS == kRtlDepthBits, "tb mirror of DEPTH_BITS disagrees");
+static_assert(VParams::COV_SAMPLES == kRtlCoverageSamples, "tb mirror of COV_SAMPLES disagrees");
+static_assert(VParams::CNT_W == 32, "the driver reads 32-bit counters");
+
+namespace {
+
+constexpr uint64_t kDrainLimit = 1000;  // cycles busy_o (or frag_ready_o low) may last
+
+uint64_t splitmix64(uint64_t x) {
+  x += 0x9e3779b97f4a7c15ull;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+  return x ^ (x >> 31);
+}
+
+struct XorShift {
+  uint64_t s;
+  explicit XorShift(uint64_t seed) : s(splitmix64(seed) | 1) {}
+  uint64_t next() {
+    s ^= s << 13;
+    s ^= s >> 7;
+    s ^= s << 17;
+    return s;
+  }
+};
+
+uint32_t pack_rgba(Rgba8 c) {
+  return uint32_t{c.r} | uint32_t{c.g} << 8 | uint32_t{c.b} << 16 | uint32_t{c.a} << 24;
+}
+Rgba8 unpack_rgba(uint32_t v) {
+  return {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
+}
+
+// A fragment as streamed: the datapath's fields and its index in the pass.
+struct Streamed {
+  uint16_t x, y;
+  uint32_t z, rgba, index;
+  uint8_t cov;
+};
+
+// One Verilated model with its context, clock and optional FST.
+struct Sim {
+  std::unique_ptr<VerilatedContext> ctx;
+  std::unique_ptr<VModel> top;
+  std::unique_ptr<VerilatedFstC> fst;
+  CoverageTotals* coverage = nullptr;
+  uint64_t cycle = 0;
+  uint64_t dump_from = 0, dump_to = std::numeric_limits<uint64_t>::max();
+
+  explicit Sim(const std::string& fst_path, CoverageTotals* totals = nullptr)
+      : ctx(std::make_unique<VerilatedContext>()), coverage(totals) {
+    ctx->commandArgs(0, static_cast<const char**>(nullptr));
+    ctx->fatalOnError(true);
+    if (!fst_path.empty()) ctx->traceEverOn(true);  // before the model exists
+    top = std::make_unique<VModel>(ctx.get(), "zb_rop");
+    if (!fst_path.empty()) {
+      const std::filesystem::path p(fst_path);
+      if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+      fst = std::make_unique<VerilatedFstC>();
+      top->trace(fst.get(), 99);
+      fst->open(fst_path.c_str());
+      if (!fst->isOpen()) throw std::runtime_error("cannot write waveform " + fst_path);
+    }
+    top->clk_i = 0;
+    top->rst_ni = 0;
+    idle_inputs();
+    top->eval();
+    tick();
+    tick();
+    top->rst_ni = 1;
+    tick();
+  }
+  ~Sim() {
+    // Verilator 5.006 erases a model's scopes through the thread's current context: make it
+    // this model's, or destroying a model after another context came and went deadlocks.
+    Verilated::threadContextp(ctx.get());
+    top->final();
+    add_coverage();
+    if (fst) fst->close();
+    fst.reset();
+    top.reset();
+  }
+  Sim(const Sim&) = delete;
+  Sim& operator=(const Sim&) = delete;
+
+  // The context's coverage points die with the model: their counts go to the run's totals now.
+  void add_coverage() noexcept {
+#if defined(VM_COVERAGE) && VM_COVERAGE
+    if (!coverage) return;
+    try {
+      ctx->coveragep()->write(coverage->scratch_path().c_str());
+      coverage->add_file(coverage->scratch_path());
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "zblend_tb: %s\n", e.what());
+    }
+#endif
+  }
+
+  void idle_inputs() {
+    top->state_we_i = 0;
+    top->frag_valid_i = 0;
+    top->stall_i = 0;
+    top->tile_req_i = 0;
+    top->tile_we_i = 0;
+    top->cnt_clear_i = 0;
+  }
+
+  // One clock: rising edge (inputs as set are sampled), then falling edge. Time 2c+1 is the
+  // rising edge of cycle c.
+  void tick() {
+    top->clk_i = 1;
+    ctx->time(2 * cycle + 1);
+    top->eval();
+    if (fst && cycle - dump_from <= dump_to - dump_from) fst->dump(2 * cycle + 1);
+    top->clk_i = 0;
+    ctx->time(2 * cycle + 2);
+    top->eval();
+    if (fst && cycle - dump_from <= dump_to - dump_from) fst->dump(2 * cycle + 2);
+    ++cycle;
+  }
+};
+
+}  // namespace
+
+struct RtlRop::Impl {
+  RtlOptions opt;
+  Sim sim;
+  Framebuffer fb;
+  RopState state;
+  std::vector<Fragment> frags;      // the current (or last ended) pass
+  std::vector<uint64_t> accepted;   // accept cycle per fragment
+  std::vector<Streamed> binned;     // frags in tile order, stable
+  std::vector<uint32_t> tile_first; // per tile, start in `binned`; one extra at the end
+  std::vector<TileRun> runs;
+  uint64_t pass_no = 0;
+  bool in_pass = false;
+  uint64_t io_cycles = 0, stalls = 0;
+
+  explicit Impl(RtlOptions o) : opt(std::move(o)), sim(opt.trace_path, opt.coverage) {}
+
+  int tiles_x() const { return (fb.width + kRtlTileW - 1) / kRtlTileW; }
+
+  uint64_t tile_seed(uint64_t pass, size_t tile) const {
+    return splitmix64(opt.seed ^ splitmix64(pass * 0x100000001b3ull + tile));
+  }
+
+  // Loads the tile at (x0, y0) from `src`, runs `n` fragments, stores it into `dst`.
+  void run_tile(Sim& s, const Framebuffer& src, Framebuffer& dst, int x0, int y0,
+                const Streamed* f, size_t n, uint64_t seed, uint64_t* accept_out, TileRun& run,
+                PassStats& stats) const {
+    VModel& t = *s.top;
+    const int w = std::min(kRtlTileW, src.width - x0), h = std::min(kRtlTileH, src.height - y0);
+    run.x0 = x0;
+    run.y0 = y0;
+    run.load_begin = s.cycle;
+    t.tile_req_i = 1;
+    t.tile_we_i = 1;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const size_t i = src.index(x0 + x, y0 + y);
+        t.tile_addr_i = y * kRtlTileW + x;
+        t.tile_wcolor_i = pack_rgba(src.color[i]);
+        t.tile_wdepth_i = src.depth[i];
+        t.tile_wcov_i = src.coverage[i];
+        t.tile_wpeel_i = src.peel[i];
+        s.tick();
+      }
+    t.tile_req_i = 0;
+    t.tile_we_i = 0;
+    t.tile_x0_i = x0;
+    t.tile_y0_i = y0;
+    t.state_i = pack_state(state);
+    t.state_we_i = 1;
+    t.cnt_clear_i = 1;
+    s.tick();
+    t.state_we_i = 0;
+    t.cnt_clear_i = 0;
+
+    run.stream_begin = s.cycle;
+    XorShift rng(seed);
+    const double p = opt.backpressure;
+    const uint64_t thr = p <= 0 ? 0 : p >= 1 ? std::numeric_limits<uint64_t>::max()
+                                              : uint64_t(p * 18446744073709551616.0);
+    // Offer fragment k every cycle (or, with back-pressure, a random valid gap and stall_i);
+    // it is accepted at the edge of a cycle with frag_valid_i && frag_ready_o. frag_ready_o
+    // also drops while the interlock holds fragments (zb_rop's skid register is full).
+    size_t k = 0;
+    uint64_t refused = 0;  // consecutive offers (valid, no stall_i) not accepted
+    while (k < n) {
+      bool stall = false, valid = true;
+      if (thr != 0) {
+        stall = rng.next() < thr;
+        valid = rng.next() >= thr;
+      }
+      t.stall_i = stall;
+      t.frag_valid_i = valid;
+      t.frag_x_i = f[k].x;
+      t.frag_y_i = f[k].y;
+      t.frag_z_i = f[k].z;
+      t.frag_rgba_i = f[k].rgba;
+      t.frag_cov_i = f[k].cov;
+      // frag_ready_o follows stall_i within the cycle, so a changed stall_i needs an eval;
+      // without back-pressure only flops move it, and the last edge's eval already shows it.
+      if (thr != 0 || k == 0) t.eval();
+      if (valid && t.frag_ready_o) {
+        accept_out[f[k].index] = s.cycle;
+        ++k;
+        refused = 0;
+      } else if (valid && !stall && ++refused > kDrainLimit) {
+        throw std::runtime_error("rtl: frag_ready_o low for " + std::to_string(kDrainLimit) +
+                                 " cycles (tile " + std::to_string(x0) + "," +
+                                 std::to_string(y0) + ")");
+      }
+      s.tick();
+    }
+    t.frag_valid_i = 0;
+    t.stall_i = 0;
+    const uint64_t last = s.cycle;
+    while (t.busy_o) {
+      if (s.cycle - last > kDrainLimit)
+        throw std::runtime_error("rtl: busy_o still high " + std::to_string(kDrainLimit) +
+                                 " cycles after the last fragment (tile " +
+                                 std::to_string(x0) + "," + std::to_string(y0) + ")");
+      s.tick();
+    }
+    run.stream_end = s.cycle;
+    stats.fragments_in += t.cnt_frag_in_o;
+    stats.fragments_passed += t.cnt_frag_passed_o;
+    stats.depth_reads += t.cnt_depth_reads_o;
+    stats.depth_writes += t.cnt_depth_writes_o;
+    stats.color_reads += t.cnt_color_reads_o;
+    stats.color_writes += t.cnt_color_writes_o;
+    stats.cycles += run.stream_end - run.stream_begin;
+    run.stall_cycles = t.cnt_stall_cycles_o;
+    run.rtl_cycles = t.cnt_cycles_o;
+    if (uint64_t{t.cnt_frag_killed_o} != uint64_t{t.cnt_frag_in_o} - t.cnt_frag_passed_o)
+      throw std::runtime_error("rtl: cnt_frag_killed_o != cnt_frag_in_o - cnt_frag_passed_o");
+
+    t.tile_req_i = 1;
+    t.tile_we_i = 0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        t.tile_addr_i = y * kRtlTileW + x;
+        s.tick();
+        const size_t i = dst.index(x0 + x, y0 + y);
+        dst.color[i] = unpack_rgba(t.tile_rcolor_o);
+        dst.depth[i] = t.tile_rdepth_o;
+        dst.coverage[i] = t.tile_rcov_o;
+        dst.peel[i] = t.tile_rpeel_o;
+      }
+    t.tile_req_i = 0;
+    run.store_end = s.cycle;
+  }
+
+  // Bins `frags` into tiles, stably (tile_bins.h).
+  void bin() {
+    TileBins bins;
+    bin_by_tile(frags.data(), frags.size(), fb.width, fb.height, kRtlTileW, kRtlTileH, bins);
+    tile_first = std::move(bins.first);
+    binned.resize(frags.size());
+    for (size_t k = 0; k < bins.order.size(); ++k) {
+      const Fragment& f = frags[bins.order[k]];
+      binned[k] = Streamed{f.x, f.y, f.z, pack_rgba(f.color), bins.order[k], f.coverage};
+    }
+  }
+};
+
+RtlRop::RtlRop(RtlOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {}
+RtlRop::~RtlRop() = default;
+
+void RtlRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
+                         int coverage_samples) {
+  if (coverage_samples != kRtlCoverageSamples)
+    throw std::invalid_argument("rtl backend: coverage samples " +
+                                std::to_string(coverage_samples) + ", the Verilated zb_rop has " +
+                                std::to_string(kRtlCoverageSamples));
+  if (depth_bits != kRtlDepthBits)
+    throw std::invalid_argument("rtl backend: depth bits " + std::to_string(depth_bits) +
+                                ", the Verilated zb_rop has " + std::to_string(kRtlDepthBits));
+  if (width < 1 || height < 1 || width > 65535 || height > 65535)
+    throw std::invalid_argument("rtl backend: frame size " + std::to_string(width) + "x" +
+                                std::to_string(height) + " outside 1..65535");
+  impl_->fb = Framebuffer(width, height, depth_bits, clear_color, coverage_samples);
+  impl_->in_pass = false;
+}
+
+void RtlRop::begin_pass(const RopState& state) {
+  if (impl_->fb.width == 0) throw std::logic_error("rtl backend: begin_pass before begin_frame");
+  impl_->state = state;
+  impl_->frags.clear();
+  impl_->in_pass = true;
+}
+
+void RtlRop::draw(const Fragment* fragments, size_t count) {
+  Impl& m = *impl_;
+  if (!m.in_pass) throw std::logic_error("rtl backend: draw outside a pass");
+  for (size_t i = 0; i < count; ++i)
+    if (fragments[i].x >= m.fb.width || fragments[i].y >= m.fb.height)
+      throw std::invalid_argument("rtl backend: fragment (" + std::to_string(fragments[i].x) +
+                                  "," + std::to_string(fragments[i].y) + ") outside the frame");
+  for (size_t i = 0; i < count; ++i)
+    if (fragments[i].coverage > kRtlCoverageSamples)
+      throw std::invalid_argument("rtl backend: fragment coverage " +
+                                  std::to_string(fragments[i].coverage) + " exceeds " +
+                                  std::to_string(kRtlCoverageSamples) + " samples");
+  m.frags.insert(m.frags.end(), fragments, fragments + count);
+}
+
+PassStats RtlRop::end_pass() {
+  Impl& m = *impl_;
+  if (!m.in_pass) throw std::logic_error("rtl backend: end_pass outside a pass");
+  m.in_pass = false;
+  m.bin();
+  m.accepted.assign(m.frags.size(), 0);
+  m.runs.clear();
+  PassStats stats;
+  const int tx = m.tiles_x();
+  for (size_t tile = 0; tile + 1 < m.tile_first.size(); ++tile) {
+    const uint32_t b = m.tile_first[tile], e = m.tile_first[tile + 1];
+    if (b == e) continue;
+    TileRun run;
+    m.run_tile(m.sim, m.fb, m.fb, int(tile % tx) * kRtlTileW, int(tile / tx) * kRtlTileH,
+               m.binned.data() + b, e - b, m.tile_seed(m.pass_no, tile), m.accepted.data(), run,
+               stats);
+    m.io_cycles += (run.stream_begin - run.load_begin) + (run.store_end - run.stream_end);
+    m.stalls += run.stall_cycles;
+    m.runs.push_back(run);
+  }
+  ++m.pass_no;
+  return stats;
+}
+
+// The host's frame operation on the driver's frame copy; the next pass loads it into the
+// tile memory (colour, depth, coverage and peel planes).
+void RtlRop::frame_op(const FrameOp& op) {
+  if (impl_->fb.width == 0) throw std::logic_error("rtl backend: frame_op before begin_frame");
+  if (impl_->in_pass) throw std::logic_error("rtl backend: frame_op inside a pass");
+  apply_frame_op(impl_->fb, op);
+}
+
+const Framebuffer& RtlRop::framebuffer() const { return impl_->fb; }
+uint64_t RtlRop::tile_io_cycles() const { return impl_->io_cycles; }
+uint64_t RtlRop::total_cycles() const { return impl_->sim.cycle; }
+uint64_t RtlRop::stall_cycles() const { return impl_->stalls; }
+const std::vector<Fragment>& RtlRop::pass_fragments() const { return impl_->frags; }
+const std::vector<uint64_t>& RtlRop::accept_cycles() const { return impl_->accepted; }
+const std::vector<TileRun>& RtlRop::tile_runs() const { return impl_->runs; }
+uint64_t RtlRop::pass_number() const { return impl_->pass_no == 0 ? 0 : impl_->pass_no - 1; }
+
+Framebuffer RtlRop::replay_tile(const Framebuffer& before, int x0, int y0,
+                                const std::string& fst_path, uint64_t from, uint64_t to) const {
+  const Impl& m = *impl_;
+  const TileRun* found = nullptr;
+  for (const TileRun& r : m.runs)
+    if (r.x0 == x0 && r.y0 == y0) found = &r;
+  if (!found) throw std::invalid_argument("rtl replay: the last pass did not touch that tile");
+  const size_t tile = size_t(y0 / kRtlTileH) * m.tiles_x() + x0 / kRtlTileW;
+  Framebuffer out = before;
+  // The replay's context goes away with it: give the thread back the main model's context.
+  struct RestoreContext {
+    VerilatedContext* ctx;
+    ~RestoreContext() { Verilated::threadContextp(ctx); }
+  } restore{m.sim.ctx.get()};
+  Sim sim(fst_path);
+  sim.dump_from = from;
+  sim.dump_to = to;
+  // Same cycle numbers as the original run, so the waveform's times match the report.
+  sim.cycle = found->load_begin;
+  std::vector<uint64_t> accepted(m.frags.size(), 0);
+  TileRun run;
+  PassStats stats;
+  m.run_tile(sim, before, out, x0, y0, m.binned.data() + m.tile_first[tile],
+             m.tile_first[tile + 1] - m.tile_first[tile], m.tile_seed(m.pass_no - 1, tile),
+             accepted.data(), run, stats);
+  return out;
+}
+
+}  // namespace zb

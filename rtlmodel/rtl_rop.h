@@ -1,0 +1,79 @@
+// The RTL backend: the Verilated zb_rop driven through the Backend interface. Fragments of a
+// pass are binned into tiles; each touched tile is loaded, streamed (with random back-pressure),
+// drained and stored back. See docs/datapath.md and the zb_rop port list.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rop/backend.h"
+#include "rtl_params.h"
+
+namespace zb {
+
+class CoverageTotals;
+
+struct RtlOptions {
+  double backpressure = 0;  // probability per cycle of stall_i, and (independently) of a valid gap
+  uint64_t seed = 1;        // back-pressure pattern; deterministic
+  std::string trace_path;   // FST of the whole run when set
+  // Coverage build only (ZBLEND_RTL_COVERAGE): the model's line and toggle counts are added
+  // here when it closes. Not owned; ignored in other builds.
+  CoverageTotals* coverage = nullptr;
+};
+
+// The cycles of one tile's run in a pass, in cycles since reset.
+struct TileRun {
+  int x0 = 0, y0 = 0;          // tile origin, pixels
+  uint64_t load_begin = 0;     // first tile-load cycle
+  uint64_t stream_begin = 0;   // first streaming cycle (after state write and counter clear)
+  uint64_t stream_end = 0;     // cycle after the drain (busy_o low)
+  uint64_t store_end = 0;      // cycle after the last tile-store read
+  uint64_t stall_cycles = 0;   // the RTL's cnt_stall_cycles_o
+  uint64_t rtl_cycles = 0;     // the RTL's cnt_cycles_o
+};
+
+class RtlRop final : public Backend {
+ public:
+  explicit RtlRop(RtlOptions options = {});
+  ~RtlRop() override;
+  RtlRop(const RtlRop&) = delete;
+  RtlRop& operator=(const RtlRop&) = delete;
+
+  const char* name() const override { return "rtl"; }
+  using Backend::begin_frame;
+  void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
+                   int coverage_samples) override;
+  void begin_pass(const RopState& state) override;
+  using Backend::draw;
+  void draw(const Fragment* fragments, size_t count) override;
+  // PassStats summed over tiles; `cycles` counts streaming cycles (first offer to drain).
+  PassStats end_pass() override;
+  void frame_op(const FrameOp& op) override;
+  const Framebuffer& framebuffer() const override;
+
+  // Cumulative cycles spent loading and storing tiles, and every cycle since reset.
+  uint64_t tile_io_cycles() const;
+  uint64_t total_cycles() const;
+  uint64_t stall_cycles() const;  // summed cnt_stall_cycles_o
+
+  // The last ended pass: its fragments, the cycle each was accepted, its tiles and number.
+  const std::vector<Fragment>& pass_fragments() const;
+  const std::vector<uint64_t>& accept_cycles() const;
+  const std::vector<TileRun>& tile_runs() const;
+  uint64_t pass_number() const;  // passes since construction, from 0
+
+  // Replays the last pass's tile at origin (x0, y0) on a fresh model, starting from `before`
+  // (the frame as it was at the start of that pass), dumping an FST of cycles [from, to] to
+  // `fst_path`. Returns the tile's frame after the replay (only that tile's pixels updated).
+  Framebuffer replay_tile(const Framebuffer& before, int x0, int y0, const std::string& fst_path,
+                          uint64_t from, uint64_t to) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace zb

@@ -1,0 +1,23 @@
+// Binning a pass's fragments by tile, stably: the order the RTL driver streams them in
+// (tb/rtl_rop.cpp), shared with the SystemC modules (systemc/).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "rop/fragment.h"
+
+namespace zb {
+
+struct TileBins {
+  int columns = 0;               // tiles per row
+  std::vector<uint32_t> first;   // per tile, its start in `order`; one extra entry at the end
+  std::vector<uint32_t> order;   // fragment indices, tile by tile, pass order within a tile
+};
+
+// Bins `n` fragments of a width x height frame into tiles of tile_w x tile_h pixels.
+void bin_by_tile(const Fragment* f, size_t n, int width, int height, int tile_w, int tile_h,
+                 TileBins& out);
+
+}  // namespace zb

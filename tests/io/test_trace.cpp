@@ -1,0 +1,124 @@
+// Trace files: round trip, replay, and every kind of damage rejected with a located error.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "support/layers.h"
+#include "rop/rop.h"
+#include "io/trace.h"
+
+namespace {
+
+zb::Trace small_trace() {
+  const zb::RasterizedScene rs = zbtest::layer_scene(
+      {{9000, {40, 60, 200, 255}}, {1000, {230, 30, 30, 128}}}, {255, 255, 255, 255});
+  return zb::make_trace(rs, *zb::find_plan("three-pass"));
+}
+
+TEST(Trace, StatePackingRoundTripsEveryValidWord) {
+  int valid = 0;
+  for (uint32_t bits = 0; bits < (1u << zb::kStateBits); ++bits) {
+    zb::RopState s;
+    if (!zb::unpack_state(uint16_t(bits), s)) continue;
+    ++valid;
+    EXPECT_EQ(zb::pack_state(s), bits);
+  }
+  // Blend codes 0..4 of the 3-bit field are valid (4 is under): 5 of 8.
+  EXPECT_EQ(valid, 5 << (zb::kStateBits - 3));
+  zb::RopState s;
+  EXPECT_FALSE(zb::unpack_state(1u << zb::kStateBits, s));
+}
+
+TEST(Trace, RoundTripAndReplayMatchRender) {
+  const zb::Trace t = small_trace();
+  ASSERT_EQ(t.passes.size(), 3u);
+  const zb::Trace back = zb::parse_trace(zb::serialize_trace(t), "mem");
+  ASSERT_EQ(back.passes.size(), t.passes.size());
+  EXPECT_EQ(back.width, t.width);
+  EXPECT_EQ(back.clear_color, t.clear_color);
+  for (size_t p = 0; p < t.passes.size(); ++p) {
+    EXPECT_EQ(back.passes[p].name, t.passes[p].name);
+    EXPECT_EQ(zb::pack_state(back.passes[p].state), zb::pack_state(t.passes[p].state));
+    ASSERT_EQ(back.passes[p].fragments.size(), t.passes[p].fragments.size());
+    for (size_t i = 0; i < t.passes[p].fragments.size(); ++i) {
+      const zb::Fragment &a = back.passes[p].fragments[i], &b = t.passes[p].fragments[i];
+      EXPECT_TRUE(a.x == b.x && a.y == b.y && a.z == b.z && a.color == b.color &&
+                  a.front == b.front && a.coverage == b.coverage && a.prim == b.prim);
+    }
+  }
+  zb::GoldenRop from_trace, direct;
+  zb::replay_trace(back, from_trace);
+  const zb::RasterizedScene rs = zbtest::layer_scene(
+      {{9000, {40, 60, 200, 255}}, {1000, {230, 30, 30, 128}}}, {255, 255, 255, 255});
+  zb::render(rs, *zb::find_plan("three-pass"), direct);
+  EXPECT_EQ(from_trace.framebuffer().color, direct.framebuffer().color);
+  EXPECT_EQ(from_trace.framebuffer().depth, direct.framebuffer().depth);
+}
+
+void expect_rejected(const std::string& bytes, const char* needle) {
+  try {
+    zb::parse_trace(bytes, "t.zbt");
+    ADD_FAILURE() << "accepted a damaged trace; wanted '" << needle << "'";
+  } catch (const zb::TraceError& e) {
+    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("trace 't.zbt': byte "), std::string::npos) << e.what();
+  }
+}
+
+TEST(Trace, EveryTruncationIsRejected) {
+  const std::string bytes = zb::serialize_trace(small_trace());
+  for (size_t n = 0; n < bytes.size(); ++n) expect_rejected(bytes.substr(0, n), "");
+  expect_rejected(bytes + "x", "after the last pass");
+}
+
+// Offsets into the header: magic 0, version 8, width 12, height 16, depth bits 20, coverage
+// samples 24, clear colour 28, pass count 32.
+TEST(Trace, DamagedFieldsNameTheProblem) {
+  const std::string good = zb::serialize_trace(small_trace());
+  auto patched = [&](size_t at, std::initializer_list<uint8_t> b) {
+    std::string s = good;
+    for (uint8_t v : b) s[at++] = char(v);
+    return s;
+  };
+  expect_rejected(patched(0, {'X'}), "bad magic");
+  expect_rejected(patched(8, {1}), "version 1");
+  expect_rejected(patched(12, {0, 0}), "out of range");
+  expect_rejected(patched(20, {40}), "depth width 40");
+  expect_rejected(patched(24, {3}), "coverage samples 3");
+  expect_rejected(patched(24, {32}), "coverage samples 32");
+  // First pass: name length at 36, name, frame op count (0 here), then the state word.
+  const size_t name_len = uint8_t(good[36]);
+  expect_rejected(patched(40 + name_len, {0xff}), "frame ops is more than");
+  expect_rejected(patched(44 + name_len, {0x00, 0x20}), "invalid pass state");
+  expect_rejected(patched(44 + name_len, {0xa0, 0x00}), "invalid pass state");  // blend 5
+  expect_rejected(patched(46 + name_len, {0xff, 0xff, 0xff, 0xff}), "fragments announced");
+  const size_t first_fragment = 54 + name_len;
+  expect_rejected(patched(first_fragment, {0xff, 0x00}), "outside the 4x4 frame");
+  expect_rejected(patched(first_fragment + 4, {0xff, 0xff, 0xff, 0xff}), "exceeds 24 bits");
+  // Flags: bit 0 front, bits 8..15 coverage (at most the header's 16), the rest reserved.
+  expect_rejected(patched(first_fragment + 12, {0x00, 17}), "coverage 17 exceeds the 16");
+  expect_rejected(patched(first_fragment + 12, {0x80}), "reserved bits");
+  expect_rejected(patched(first_fragment + 14, {0x01}), "reserved bits");
+}
+
+TEST(Trace, RandomDamageNeverCrashes) {
+  const std::string good = zb::serialize_trace(small_trace());
+  std::mt19937 rng(7);
+  int rejected = 0;
+  for (int i = 0; i < 2000; ++i) {
+    std::string s = good;
+    for (int k = 0; k < 3; ++k) s[rng() % s.size()] = char(rng());
+    try {
+      zb::parse_trace(s, "fuzz");
+    } catch (const zb::TraceError&) {
+      ++rejected;
+    }
+  }
+  EXPECT_GT(rejected, 0);
+}
+
+TEST(Trace, MissingFile) {
+  EXPECT_THROW(zb::read_trace("/nonexistent/x.zbt"), zb::TraceError);
+}
+
+}  // namespace

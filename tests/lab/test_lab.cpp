@@ -1,0 +1,196 @@
+// The methods lab: Pareto front, cost in bytes, summaries, the CSV of a tiny run, the report's
+// links.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "lab.h"
+#include "report.h"
+#include "scene/builtin_scenes.h"
+
+namespace {
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  for (std::string item; std::getline(ss, item, sep);) out.push_back(item);
+  return out;
+}
+
+TEST(ParetoFront, HandMadePoints) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  //                            0   1  2  3  4  5  6    7   8
+  const std::vector<double> x = {1, 2, 3, 4, 4, 5, 1, nan, 10};
+  const std::vector<double> y = {10, 5, 7, 1, 1, 1, 12, 0, 0.5};
+  // 2 loses to 1 on both; 5 costs more than 3 for the same error; 6 errs more than 0 for the
+  // same cost; 7 has no cost; 3 and 4 tie, so neither beats the other.
+  EXPECT_EQ(zb::lab::pareto_front(x, y), (std::vector<size_t>{0, 1, 3, 4, 8}));
+  EXPECT_TRUE(zb::lab::pareto_front({}, {}).empty());
+  EXPECT_EQ(zb::lab::pareto_front({3}, {3}), (std::vector<size_t>{0}));
+}
+
+TEST(LabCost, BytesByAccessWidth) {
+  zb::PassStats s;
+  s.color_reads = 10;
+  s.color_writes = 7;
+  s.depth_reads = 5;
+  s.depth_writes = 3;
+  EXPECT_EQ(zb::lab::bytes_read(s, 24), 10u * 4 + 5u * 3);
+  EXPECT_EQ(zb::lab::bytes_written(s, 24), 7u * 4 + 3u * 3);
+  EXPECT_EQ(zb::lab::bytes_read(s, 16), 10u * 4 + 5u * 2);
+  EXPECT_EQ(zb::lab::bytes_read(s, 17), 10u * 4 + 5u * 3);  // rounded up to whole bytes
+  EXPECT_EQ(zb::lab::bytes_written(s, 32), 7u * 4 + 3u * 4);
+}
+
+TEST(LabFairReference, AntiAliasedMethodsAgainstTheSupersampledOne) {
+  using zb::lab::FairReference;
+  EXPECT_EQ(zb::lab::fair_reference("coverage-aa"), FairReference::kSupersampled);
+  for (const char* m : {"opaque", "three-pass", "depth-peel-8", "hidden-line", "reference"})
+    EXPECT_EQ(zb::lab::fair_reference(m), FairReference::kExact) << m;
+}
+
+zb::lab::LabRow row(const std::string& scene, const std::string& family, const std::string& method,
+                    double delta_e, uint64_t fragments, uint64_t cycles, uint64_t bytes) {
+  zb::lab::LabRow r;
+  r.scene = scene;
+  r.family = family;
+  r.method = method;
+  r.has_cost = true;
+  r.golden.fragments_in = fragments;
+  r.bytes_read = bytes;
+  r.rtl_cycles = cycles;
+  r.error.delta_e_mean = delta_e;
+  r.error_ss.delta_e_mean = delta_e + 100;  // never used: every method here is judged exact
+  return r;
+}
+
+TEST(LabSummary, MeansPerFamilyAndOverAll) {
+  std::vector<zb::lab::LabRow> rows = {
+      row("a1", "A", "cheap", 4.0, 100, 110, 1000),
+      row("a1", "A", "dear", 1.0, 300, 330, 500),
+      row("a2", "A", "cheap", 6.0, 200, 210, 3000),
+      row("a2", "A", "dear", 3.0, 500, 530, 1500),
+      row("b1", "B", "cheap", 0.5, 50, 60, 100),
+      row("b1", "B", "dear", 0.5, 80, 90, 100),
+  };
+  zb::lab::LabRow ref;
+  ref.scene = "a1";
+  ref.family = "A";
+  ref.method = "reference";
+  rows.push_back(ref);
+
+  const std::vector<zb::lab::MethodSummary> s = zb::lab::summarize(rows);
+  ASSERT_EQ(s.size(), 6u);  // A, B, all: cheap and dear each; no reference
+  EXPECT_EQ(s[0].family, "A");
+  EXPECT_EQ(s[0].method, "cheap");
+  EXPECT_EQ(s[0].scenes, 2u);
+  EXPECT_DOUBLE_EQ(s[0].delta_e_mean, 5.0);       // (4 + 6) / 2
+  EXPECT_DOUBLE_EQ(s[0].fragments, 150.0);        // (100 + 200) / 2
+  EXPECT_DOUBLE_EQ(s[0].cost(), 160.0);           // RTL cycles (110 + 210) / 2
+  EXPECT_DOUBLE_EQ(s[0].bytes, 2000.0);
+  EXPECT_DOUBLE_EQ(s[1].delta_e_mean, 2.0);       // dear in A: (1 + 3) / 2
+  // In A each is best at something by cycles; by bytes dear is cheaper and better.
+  EXPECT_TRUE(s[0].pareto_cost);
+  EXPECT_TRUE(s[1].pareto_cost);
+  EXPECT_FALSE(s[0].pareto_bytes);
+  EXPECT_TRUE(s[1].pareto_bytes);
+  // In B the errors tie, so the dearer one is dominated.
+  EXPECT_EQ(s[2].family, "B");
+  EXPECT_TRUE(s[2].pareto_cost);
+  EXPECT_FALSE(s[3].pareto_cost);
+  // Over all, each family once: cheap (5 + 0.5) / 2 = 2.75 at (160 + 60) / 2 = 110 cycles;
+  // dear (2 + 0.5) / 2 = 1.25 at (430 + 90) / 2 = 260.
+  EXPECT_EQ(s[4].family, zb::lab::kAllFamilies);
+  EXPECT_EQ(s[4].scenes, 3u);
+  EXPECT_DOUBLE_EQ(s[4].delta_e_mean, 2.75);
+  EXPECT_DOUBLE_EQ(s[4].cost(), 110.0);
+  EXPECT_DOUBLE_EQ(s[5].delta_e_mean, 1.25);
+  EXPECT_DOUBLE_EQ(s[5].cost(), 260.0);
+  EXPECT_TRUE(s[4].pareto_cost);
+  EXPECT_TRUE(s[5].pareto_cost);
+
+  // Without RTL cycles on every row the cost falls back to fragments.
+  rows[0].rtl_cycles.reset();
+  EXPECT_DOUBLE_EQ(zb::lab::summarize(rows)[0].cost(), 150.0);
+}
+
+// The tiny run: two methods on quads at 32x24, golden model and RTL.
+TEST(LabRun, TinyCaseCsv) {
+  zb::lab::LabScene scene{"quads", "built-in", "three quads",
+                          [] { return *zb::builtin_scene("quads"); }};
+  zb::lab::LabOptions o;
+  o.viewport = zb::Viewport{32, 24};
+  o.methods = {"unsorted", "reference"};
+  o.rtl = true;
+  const zb::lab::SceneRun run = zb::lab::run_scene(scene, o);
+  ASSERT_EQ(run.rows.size(), 2u);
+  ASSERT_EQ(run.images.size(), 2u);
+  ASSERT_EQ(run.error_images.size(), 2u);
+  EXPECT_EQ(run.images[0].width, 32);
+  EXPECT_EQ(run.reference_ss.height, 24);
+
+  const std::vector<std::string> lines = split(zb::lab::lab_csv(run.rows), '\n');
+  ASSERT_EQ(lines.size(), 3u);  // header and a row per method
+  const std::vector<std::string> head = split(lines[0], ',');
+  for (const char* col : {"scene", "family", "method", "passes", "fragments", "bytes_read",
+                          "bytes_written", "host_ms", "rtl_cycles", "rmse", "psnr_db", "max_abs",
+                          "share_over_2", "share_over_16", "delta_e_mean", "delta_e_max",
+                          "ss_rmse", "ss_delta_e_mean", "fair_reference", "fair_delta_e_mean"})
+    EXPECT_NE(std::find(head.begin(), head.end(), col), head.end()) << col;
+  auto cell = [&](int line, const std::string& col) {
+    const std::vector<std::string> cells = split(lines[size_t(line)] + ",", ',');
+    const size_t i = size_t(std::find(head.begin(), head.end(), col) - head.begin());
+    return i < cells.size() ? cells[i] : std::string("?");
+  };
+  EXPECT_EQ(cell(1, "method"), "unsorted");
+  EXPECT_EQ(cell(1, "passes"), "2");
+  EXPECT_NE(cell(1, "rtl_cycles"), "");
+  EXPECT_EQ(cell(1, "rtl_mismatch_pixels"), "0");
+  EXPECT_GT(std::stod(cell(1, "rmse")), 0.0);  // unsorted gets the left half wrong
+
+  EXPECT_EQ(cell(2, "method"), "reference");
+  EXPECT_EQ(cell(2, "passes"), "");
+  EXPECT_EQ(std::stod(cell(2, "rmse")), 0.0);
+  EXPECT_EQ(cell(2, "psnr_db"), "inf");
+  EXPECT_EQ(cell(2, "max_abs"), "0");
+  EXPECT_EQ(std::stod(cell(2, "delta_e_mean")), 0.0);
+  EXPECT_EQ(std::stod(cell(2, "share_over_2")), 0.0);
+}
+
+TEST(LabReport, RelativeLinks) {
+  EXPECT_EQ(zb::lab::rebase_markdown_links("![a](x.png) [b](sub/y.csv)", "sweeps"),
+            "![a](sweeps/x.png) [b](sweeps/sub/y.csv)");
+  EXPECT_EQ(zb::lab::rebase_markdown_links("[w](https://e.org/p) [r](/abs) [h](#top)", "sweeps"),
+            "[w](https://e.org/p) [r](/abs) [h](#top)");
+  EXPECT_EQ(zb::lab::path_name("a b/c"), "a_b_c");
+  EXPECT_EQ(zb::lab::path_name(".."), "_..");
+  EXPECT_EQ(zb::lab::image_path("cad", "three-pass"), "images/cad/three-pass.png");
+  EXPECT_EQ(zb::lab::error_image_path("cad", "three-pass"), "images/cad/three-pass-error.png");
+}
+
+TEST(LabReport, ShowsEveryMethodsImageAndErrorImage) {
+  zb::lab::ReportInput in;
+  in.width = 32;
+  in.height = 24;
+  in.supersample = 4;
+  in.scenes = {{"s1", "fam", "a scene | with a pipe", 2, 10}};
+  in.rows = {row("s1", "fam", "m1", 1.0, 10, 12, 40), row("s1", "fam", "m2", 2.0, 20, 22, 80)};
+  in.summaries = zb::lab::summarize(in.rows);
+  in.charts = {zb::lab::main_chart_path(), zb::lab::family_chart_path("fam")};
+  in.sweeps_markdown = "# Sweeps\n\n![orbit](orbit.png)\n";
+  for (const std::string& doc : {zb::lab::report_markdown(in), zb::lab::report_html(in)}) {
+    for (const char* path : {"images/s1/m1.png", "images/s1/m1-error.png", "images/s1/m2.png",
+                             "images/s1/m2-error.png", "charts/main.png", "charts/family-fam.png",
+                             "images/s1/reference-supersampled.png"})
+      EXPECT_NE(doc.find(path), std::string::npos) << path;
+    EXPECT_EQ(doc.find("charts/main-bytes.png"), std::string::npos);  // not in in.charts
+    EXPECT_EQ(doc.find("/work"), std::string::npos);                  // nothing absolute
+  }
+  EXPECT_NE(zb::lab::report_markdown(in).find("![orbit](sweeps/orbit.png)"), std::string::npos);
+  EXPECT_NE(zb::lab::report_markdown(in).find("\n### Sweeps\n"), std::string::npos);  // nested
+  EXPECT_NE(zb::lab::report_markdown(in).find("a scene \\| with a pipe"), std::string::npos);
+}
+
+}  // namespace

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# The layout's rules (DESIGN.md "Layout"), checked on the tree:
+#  1. a golden-model header under an area's internal/ is included only inside cmodel/;
+#  2. outside its own folder, a cmodel header is included by area ("raster/raster.h");
+#  3. the golden model includes nothing of the folders built on it.
+set -u
+root=${1:?usage: layout.sh SOURCE_DIR}
+cd "$root" || exit 2
+fail=0
+report() { echo "layout: $*" >&2; fail=1; }
+
+while IFS= read -r hit; do
+  report "$hit: an internal header of the golden model, included outside cmodel/"
+done < <(grep -rn --include='*.cpp' --include='*.h' -E '#include "[a-z_]+/internal/' \
+           app lab tb rtlmodel systemc oracle bench fuzz tests 2>/dev/null)
+
+# Every cmodel header's name, and the area it lives in.
+declare -A area
+while IFS= read -r h; do
+  rel=${h#cmodel/}
+  [[ $rel == */internal/* ]] && continue
+  area[$(basename "$rel")]=${rel%/*}
+done < <(find cmodel -name '*.h')
+while IFS= read -r line; do
+  file=${line%%:*}
+  name=$(sed -E 's/.*#include "([^"]+)".*/\1/' <<<"$line")
+  [[ $name == */* ]] && continue
+  [[ -n ${area[$name]:-} ]] || continue
+  dir=$(dirname "$file")
+  [[ $dir == "cmodel/${area[$name]}" ]] && continue
+  [[ -f $dir/$name ]] && continue  # a header of the including folder with the same name
+  report "$file: #include \"$name\": write \"${area[$name]}/$name\""
+done < <(grep -rn --include='*.cpp' --include='*.h' -E '#include "[^"/]+"' . | grep -v '^./build' | sed 's|^\./||')
+
+while IFS= read -r hit; do
+  report "$hit: the golden model includes a folder built on it"
+done < <(grep -rn --include='*.cpp' --include='*.h' -E '#include "(rtl_|lab|sizing|cosim|suites|commands|zb_)' cmodel)
+
+[[ $fail -eq 0 ]] && echo "layout: clean"
+exit $fail
