@@ -85,7 +85,7 @@ void CostCounter::draw(const Fragment* fragments, size_t count) {
     }
 }
 
-// The driver's run of a pass (tb/rtl_rop.cpp): per touched tile, load its pixels (clipped to
+// The driver's run of a pass (rtlmodel/rtl_rop.cpp): per touched tile, load its pixels (clipped to
 // the frame), one cycle to write the state and clear the counters, stream and drain (to
 // kRtlDrain cycles after the last issue), store.
 PassStats CostCounter::end_pass() {

@@ -1,5 +1,5 @@
 // Binning a pass's fragments by tile, stably: the order the RTL driver streams them in
-// (tb/rtl_rop.cpp), shared with the SystemC modules (systemc/).
+// (rtlmodel/rtl_rop.cpp), shared with the SystemC modules (systemc/).
 #pragma once
 
 #include <cstddef>

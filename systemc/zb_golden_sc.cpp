@@ -39,7 +39,7 @@ void ZbGoldenSc::run() {
 
 // The fragments in the RTL driver's order (tile by tile, pass order within a tile: a pixel
 // sees them in pass order, so the result is render()'s), each after the clock cycles zb_rop's
-// interlock gives it (lab/sizing_cost.h), then the drain. Tile load and store are not timed.
+// interlock gives it (rtlmodel/rtl_timing.h), then the drain. Tile load and store are not timed.
 PassStats ZbGoldenSc::run_pass() {
   wait(clk_i.posedge_event());  // a pass starts on a clock edge, as zb_rop's would
   const sc_core::sc_time start = sc_core::sc_time_stamp();

@@ -1,4 +1,4 @@
-// The golden model (cmodel/rop.h) as a SystemC module, timed like zb_rop: docs/systemc.md.
+// The golden model (cmodel/rop/rop.h) as a SystemC module, timed like zb_rop: docs/systemc.md.
 #pragma once
 
 #include <cstdint>

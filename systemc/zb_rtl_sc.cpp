@@ -16,7 +16,7 @@ static_assert(Vzb_rop_sc_zb_rop::COV_SAMPLES == kRtlCoverageSamples, "COV_SAMPLE
 
 namespace {
 
-constexpr uint64_t kDrainLimit = 1000;  // as tb/rtl_rop.cpp: cycles busy_o may stay high
+constexpr uint64_t kDrainLimit = 1000;  // as rtlmodel/rtl_rop.cpp: cycles busy_o may stay high
 
 uint32_t pack_rgba(Rgba8 c) {
   return uint32_t{c.r} | uint32_t{c.g} << 8 | uint32_t{c.b} << 16 | uint32_t{c.a} << 24;

@@ -10,7 +10,7 @@ namespace zb {
 
 // m(x, y) ~ x*y/255: t = x*y, (t + (t >> 8) + 0x80) >> 8, llvmpipe's unorm8 multiply. It is
 // x*y/255 rounded to nearest for all but 24 of the 65536 pairs, where the fraction is just
-// over one half and it rounds down (tests/test_blend.cpp counts them).
+// over one half and it rounds down (tests/rop/test_blend.cpp counts them).
 constexpr uint8_t mul_unorm8(uint8_t x, uint8_t y) {
   const uint32_t t = uint32_t{x} * y;
   return static_cast<uint8_t>((t + (t >> 8) + 0x80u) >> 8);
