@@ -2,7 +2,7 @@
 # Measures the RTL simulation speed under several Verilator option sets (docs/bench.md,
 # "Verilator options"): each set gets a build tree of its own (build-vopt/NAME), its
 # zblend_bench_rtl runs BM_RtlHazard, and the table goes to out/bench/verilator_options.csv.
-# The winner is the default of ZBLEND_VERILATOR_OPT / _THREADS / _OPT_FAST in CMakeLists.txt.
+# The winner is the default of ZBLEND_VERILATOR_OPT / _THREADS / _OPT_FAST in cmake/rtl.cmake.
 # Usage: scripts/verilator_options.sh [-j JOBS] [-r REPETITIONS]
 set -euo pipefail
 

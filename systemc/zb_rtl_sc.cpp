@@ -10,7 +10,7 @@
 
 namespace zb::sc {
 
-static_assert(Vzb_rop_sc_zb_rop::TILE_W == kRtlTileW, "zbsc_vlt's TILE_W disagrees with zbtb's");
+static_assert(Vzb_rop_sc_zb_rop::TILE_W == kRtlTileW, "zbsc_vlt's TILE_W disagrees with rtl_params.h");
 static_assert(Vzb_rop_sc_zb_rop::DEPTH_BITS == kRtlDepthBits, "DEPTH_BITS disagrees");
 static_assert(Vzb_rop_sc_zb_rop::COV_SAMPLES == kRtlCoverageSamples, "COV_SAMPLES disagrees");
 
