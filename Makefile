@@ -57,9 +57,10 @@ soak: build ## Long RTL regression: 10^8 fragments of random and hazard streams
 	$(BUILD)/zblend_tb --suite random --seed 11 --fragments $(SOAK_FRAGMENTS) --backpressure 0.2
 	$(BUILD)/zblend_tb --suite hazard --seed 12 --fragments $(SOAK_FRAGMENTS)
 
-waves: build ## Render `cad` on the RTL with a waveform: out/waves/cad.fst
-	@mkdir -p out/waves
-	$(ZBLEND) render --scene cad --method three-pass --width 128 --height 96 --backend rtl \
+# Only zblend is built, its log shown only if the build fails; render makes out/waves/.
+waves: setup $(BUILD)/CMakeCache.txt ## Render `cad` on the RTL with a waveform: out/waves/cad.fst
+	@log=$$(cmake --build $(BUILD) -j $(JOBS) --target zblend 2>&1) || { printf '%s\n' "$$log"; exit 1; }
+	@$(ZBLEND) render --scene cad --method three-pass --width 128 --height 96 --backend rtl \
 	  --out out/waves/cad.png --waves out/waves/cad.fst
 	@echo "open it: gtkwave out/waves/cad.fst  (or surfer out/waves/cad.fst)"
 

@@ -99,8 +99,11 @@ void run_sizing(const SizingCommand& c) {
     throw UsageError(fmt::format("--max-error: {} is out of range (0 to 255, 8-bit units)",
                                  c.max_error));
   const Viewport vp = check_viewport(c.width, c.height, kDefaultDepthBits);
-  if (!c.json.empty()) check_writable("--json", c.json, ".json");
+  const std::vector<OutputPath> outputs = {{"--json", c.json, ".json"}};
+  check_outputs(outputs);
   const Scene scene = resolve_scene(c.scene, c.camera);
+  create_output_dirs(outputs);
+  print_warnings("zblend plan", scene);
   SizingOptions o;
   o.width = vp.width;
   o.height = vp.height;
@@ -118,7 +121,10 @@ void run_sizing(const SizingCommand& c) {
 // The plan command's two forms: --method alone, or --scene with --max-error.
 void run_plan_command(const CLI::App& cmd, const std::string& method, const SizingCommand& c) {
   if (cmd.count("--method")) {
-    for (const char* o : {"--scene", "--max-error", "--camera", "--width", "--height", "--json"})
+    if (cmd.count("--scene"))
+      throw UsageError("--method, --scene: give one of them (--method M: a method's passes; "
+                       "--scene S --max-error E: a model sized to the scene)");
+    for (const char* o : {"--max-error", "--camera", "--width", "--height", "--json"})
       if (cmd.count(o)) throw UsageError(fmt::format("{}: goes with --scene, not --method", o));
     print_plan(method);
     return;

@@ -62,29 +62,35 @@ constexpr const char* kBuiltinScenes[] = {"cad", "quads", "sphere-torus", "parts
 
 lab::LabScene named_scene(const std::string& name, const std::string& family,
                           const std::string& description, const std::string& source,
-                          const std::string& camera) {
-  return {name, family, description, [source, camera] { return resolve_scene(source, camera); }};
+                          const std::string& camera, bool quiet) {
+  return {name, family, description, [name, source, camera, quiet] {
+            Scene scene = resolve_scene(source, camera);
+            if (!quiet) print_warnings("zblend lab: " + name, scene);
+            return scene;
+          }};
 }
 
 // Every scene of `zblend lab` with no --scenes: the suite, the built-ins, the real scenes that
-// are installed (a missing one is named on stderr).
-std::vector<lab::LabScene> default_scenes(bool quiet) {
+// are installed (a missing one is named on stderr unless `quiet_missing`).
+std::vector<lab::LabScene> default_scenes(bool quiet_missing, bool quiet) {
   std::vector<lab::LabScene> out;
   auto listed = [&](const std::string& n) {
     return std::any_of(out.begin(), out.end(), [&](const lab::LabScene& s) { return s.name == n; });
   };
   for (const SuiteScene& s : scene_suite())
-    if (!listed(s.name)) out.push_back(named_scene(s.name, s.family, s.description, s.name, ""));
+    if (!listed(s.name))
+      out.push_back(named_scene(s.name, s.family, s.description, s.name, "", quiet));
   for (const char* name : kBuiltinScenes) {
     if (listed(name)) continue;
     for (const SceneInfo& b : builtin_scenes())
-      if (b.name == name) out.push_back(named_scene(name, "built-in", b.description, name, ""));
+      if (b.name == name)
+        out.push_back(named_scene(name, "built-in", b.description, name, "", quiet));
   }
   for (const RealScene& r : kRealScenes) {
     std::error_code ec;
     if (fs::is_regular_file(r.path, ec))
-      out.push_back(named_scene(r.name, "real", r.path, r.path, r.camera));
-    else if (!quiet)
+      out.push_back(named_scene(r.name, "real", r.path, r.path, r.camera, quiet));
+    else if (!quiet_missing)
       fmt::print(stderr, "zblend lab: skipping {}: {} is not installed (scripts/setup.sh)\n",
                  r.name, r.path);
   }
@@ -102,7 +108,7 @@ std::vector<std::string> split(const std::string& list) {
 // --scenes: "all", or names from the default list, suite scenes such as layers-N-aP, or scene
 // files.
 std::vector<lab::LabScene> pick_scenes(const LabCommandOptions& o) {
-  std::vector<lab::LabScene> all = default_scenes(o.quiet || o.scenes != "all");
+  std::vector<lab::LabScene> all = default_scenes(o.quiet || o.scenes != "all", o.quiet);
   if (o.scenes == "all") return all;
   std::vector<lab::LabScene> out;
   for (const std::string& name : split(o.scenes)) {
@@ -116,14 +122,14 @@ std::vector<lab::LabScene> pick_scenes(const LabCommandOptions& o) {
         throw UsageError(fmt::format("--scenes: '{}' needs {}, which is not installed "
                                      "(scripts/setup.sh)", name, r.path));
     if (suite_scene(name)) {
-      out.push_back(named_scene(name, "layers", name, name, ""));
+      out.push_back(named_scene(name, "layers", name, name, "", o.quiet));
       continue;
     }
     if (is_scene_path(name)) {
       std::error_code ec;
       if (!fs::is_regular_file(name, ec))
         throw UsageError(fmt::format("--scenes: no scene file '{}'", name));
-      out.push_back(named_scene(fs::path(name).stem().string(), "file", name, name, ""));
+      out.push_back(named_scene(fs::path(name).stem().string(), "file", name, name, "", o.quiet));
       continue;
     }
     std::vector<std::string> names;
@@ -161,9 +167,7 @@ void check_options(const LabCommandOptions& o) {
   if (o.supersample < 1 || o.supersample > std::min(8, max_factor))
     throw UsageError(fmt::format("--supersample: {} is out of range (1 to {} at {}x{})",
                                  o.supersample, std::min(8, max_factor), o.width, o.height));
-  std::error_code ec;
-  fs::create_directories(o.out_dir, ec);
-  check_writable("--out-dir", (fs::path(o.out_dir) / "lab.csv").string(), ".csv");
+  create_output_dirs({{"--out-dir", o.out_dir, nullptr}});
 }
 
 void write(const fs::path& path, const std::string& text) {
@@ -313,8 +317,11 @@ void add_lab_command(CLI::App& app) {
                   "Output directory: lab.csv, lab_summary.csv, images/, charts/, report.md and "
                   "report.html; sweeps/ is read if present")
       ->capture_default_str();
-  cmd->add_flag("--rtl,!--no-rtl", o->rtl, "Also run each method on the Verilated RTL for its "
-                                           "cycle count (default on)");
+  // Two flags, so that the help shows the default once and plainly.
+  cmd->add_flag("--rtl", "Also run each method on the Verilated RTL for its cycle count (the "
+                         "default)");
+  cmd->add_flag_callback("--no-rtl", [o] { o->rtl = false; },
+                         "Golden model only: no RTL cycle counts");
   cmd->add_option("-j,--jobs", o->jobs, "Scenes run at once, one thread each")
       ->capture_default_str();
   cmd->add_option("--supersample", o->supersample,
@@ -322,7 +329,11 @@ void add_lab_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--no-charts", o->no_charts, "Skip scripts/lab_charts.py (no python3-matplotlib)");
   cmd->add_flag("--quiet,-q", o->quiet, "Print nothing but errors");
-  cmd->callback([o] { run_lab(*o); });
+  cmd->callback([o, cmd] {
+    if (cmd->count("--rtl") && cmd->count("--no-rtl"))
+      throw UsageError("--rtl, --no-rtl: give one of them");
+    run_lab(*o);
+  });
 }
 
 }  // namespace zb::app

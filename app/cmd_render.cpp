@@ -31,86 +31,133 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
+enum class BackendKind { kGolden, kRtl, kBoth };
+
+const char* backend_name(BackendKind b) {
+  switch (b) {
+    case BackendKind::kGolden: return "golden";
+    case BackendKind::kRtl: return "rtl";
+    case BackendKind::kBoth: return "both";
+  }
+  return "?";
+}
+
+BackendKind parse_backend(const std::string& name) {
+  for (BackendKind b : {BackendKind::kGolden, BackendKind::kRtl, BackendKind::kBoth})
+    if (name == backend_name(b)) return b;
+  throw UsageError(fmt::format("--backend: unknown backend '{}' (choose from golden, rtl, both)",
+                               name));
+}
+
 struct RenderOptions {
   FrameOptions frame;
   std::string methods = "three-pass";
   std::string out;
   std::string out_dir;
   std::string stats;
-  std::string backend = "golden";
+  std::string backend_text = "golden";  // --backend as given, parsed into `backend`
+  BackendKind backend = BackendKind::kGolden;
   double backpressure = 0;
-  uint64_t seed = 1;
+  int64_t seed = 1;
   std::string waves;
+  std::string background;
   int threads = default_threads();  // golden: render_frame's workers
+  std::vector<std::string> given;   // the options given that only one kind of backend uses
   bool no_error = false;            // skip the reference and the error columns
   bool quiet = false;
 };
+
+// The options that only the RTL backends, or only the golden one, use.
+constexpr const char* kRtlOnly[] = {"--backpressure", "--seed", "--waves"};
+constexpr const char* kGoldenOnly[] = {"--threads"};
 
 double ms_since(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
 }
 
+std::vector<OutputPath> outputs(const RenderOptions& o) {
+  return {{"--out", o.out, ".png"},
+          {"--out-dir", o.out_dir, nullptr},
+          {"--stats", o.stats, ".json"},
+          {"--waves", o.waves, ".fst"}};
+}
+
+// An option given for a backend the run does not use would do nothing: refused.
+void check_backend_options(const RenderOptions& o) {
+  const bool golden = o.backend == BackendKind::kGolden;
+  for (const std::string& name : o.given) {
+    const bool for_rtl =
+        std::find(std::begin(kRtlOnly), std::end(kRtlOnly), name) != std::end(kRtlOnly);
+    if (golden && for_rtl) throw UsageError(fmt::format("{}: needs --backend rtl or both", name));
+    if (!golden && !for_rtl) throw UsageError(fmt::format("{}: needs --backend golden", name));
+  }
+}
+
+// Everything that can be checked before the scene is read; changes nothing on disk.
 void check_options(const RenderOptions& o, size_t method_count) {
   if (o.out.empty() == o.out_dir.empty())
     throw UsageError("give exactly one of --out FILE.png (one method) or --out-dir DIR");
   if (!o.out.empty() && method_count != 1)
     throw UsageError("--out: takes one method; use --out-dir DIR for several");
-  if (o.backend != "golden" && o.backend != "rtl" && o.backend != "both")
-    throw UsageError(fmt::format("--backend: unknown backend '{}' (choose from golden, rtl, both)",
-                                 o.backend));
-  if (o.backend != "golden" && o.frame.depth_bits != kRtlDepthBits)
+  if (o.backend != BackendKind::kGolden && o.frame.depth_bits != kRtlDepthBits)
     throw UsageError(fmt::format("--depth-bits: the RTL model is built with {} bits, not {}",
                                  kRtlDepthBits, o.frame.depth_bits));
+  check_backend_options(o);
   check_threads(o.threads);
   if (!(o.backpressure >= 0 && o.backpressure < 1))
     throw UsageError(fmt::format("--backpressure: {} is out of range (0 to below 1)", o.backpressure));
-  if (!o.waves.empty()) {
-    if (o.backend == "golden") throw UsageError("--waves: needs --backend rtl or both");
-    if (method_count != 1) throw UsageError("--waves: takes one method");
-    check_writable("--waves", o.waves, ".fst");
-  }
-  if (!o.out.empty()) check_writable("--out", o.out, ".png");
-  if (!o.out_dir.empty()) {
-    std::error_code ec;
-    fs::create_directories(o.out_dir, ec);
-    check_writable("--out-dir", (fs::path(o.out_dir) / "summary.csv").string(), ".csv");
-  }
-  if (!o.stats.empty()) check_writable("--stats", o.stats, ".json");
+  if (o.seed < 0) throw UsageError(fmt::format("--seed: {} is out of range (0 or more)", o.seed));
+  if (!o.waves.empty() && method_count != 1) throw UsageError("--waves: takes one method");
+  check_outputs(outputs(o));
 }
 
-// Runs one pass plan on the chosen backend. A mismatch between RTL and golden model is
-// recorded in the run and its report printed; the caller fails the command at the end.
-void run_plan(const RenderOptions& o, const RasterizedScene& rs, const PassPlan& plan,
-              MethodRun& run) {
+// An RTL backend and typed views of it: the RTL model alone, or within a Cosim (both).
+struct RtlBackend {
+  std::unique_ptr<Backend> backend;
+  const RtlRop* rtl = nullptr;
+  const Cosim* cosim = nullptr;
+};
+
+RtlBackend make_rtl_backend(const RenderOptions& o, const PassPlan& plan) {
   RtlOptions rtl;
   rtl.backpressure = o.backpressure;
-  rtl.seed = o.seed;
+  rtl.seed = static_cast<uint64_t>(o.seed);
   rtl.trace_path = o.waves;
-  std::unique_ptr<Backend> backend;
-  if (o.backend == "golden") {
-    backend = std::make_unique<GoldenRop>();
-  } else if (o.backend == "rtl") {
-    backend = std::make_unique<RtlRop>(rtl);
-  } else {
-    CosimOptions cosim;
-    cosim.rtl = rtl;
-    const fs::path dir = o.out_dir.empty() ? fs::path(o.out).parent_path() : fs::path(o.out_dir);
-    cosim.mismatch_fst = (dir / ("mismatch-" + plan.name + ".fst")).string();
-    backend = std::make_unique<Cosim>(cosim);
+  RtlBackend b;
+  if (o.backend == BackendKind::kRtl) {
+    auto r = std::make_unique<RtlRop>(rtl);
+    b.rtl = r.get();
+    b.backend = std::move(r);
+    return b;
   }
-  run.rtl = o.backend != "golden";
-  run.compared = o.backend == "both";
+  CosimOptions cosim;
+  cosim.rtl = rtl;
+  const fs::path dir = o.out_dir.empty() ? fs::path(o.out).parent_path() : fs::path(o.out_dir);
+  cosim.mismatch_fst = (dir / ("mismatch-" + plan.name + ".fst")).string();
+  auto c = std::make_unique<Cosim>(cosim);
+  b.cosim = c.get();
+  b.rtl = &c->rtl();
+  b.backend = std::move(c);
+  return b;
+}
+
+// Runs one pass plan on the RTL, alone or compared with the golden model. A mismatch between
+// them is recorded in the run and its report printed; the caller fails the command at the end.
+void run_plan(const RenderOptions& o, const RasterizedScene& rs, const PassPlan& plan,
+              MethodRun& run) {
+  const RtlBackend b = make_rtl_backend(o, plan);
+  run.rtl = true;
+  run.compared = b.cosim != nullptr;
   run.passes = plan.passes.size();
   run.total = PassStats{};
   try {
-    for (const PassStats& p : render(rs, plan, *backend).passes) *run.total += p;
+    for (const PassStats& p : render(rs, plan, *b.backend).passes) *run.total += p;
   } catch (const MismatchError& e) {
     fmt::print(stderr, "{}\n", e.what());
-    run.mismatches = std::max<uint64_t>(1, static_cast<const Cosim&>(*backend).mismatches());
+    run.mismatches = std::max<uint64_t>(1, b.cosim ? b.cosim->mismatches() : 0);
   }
-  run.image = backend->framebuffer();
-  if (const auto* r = dynamic_cast<const RtlRop*>(backend.get())) run.tile_io_cycles = r->tile_io_cycles();
-  if (const auto* c = dynamic_cast<const Cosim*>(backend.get())) run.tile_io_cycles = c->rtl().tile_io_cycles();
+  run.image = b.backend->framebuffer();
+  run.tile_io_cycles = b.rtl->tile_io_cycles();
 }
 
 // One pass plan on the golden model, the whole frame from the scene by the banded renderer
@@ -126,13 +173,72 @@ void run_golden(const RenderOptions& o, const Scene& scene, const Viewport& vp,
   run.image = std::move(result.framebuffer);
 }
 
-void run_render(const RenderOptions& o) {
-  const Scene scene = resolve_scene(o.frame.scene, o.frame.camera);
+// The scene after the options: its file read, its camera aimed, --background applied.
+Scene load_scene(const RenderOptions& o) {
+  const std::optional<Rgba8> background = parse_background(o.background);
+  Scene scene = resolve_scene(o.frame.scene, o.frame.camera);
+  if (background) scene.background = *background;
 #ifdef __GLIBC__
   // The scene loaders free large temporaries that glibc keeps resident; returned before the
   // frame's buffers are allocated, they stay out of the run's peak memory.
   malloc_trim(0);
 #endif
+  return scene;
+}
+
+// The first line: the scene's triangles and those set up after clipping (more where clipping
+// splits one, fewer where it drops one), which the camera and frame size change.
+void print_header(const RenderOptions& o, const Scene& scene, size_t drawn,
+                  const std::optional<RasterizedScene>& rs, double raster_ms) {
+  const std::string head = fmt::format("{}: {} triangles in the scene, {} after clipping",
+                                       o.frame.scene, scene.triangle_count(), drawn);
+  if (rs)
+    fmt::print(stderr, "{}, {} fragments at {}x{} ({:.1f} ms geometry and raster), backend {}\n",
+               head, rs->fragments.size(), o.frame.width, o.frame.height, raster_ms,
+               backend_name(o.backend));
+  else
+    fmt::print(stderr, "{}, at {}x{}, backend {}\n", head, o.frame.width, o.frame.height,
+               backend_name(o.backend));
+}
+
+// The fragments that reached the frame: all of them where they were stored, else the most any
+// method drew.
+uint64_t frame_fragments(const std::optional<RasterizedScene>& rs,
+                         const std::vector<MethodRun>& runs) {
+  if (rs) return rs->fragments.size();
+  uint64_t most = 0;
+  for (const MethodRun& r : runs)
+    if (r.total) most = std::max(most, r.total->fragments_in);
+  return most;
+}
+
+void write_stats(const RenderOptions& o, const Scene& scene, const Viewport& vp,
+                 const std::optional<RasterizedScene>& rs, size_t drawn,
+                 const std::vector<MethodRun>& runs) {
+  // The stored fragments exist only where the reference (or the RTL) needed them.
+  const nlohmann::json fragments = rs ? nlohmann::json(rs->fragments.size()) : nlohmann::json();
+  const nlohmann::json fragment_bytes =
+      rs ? nlohmann::json(rs->fragments.size() * kReferenceFragmentBytes) : nlohmann::json();
+  const nlohmann::json header = {
+      {"scene", o.frame.scene},
+      {"width", o.frame.width},
+      {"height", o.frame.height},
+      {"depth_bits", o.frame.depth_bits},
+      {"backend", backend_name(o.backend)},
+      {"triangles", scene.triangle_count()},
+      {"triangles_drawn", drawn},
+      {"fragments", fragments},
+      // Peak so far: every method has run and its images are written.
+      {"memory",
+       {{"frame_bytes", frame_bytes(vp.width, vp.height)},
+        {"scene_bytes", scene_bytes(scene)},
+        {"fragments", fragments},
+        {"fragment_bytes", fragment_bytes},
+        {"peak_rss_bytes", peak_rss_bytes()}}}};
+  write_or_fail(write_file_atomic(o.stats, stats_json(runs, o.frame.depth_bits, header.dump())));
+}
+
+void run_render(const RenderOptions& o) {
   const std::vector<std::string> methods = parse_methods(o.methods);
   const Viewport vp = check_viewport(o.frame.width, o.frame.height, o.frame.depth_bits);
   const bool reference_method =
@@ -141,11 +247,13 @@ void run_render(const RenderOptions& o) {
     throw UsageError("--no-error: the reference method is what errors are measured against; "
                      "drop one of them");
   check_options(o, methods.size());
+  const Scene scene = load_scene(o);
+  create_output_dirs(outputs(o));
 
   // The exact reference feeds the error columns (the table, summary.csv, --stats) and the
   // reference method; it needs the whole scene's fragments stored. The golden model renders
   // without them, so a golden run that writes only images skips both.
-  const bool golden = o.backend == "golden";
+  const bool golden = o.backend == BackendKind::kGolden;
   const bool need_reference =
       !o.no_error && (!o.quiet || !o.out_dir.empty() || !o.stats.empty() || reference_method);
   std::optional<RasterizedScene> rs;
@@ -163,13 +271,13 @@ void run_render(const RenderOptions& o) {
     reference = render_reference(*rs);
     reference_ms = ms_since(t1);
   }
-  if (!o.quiet && rs)
-    fmt::print(stderr, "{}: {} triangles, {} fragments at {}x{} ({:.1f} ms geometry and raster), "
-               "backend {}\n", o.frame.scene, rs->triangles.size(), rs->fragments.size(),
-               o.frame.width, o.frame.height, raster_ms, o.backend);
-  else if (!o.quiet)
-    fmt::print(stderr, "{}: {} triangles at {}x{}, backend {}\n", o.frame.scene,
-               scene.triangle_count(), o.frame.width, o.frame.height, o.backend);
+  // Set-up triangles: counted on their own only where none were stored (--no-error).
+  size_t drawn = rs ? rs->triangles.size() : 0;
+  if (!rs && (!o.quiet || !o.stats.empty())) drawn = setup_triangles(scene, vp).size();
+  if (!o.quiet) {
+    print_header(o, scene, drawn, rs, raster_ms);
+    print_warnings("zblend render", scene);
+  }
 
   std::vector<MethodRun> runs;
   uint64_t mismatches = 0;
@@ -192,6 +300,9 @@ void run_render(const RenderOptions& o) {
     if (!o.quiet) fmt::print(stderr, "  {:<12} {:8.1f} ms\n", m, run.host_ms);
     runs.push_back(std::move(run));
   }
+  if (!o.quiet && frame_fragments(rs, runs) == 0)
+    fmt::print(stderr, "zblend render: warning: nothing drawn: 0 fragments reach the frame; "
+                       "try --camera\n");
 
   for (const MethodRun& r : runs)
     write_or_fail(write_png(
@@ -199,28 +310,7 @@ void run_render(const RenderOptions& o) {
   if (!o.out_dir.empty())
     write_or_fail(write_file_atomic((fs::path(o.out_dir) / "summary.csv").string(),
                                     summary_csv(runs, o.frame.depth_bits)));
-  if (!o.stats.empty()) {
-    // The stored fragments exist only where the reference (or the RTL) needed them.
-    const nlohmann::json fragments = rs ? nlohmann::json(rs->fragments.size()) : nlohmann::json();
-    const nlohmann::json fragment_bytes =
-        rs ? nlohmann::json(rs->fragments.size() * kReferenceFragmentBytes) : nlohmann::json();
-    const nlohmann::json header = {
-        {"scene", o.frame.scene},
-        {"width", o.frame.width},
-        {"height", o.frame.height},
-        {"depth_bits", o.frame.depth_bits},
-        {"backend", o.backend},
-        {"triangles", scene.triangle_count()},
-        {"fragments", fragments},
-        // Peak so far: every method has run and its images are written.
-        {"memory",
-         {{"frame_bytes", frame_bytes(vp.width, vp.height)},
-          {"scene_bytes", scene_bytes(scene)},
-          {"fragments", fragments},
-          {"fragment_bytes", fragment_bytes},
-          {"peak_rss_bytes", peak_rss_bytes()}}}};
-    write_or_fail(write_file_atomic(o.stats, stats_json(runs, o.frame.depth_bits, header.dump())));
-  }
+  if (!o.stats.empty()) write_stats(o, scene, vp, rs, drawn, runs);
   if (!o.quiet) print_table(runs);
   if (mismatches) throw VerificationError("RTL and golden model differ (report above)");
 }
@@ -239,7 +329,7 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--out-dir", o->out_dir,
                   "Output directory: METHOD.png for each method and summary.csv");
   cmd->add_option("--stats", o->stats, "Statistics as JSON: passes, traffic, error, cycles");
-  cmd->add_option("--backend,-b", o->backend,
+  cmd->add_option("--backend,-b", o->backend_text,
                   "golden (C++ model), rtl (Verilated RTL) or both (compared bit for bit after "
                   "every pass)")
       ->capture_default_str();
@@ -249,12 +339,20 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--seed", o->seed, "RTL: seed of the back-pressure pattern")
       ->capture_default_str();
   cmd->add_option("--waves", o->waves, "RTL: FST waveform of the whole run");
+  add_background_option(cmd, o->background);
   add_threads_option(cmd, o->threads, "Golden model: threads rendering the frame's bands");
   cmd->add_flag("--no-error", o->no_error,
                 "Skip the exact reference and the error columns (its fragments are stored for "
                 "the whole frame): the golden model's own time and memory");
-  cmd->add_flag("--quiet,-q", o->quiet, "Print nothing but errors");
-  cmd->callback([o] { run_render(*o); });
+  cmd->add_flag("--quiet,-q", o->quiet, "Print nothing but errors (no warnings either)");
+  cmd->callback([o, cmd] {
+    o->backend = parse_backend(o->backend_text);
+    for (const char* name : kRtlOnly)
+      if (cmd->count(name)) o->given.emplace_back(name);
+    for (const char* name : kGoldenOnly)
+      if (cmd->count(name)) o->given.emplace_back(name);
+    run_render(*o);
+  });
 }
 
 }  // namespace zb::app

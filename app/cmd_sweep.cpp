@@ -61,11 +61,7 @@ void check_options(const SweepOptions& o) {
   parse_methods(o.methods);
 }
 
-void prepare_out_dir(const std::string& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  check_writable("--out-dir", (fs::path(dir) / "sweeps.md").string(), ".md");
-}
+void prepare_out_dir(const std::string& dir) { create_output_dirs({{"--out-dir", dir, nullptr}}); }
 
 class SweepRun {
  public:
@@ -100,6 +96,11 @@ class SweepRun {
   std::vector<std::string> methods() const {
     return parse_methods(o_.methods);
   }
+  Scene scene(const std::string& name) const {
+    Scene s = resolve_scene(name);
+    if (!o_.quiet) print_warnings("zblend sweep", s);
+    return s;
+  }
   void write(const std::string& file, const std::string& text) const {
     write_or_fail(write_file_atomic((fs::path(o_.out_dir) / file).string(), text));
   }
@@ -120,7 +121,7 @@ class SweepRun {
     r.orbit.threshold = o_.threshold;
     r.orbit.viewport = size_or(r.orbit.viewport);
     r.orbit.methods = methods();
-    r.orbit_rows = lab::orbit_sweep(resolve_scene(o_.scene), r.orbit, progress());
+    r.orbit_rows = lab::orbit_sweep(scene(o_.scene), r.orbit, progress());
     emit("orbit", lab::orbit_csv(r.orbit_rows));
   }
   void depth() {
@@ -147,7 +148,7 @@ class SweepRun {
     lab::SweepResults& r = results_;
     r.samples_scene = o_.samples_scene;
     r.samples.viewport = size_or(r.samples.viewport);
-    r.samples_rows = lab::samples_sweep(resolve_scene(o_.samples_scene), r.samples, progress());
+    r.samples_rows = lab::samples_sweep(scene(o_.samples_scene), r.samples, progress());
     emit("samples", lab::method_csv("samples", r.samples_rows));
   }
 

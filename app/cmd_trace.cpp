@@ -16,10 +16,10 @@ struct TraceOptions {
   FrameOptions frame;
   std::string method = "three-pass";
   std::string out;
+  std::string background;
 };
 
 void run_trace(const TraceOptions& o) {
-  const Scene scene = resolve_scene(o.frame.scene, o.frame.camera);
   const PassPlan* plan = find_plan(o.method);
   if (!plan) {
     std::vector<std::string> names;
@@ -28,7 +28,13 @@ void run_trace(const TraceOptions& o) {
                                  join(names)));
   }
   const Viewport vp = check_viewport(o.frame.width, o.frame.height, o.frame.depth_bits);
-  check_writable("--out", o.out, ".zbt");
+  const std::optional<Rgba8> background = parse_background(o.background);
+  const std::vector<OutputPath> outputs = {{"--out", o.out, ".zbt"}};
+  check_outputs(outputs);
+  Scene scene = resolve_scene(o.frame.scene, o.frame.camera);
+  if (background) scene.background = *background;
+  create_output_dirs(outputs);
+  print_warnings("zblend trace", scene);
   const Trace trace = make_trace(rasterize_scene(scene, vp), *plan);
   write_or_fail(write_trace(o.out, trace));
   size_t fragments = 0;
@@ -47,6 +53,7 @@ void add_trace_command(CLI::App& app) {
   cmd->add_option("--method,-m", o->method, "Method with a pass plan (see 'zblend methods')")
       ->capture_default_str();
   cmd->add_option("--out,-o", o->out, "Output trace file (.zbt)")->required();
+  add_background_option(cmd, o->background);
   cmd->callback([o] { run_trace(*o); });
 }
 

@@ -1,6 +1,7 @@
 // The zblend subcommands. Each registers itself on the top-level CLI11 app.
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -42,7 +43,7 @@ void add_frame_options(CLI::App* cmd, FrameOptions& o);
 
 // --threads N: registers it on `cmd` (default: every core, default_threads()); check_threads
 // throws UsageError unless 1 <= N <= kMaxThreads.
-constexpr int kMaxThreads = 1024;
+constexpr int kMaxThreads = 256;
 int default_threads();
 void add_threads_option(CLI::App* cmd, int& threads, const std::string& help);
 void check_threads(int threads);
@@ -53,10 +54,35 @@ void check_threads(int threads);
 Scene resolve_scene(const std::string& name, const std::string& camera = "");
 std::vector<std::string> parse_methods(const std::string& list);  // "a,b" or "all"
 Viewport check_viewport(int width, int height, int depth_bits);
-// Fails early, before any work, when `path` lacks `extension` or its directory is not writable.
+
+// --background R,G,B[,A] (0-255 each; A defaults to 255): registers it on `cmd`.
+// parse_background gives nothing for empty text.
+void add_background_option(CLI::App* cmd, std::string& text);
+std::optional<Rgba8> parse_background(const std::string& text);
+
+// The rule for every output path (docs/cli.md, "Output paths"). A file must end in its
+// extension and not be a directory; a directory must not be a file; the nearest existing
+// directory above either must be writable and no file may stand on the way to it.
+struct OutputPath {
+  const char* option;     // "--out", named in the error
+  std::string path;       // empty: not given, skipped
+  const char* extension;  // ".png" ...; nullptr: the path is a directory
+};
+// Checks, changing nothing on disk.
+void check_outputs(const std::vector<OutputPath>& outputs);
+// check_outputs, then creates the missing directories (mkdir -p): once every other check passed.
+void create_output_dirs(const std::vector<OutputPath>& outputs);
+// check_outputs for one file.
 void check_writable(const char* option, const std::string& path, const char* extension);
 // Throws UsageError(error) unless `error` is empty.
 void write_or_fail(const std::string& error);
+
+// The scene's loader warnings on stderr, "PROGRAM: warning: ...", each once per process.
+void print_warnings(const std::string& program, const Scene& scene);
+
+// The one line for a CLI11 parse error of `app` (the top level). An unknown option names the
+// closest valid one: "zblend render: error: unknown option '--scnee'; did you mean '--scene'?".
+std::string parse_error_line(const CLI::App& app, const CLI::ParseError& e);
 
 // "a, b, c", for error messages that name the valid choices.
 std::string join(const std::vector<std::string>& items, const char* sep = ", ");

@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "zblend: error: %s (see 'zblend --help')\n", e.what());
+    std::fprintf(stderr, "%s\n", zb::app::parse_error_line(app, e).c_str());
     return 2;
   } catch (const zb::app::UsageError& e) {
     std::fprintf(stderr, "zblend: error: %s\n", e.what());

@@ -1,6 +1,11 @@
 // Option checks shared by the subcommands.
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <filesystem>
+#include <limits>
+#include <mutex>
+#include <set>
 #include <thread>
 #include <unistd.h>
 
@@ -104,14 +109,12 @@ int default_threads() {
 }
 
 void add_threads_option(CLI::App* cmd, int& threads, const std::string& help) {
-  cmd->add_option("--threads", threads, help + " (default: every core)")->capture_default_str();
+  cmd->add_option("--threads", threads,
+                  fmt::format("{} (1 to {}; default: every core)", help, kMaxThreads))
+      ->capture_default_str();
 }
 
-void check_threads(int threads) {
-  if (threads < 1)
-    throw UsageError(fmt::format("--threads: {} is out of range (at least 1 thread)", threads));
-  check_range("--threads", threads, 1, kMaxThreads);
-}
+void check_threads(int threads) { check_range("--threads", threads, 1, kMaxThreads); }
 
 Viewport check_viewport(int width, int height, int depth_bits) {
   check_range("--width", width, 1, kMaxFrameSize);
@@ -120,19 +123,163 @@ Viewport check_viewport(int width, int height, int depth_bits) {
   return {width, height, depth_bits};
 }
 
-void check_writable(const char* option, const std::string& path, const char* extension) {
-  if (fs::path(path).extension() != extension)
-    throw UsageError(fmt::format("{}: '{}' must end in {}", option, path, extension));
-  fs::path dir = fs::path(path).parent_path();
+void add_background_option(CLI::App* cmd, std::string& text) {
+  cmd->add_option("--background", text,
+                  "Background colour R,G,B or R,G,B,A, 0 to 255 each (A: 255 if left out), "
+                  "instead of the scene's");
+}
+
+std::optional<Rgba8> parse_background(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  uint8_t v[4] = {0, 0, 0, 255};
+  size_t n = 0, start = 0;
+  for (; start <= text.size() && n < 4; ++n) {
+    const size_t comma = std::min(text.find(',', start), text.size());
+    int x = -1;
+    const auto [end, ec] = std::from_chars(text.data() + start, text.data() + comma, x);
+    if (ec != std::errc() || end != text.data() + comma || x < 0 || x > 255) break;
+    v[n] = static_cast<uint8_t>(x);
+    start = comma + 1;
+  }
+  if (start <= text.size() || n < 3)
+    throw UsageError(
+        fmt::format("--background: '{}' is not R,G,B or R,G,B,A, each 0 to 255", text));
+  return Rgba8{v[0], v[1], v[2], v[3]};
+}
+
+namespace {
+
+// The nearest existing directory at or above `dir` (empty: "."), which must be writable with no
+// file on the way.
+void check_dir_above(const char* option, fs::path dir) {
   if (dir.empty()) dir = ".";
-  if (!fs::is_directory(dir))
-    throw UsageError(fmt::format("{}: directory '{}' does not exist", option, dir.string()));
+  std::error_code ec;
+  while (!fs::exists(dir, ec)) {
+    const fs::path up = dir.parent_path();
+    if (up == dir) break;
+    dir = up.empty() ? fs::path(".") : up;
+  }
+  if (!fs::is_directory(dir, ec))
+    throw UsageError(fmt::format("{}: {} is a file, not a directory", option, dir.string()));
   if (::access(dir.c_str(), W_OK) != 0)
     throw UsageError(fmt::format("{}: directory '{}' is not writable", option, dir.string()));
 }
 
+void check_output(const OutputPath& o) {
+  if (o.path.empty()) return;
+  const fs::path path(o.path);
+  if (!o.extension) return check_dir_above(o.option, path);
+  if (path.extension() != o.extension)
+    throw UsageError(fmt::format("{}: '{}' must end in {}", o.option, o.path, o.extension));
+  std::error_code ec;
+  if (fs::is_directory(path, ec))
+    throw UsageError(fmt::format("{}: {} is a directory, not a {} file", o.option, o.path,
+                                 o.extension));
+  check_dir_above(o.option, path.parent_path());
+}
+
+}  // namespace
+
+void check_outputs(const std::vector<OutputPath>& outputs) {
+  for (const OutputPath& o : outputs) check_output(o);
+}
+
+void create_output_dirs(const std::vector<OutputPath>& outputs) {
+  check_outputs(outputs);
+  for (const OutputPath& o : outputs) {
+    const fs::path dir = o.extension ? fs::path(o.path).parent_path() : fs::path(o.path);
+    std::error_code ec;
+    if (!o.path.empty() && !dir.empty()) fs::create_directories(dir, ec);
+    if (ec)
+      throw UsageError(fmt::format("{}: cannot create directory '{}': {}", o.option, dir.string(),
+                                   ec.message()));
+  }
+}
+
+void check_writable(const char* option, const std::string& path, const char* extension) {
+  check_output({option, path, extension});
+}
+
 void write_or_fail(const std::string& error) {
   if (!error.empty()) throw UsageError(error);
+}
+
+void print_warnings(const std::string& program, const Scene& scene) {
+  static std::mutex mutex;
+  static std::set<std::string> printed;  // scene name and warning: lab loads scenes repeatedly
+  const std::lock_guard<std::mutex> lock(mutex);
+  for (const std::string& w : scene.warnings)
+    if (printed.insert(scene.name + '\n' + w).second)
+      fmt::print(stderr, "{}: warning: {}\n", program, w);
+}
+
+namespace {
+
+// Optimal string alignment distance: edits, with a swap of neighbours as one.
+size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+  for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (size_t i = 1; i <= a.size(); ++i)
+    for (size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1,
+                          d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+
+// The option of `cmd` closest to `typed`, or "" when none is close: at most a third of the
+// name's letters wrong, and never all of them.
+std::string closest_option(const CLI::App& cmd, const std::string& typed) {
+  const size_t letters = typed.size() - std::min(typed.find_first_not_of('-'), typed.size());
+  std::string best;
+  size_t best_distance = std::numeric_limits<size_t>::max();
+  for (const CLI::Option* opt : cmd.get_options()) {
+    std::vector<std::string> names;
+    for (const std::string& l : opt->get_lnames()) names.push_back("--" + l);
+    for (const std::string& s : opt->get_snames()) names.push_back("-" + s);
+    for (const std::string& n : names) {
+      const size_t d = edit_distance(typed, n);
+      if (d < best_distance) {
+        best_distance = d;
+        best = n;
+      }
+    }
+  }
+  const bool close = best_distance <= std::max<size_t>(1, letters / 3) && best_distance < letters;
+  return close ? best : "";
+}
+
+bool is_option(const std::string& arg) {
+  return arg.size() > 1 && arg[0] == '-' && !std::isdigit(static_cast<unsigned char>(arg[1])) &&
+         arg[1] != '.';
+}
+
+}  // namespace
+
+std::string parse_error_line(const CLI::App& app, const CLI::ParseError& e) {
+  const CLI::App* cmd = &app;
+  std::string program = app.get_name();
+  while (!cmd->get_subcommands().empty()) {
+    cmd = cmd->get_subcommands().front();
+    program += " " + cmd->get_name();
+  }
+  // An unknown option first: it may be a misspelt required one.
+  const std::vector<std::string> extras = app.remaining(true);
+  const auto option = std::find_if(extras.begin(), extras.end(), is_option);
+  const bool extra = e.get_exit_code() == static_cast<int>(CLI::ExitCodes::ExtrasError);
+  if (option == extras.end() && extra && !extras.empty())
+    return fmt::format("{}: error: unexpected argument '{}' (see '{} --help')", program,
+                       extras.front(), program);
+  if (option == extras.end())
+    return fmt::format("{}: error: {} (see '{} --help')", app.get_name(), e.what(), program);
+  const std::string typed = option->substr(0, option->find('='));
+  const std::string near = closest_option(*cmd, typed);
+  if (near.empty())
+    return fmt::format("{}: error: unknown option '{}' (see '{} --help')", program, typed, program);
+  return fmt::format("{}: error: unknown option '{}'; did you mean '{}'?", program, typed, near);
 }
 
 }  // namespace zb::app

@@ -163,7 +163,7 @@ int sc_main(int argc, char** argv) {
     return run(o);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
-    std::fprintf(stderr, "zblend_systemc: error: %s (see 'zblend_systemc --help')\n", e.what());
+    std::fprintf(stderr, "%s\n", zb::app::parse_error_line(app, e).c_str());
     return 2;
   } catch (const UsageError& e) {
     std::fprintf(stderr, "zblend_systemc: error: %s\n", e.what());

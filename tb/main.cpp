@@ -3,20 +3,58 @@
 // every pass; --replay runs a trace file the same way.
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <fmt/core.h>
 
 #include "code_coverage.h"
+#include "commands.h"
 #include "suites.h"
 #include "io/trace.h"
 
 using namespace zb;
 using namespace zb::tb;
+using zb::app::UsageError;
 
 namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// What the command line asks beyond the suites' Config.
+struct Args {
+  std::vector<std::string> suites;
+  std::string replay, coverage_out;
+  int iterations = 0;
+  int64_t fragments = 0;
+  bool list = false;
+  bool quiet = false;
+};
+
+// Progress on stderr: a line as each suite starts, then one every kEvery with the share done.
+class Progress {
+ public:
+  explicit Progress(bool quiet) : quiet_(quiet) {}
+  void start(const Suite& s) {
+    name_ = s.name;
+    start_ = last_ = Clock::now();
+    if (!quiet_) std::fprintf(stderr, "zblend_tb: suite %s: started\n", name_);
+  }
+  void update(double done) {
+    const auto now = Clock::now();
+    if (quiet_ || now - last_ < kEvery) return;
+    last_ = now;
+    std::fprintf(stderr, "zblend_tb: suite %s: %.0f%% done after %.0f s\n", name_, 100 * done,
+                 std::chrono::duration<double>(now - start_).count());
+  }
+
+ private:
+  static constexpr std::chrono::seconds kEvery{5};
+  bool quiet_;
+  const char* name_ = "";
+  Clock::time_point start_, last_;
+};
 
 // Replays a trace file (zblend trace) through the cosim. Returns the exit code.
 int run_replay(const Config& c, const std::string& path) {
@@ -43,10 +81,14 @@ int run_replay(const Config& c, const std::string& path) {
 }
 
 // Runs the suites, one summary line each. Returns the exit code.
-int run_suites(const Config& c, const std::vector<const Suite*>& chosen) {
+int run_suites(const Config& config, const std::vector<const Suite*>& chosen, bool quiet) {
   int passed = 0, failed = 0;
+  Progress progress(quiet);
+  Config c = config;
+  c.progress = [&progress](double done) { progress.update(done); };
   for (const Suite* s : chosen) {
     const auto t0 = std::chrono::steady_clock::now();
+    progress.start(*s);
     Tally t;
     try {
       t = s->run(c);
@@ -73,10 +115,8 @@ int run_suites(const Config& c, const std::vector<const Suite*>& chosen) {
   return failed ? 1 : 0;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  // Verilator-style plusargs: +trace dumps the whole run to out/tb_trace.fst.
+// Verilator-style plusargs: +trace dumps the whole run to out/tb_trace.fst.
+std::vector<std::string> expand_plusargs(int argc, char** argv) {
   std::vector<std::string> args;
   for (int i = 0; i < argc; ++i) {
     const std::string a = argv[i];
@@ -87,85 +127,111 @@ int main(int argc, char** argv) {
       args.push_back(a);
     }
   }
-  std::vector<const char*> cargv;
-  for (const std::string& a : args) cargv.push_back(a.c_str());
+  return args;
+}
 
-  Config c;
-  std::vector<std::string> suite_names;
-  std::string replay, coverage_out;
-  bool list = false;
-  CLI::App app{"zblend_tb: the RTL (Verilated zb_rop) against the golden model, bit for bit"};
-  app.add_option("--suite", suite_names,
+void add_options(CLI::App& app, Config& c, Args& a) {
+  app.add_option("--suite", a.suites,
                  "suite(s) to run, repeatable or comma-separated (default all)")
       ->delimiter(',');
-  app.add_flag("--list-suites", list, "list the suites and exit");
+  app.add_flag("--list-suites", a.list, "list the suites and exit");
   app.add_option("--seed", c.seed, "base seed; iteration i uses seed+i (printed on failure)");
-  app.add_option("--iterations", c.iterations, "iterations per suite (default: the suite's)")
-      ->check(CLI::NonNegativeNumber);
-  app.add_option("--fragments", c.fragments,
-                 "scale: about this many fragments (random, hazard; blend: a sample)");
+  app.add_option("--iterations", a.iterations,
+                 "iterations per suite, 1 or more (default: the suite's)");
+  app.add_option("--fragments", a.fragments,
+                 "scale, 1 or more: about this many fragments (random, hazard; blend: a sample)");
   app.add_option("--backpressure", c.backpressure, "probability of stall and of a valid gap")
       ->check(CLI::Range(0.0, 0.95));
   app.add_option("--trace", c.trace, "FST of the whole run (also +trace)");
-  app.add_option("--mismatch-fst", c.mismatch_fst, "FST written around the first mismatch");
-  app.add_option("--replay", replay, "replay a trace file (zblend trace) through the cosim");
+  app.add_option("--mismatch-fst", c.mismatch_fst, "FST written around the first mismatch")
+      ->capture_default_str();
+  app.add_option("--replay", a.replay, "replay a trace file (zblend trace) through the cosim");
   app.add_flag("-v,--verbose", c.verbose, "one line per iteration");
+  app.add_flag("-q,--quiet", a.quiet, "no progress on stderr");
 #if defined(VM_COVERAGE) && VM_COVERAGE  // only the coverage build (ZBLEND_RTL_COVERAGE)
-  app.add_option("--coverage-out", coverage_out,
+  app.add_option("--coverage-out", a.coverage_out,
                  "write the RTL line and toggle coverage of the run here at exit "
-                 "(verilator_coverage format)");
+                 "(verilator_coverage format, .dat)");
 #endif
-  try {
-    app.parse(int(cargv.size()), cargv.data());
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "zblend_tb: error: %s (see --help)\n", e.what());
-    return 2;
-  }
+}
 
-  if (list) {
-    for (const Suite& s : suites()) std::printf("%-8s %s\n", s.name, s.about);
-    return 0;
-  }
+// The checks before any work: counts, then the output paths (docs/cli.md, "Output paths").
+void check_args(const CLI::App& app, Config& c, const Args& a) {
+  for (const auto& [name, value] : {std::pair<const char*, int64_t>{"--iterations", a.iterations},
+                                    {"--fragments", a.fragments}})
+    if (app.count(name) && value < 1)
+      throw UsageError(fmt::format("{}: {} is out of range (1 or more; leave it out for the "
+                                   "suite's default)", name, value));
+  c.iterations = a.iterations;
+  c.fragments = static_cast<uint64_t>(a.fragments);
+  // The mismatch waveform's directory is made only if a mismatch writes it.
+  app::check_outputs({{"--mismatch-fst", c.mismatch_fst, ".fst"}});
+  app::create_output_dirs(
+      {{"--trace", c.trace, ".fst"}, {"--coverage-out", a.coverage_out, ".dat"}});
+}
 
+std::vector<const Suite*> chosen_suites(const Args& a) {
+  std::vector<const Suite*> chosen;
+  if (a.suites.empty())
+    for (const Suite& s : suites()) chosen.push_back(&s);
+  for (const std::string& n : a.suites) {
+    const Suite* found = find_suite(n);
+    if (!found) throw UsageError(fmt::format("unknown suite '{}' (see --list-suites)", n));
+    chosen.push_back(found);
+  }
+  return chosen;
+}
+
+int run(const Config& config, const Args& a, const std::vector<const Suite*>& chosen) {
+  Config c = config;
   CoverageTotals coverage;
-  if (!coverage_out.empty()) {
-    const std::filesystem::path p(coverage_out);
-    std::error_code ec;
-    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path(), ec);
-    coverage = CoverageTotals(coverage_out + ".part");
+  if (!a.coverage_out.empty()) {
+    coverage = CoverageTotals(a.coverage_out + ".part");
     c.coverage = &coverage;
   }
-  int rc;
-  if (!replay.empty()) {
-    rc = run_replay(c, replay);
-  } else {
-    std::vector<const Suite*> chosen;
-    if (suite_names.empty()) {
-      for (const Suite& s : suites()) chosen.push_back(&s);
-    } else {
-      for (const std::string& n : suite_names) {
-        const Suite* found = find_suite(n);
-        if (!found) {
-          std::fprintf(stderr, "zblend_tb: unknown suite '%s' (see --list-suites)\n",
-                       n.c_str());
-          return 2;
-        }
-        chosen.push_back(found);
-      }
-    }
-    rc = run_suites(c, chosen);
-  }
-  if (!coverage_out.empty()) {
+  const int rc = a.replay.empty() ? run_suites(c, chosen, a.quiet) : run_replay(c, a.replay);
+  if (!a.coverage_out.empty()) {
     try {
-      coverage.write(coverage_out);
+      coverage.write(a.coverage_out);
       std::printf("coverage: %zu points from %llu models: %s\n", coverage.points(),
-                  (unsigned long long)coverage.models(), coverage_out.c_str());
+                  (unsigned long long)coverage.models(), a.coverage_out.c_str());
     } catch (const std::exception& e) {
       std::fprintf(stderr, "zblend_tb: %s\n", e.what());
       return 2;
     }
   }
   return rc;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args = expand_plusargs(argc, argv);
+  std::vector<const char*> cargv;
+  for (const std::string& a : args) cargv.push_back(a.c_str());
+
+  Config c;
+  Args a;
+  CLI::App app{"zblend_tb: the RTL (Verilated zb_rop) against the golden model, bit for bit"};
+  app.name("zblend_tb");
+  add_options(app, c, a);
+  try {
+    app.parse(int(cargv.size()), cargv.data());
+    if (a.list) {
+      for (const Suite& s : suites()) std::printf("%-8s %s\n", s.name, s.about);
+      return 0;
+    }
+    std::vector<const Suite*> chosen;
+    if (a.replay.empty()) chosen = chosen_suites(a);
+    check_args(app, c, a);
+    return run(c, a, chosen);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "%s\n", app::parse_error_line(app, e).c_str());
+    return 2;
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "zblend_tb: error: %s\n", e.what());
+    return 2;
+  }
 }

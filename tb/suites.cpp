@@ -25,6 +25,21 @@ CosimOptions cosim_options(const Config& c, uint64_t seed) {
 
 namespace {
 
+// The share of a suite's work done, reported to c.progress: `total` units, added as done.
+class Progress {
+ public:
+  Progress(const Config& c, uint64_t total) : c_(c), total_(std::max<uint64_t>(1, total)) {}
+  void add(uint64_t n = 1) {
+    done_ += n;
+    if (c_.progress) c_.progress(std::min(1.0, double(done_) / double(total_)));
+  }
+
+ private:
+  const Config& c_;
+  uint64_t total_;
+  uint64_t done_ = 0;
+};
+
 // Runs one iteration's body on a fresh Cosim; folds its counts into `t`. Returns false on a
 // mismatch (the report is printed) so the suite stops.
 bool run_iteration(const char* suite, const Config& c, uint64_t seed, Tally& t,
@@ -72,6 +87,7 @@ Tally suite_scenes(const Config& c) {
   std::vector<std::pair<std::string, RasterizedScene>> scenes;
   for (const SceneInfo& info : builtin_scenes())
     scenes.emplace_back(info.name, rasterize_scene(*builtin_scene(info.name), Viewport{96, 72, 24}));
+  Progress progress(c, uint64_t(iters) * scenes.size() * pass_plans().size());
   for (int it = 0; it < iters; ++it) {
     const uint64_t seed = c.seed + it;
     for (const auto& [sname, rs] : scenes)
@@ -86,6 +102,7 @@ Tally suite_scenes(const Config& c) {
           for (const FrameOp& op : plan.final_ops) cs.frame_op(resolve_op(op, rs.background));
         });
         if (!ok) return t;
+        progress.add();
       }
   }
   return t;
@@ -168,6 +185,7 @@ Tally suite_random(const Config& c) {
   Tally t;
   const uint64_t total = c.fragments ? c.fragments : 300000;
   const int iters = c.iterations ? c.iterations : std::max<int>(1, int(total / 6000));
+  Progress progress(c, iters);
   for (int it = 0; it < iters; ++it) {
     const uint64_t seed = c.seed + it;
     const bool ok = run_iteration("random", c, seed, t, [&](Cosim& cs) {
@@ -200,6 +218,7 @@ Tally suite_random(const Config& c) {
       }
     });
     if (!ok) break;
+    progress.add();
   }
   return t;
 }
@@ -234,6 +253,7 @@ Tally suite_hazard(const Config& c) {
   const size_t per_iter = std::max<uint64_t>(1, total / iters);
   uint64_t frags = 0, cycles = 0;
   double rtl_sec = 0;
+  Progress progress(c, iters);
   for (int it = 0; it < iters; ++it) {
     const uint64_t seed = c.seed + it;
     const bool ok = run_iteration("hazard", c, seed, t, [&](Cosim& cs) {
@@ -253,6 +273,7 @@ Tally suite_hazard(const Config& c) {
       }
     });
     if (!ok) break;
+    progress.add();
   }
   char buf[256];
   std::snprintf(buf, sizeof buf,
@@ -288,8 +309,10 @@ constexpr uint64_t kBlendIndices = 256ull * 256 * 86;  // (a, s, d): d fastest, 
 // and over every a.
 constexpr uint64_t kSampleStride = 2654435761ull % kBlendIndices;
 static_assert(kSampleStride % 2 == 1 && kSampleStride % 43 != 0, "stride must be coprime");
+constexpr uint64_t kAlphaTotal = 256u * 256;  // (a, d) on A: d fastest
+constexpr uint64_t kCoverageTotal = uint64_t(kRtlCoverageSamples + 1) * 256 * 86;  // d, s, k
 
-void blend_rgb(Cosim& cs, BlendMode mode, const char* tag, uint64_t count) {
+void blend_rgb(Cosim& cs, BlendMode mode, const char* tag, uint64_t count, Progress& progress) {
   RopState st;
   st.depth_test = false;
   st.blend = mode;
@@ -300,6 +323,7 @@ void blend_rgb(Cosim& cs, BlendMode mode, const char* tag, uint64_t count) {
   uint64_t k = 0;
   int pass = 0;
   while (k < count) {
+    const uint64_t first = k;
     cs.begin_frame(kBlendW, kBlendH, 24, Rgba8{0, 0, 0, 0});
     f.clear();
     // Groups of 8 pixels: 8 destinations, then the 8 blends onto them, so the blends follow
@@ -319,20 +343,21 @@ void blend_rgb(Cosim& cs, BlendMode mode, const char* tag, uint64_t count) {
       k += uint64_t(n);
     }
     draw_pass(cs, std::string("blend-") + tag + "-rgb-" + std::to_string(++pass), st, f);
+    progress.add(k - first);
   }
 }
 
 // A: all 2^16 (a, d) of `mode` on the alpha channel, where the source is the alpha itself. A
 // replace pass loads the destinations (every channel, A included), then the blend pass. The
 // R, G and B channels see further (s, a, d) triples on the way.
-void blend_alpha_channel(Cosim& cs, BlendMode mode, const char* tag) {
+void blend_alpha_channel(Cosim& cs, BlendMode mode, const char* tag, Progress& progress) {
   RopState load;
   load.depth_test = false;
   load.blend = BlendMode::kReplace;
   RopState st = load;
   st.blend = mode;
   std::vector<Fragment> dst, src;
-  constexpr uint32_t kTotal = 256u * 256;  // (a, d): d fastest
+  constexpr uint32_t kTotal = kAlphaTotal;
   for (uint32_t first = 0; first < kTotal; first += kBlendPix) {
     cs.begin_frame(kBlendW, kBlendH, 24, Rgba8{0, 0, 0, 0});
     dst.clear();
@@ -347,6 +372,7 @@ void blend_alpha_channel(Cosim& cs, BlendMode mode, const char* tag) {
     const std::string n = std::to_string(first / kBlendPix + 1);
     draw_pass(cs, std::string("blend-") + tag + "-a-load-" + n, load, dst);
     draw_pass(cs, std::string("blend-") + tag + "-a-" + n, st, src);
+    progress.add(src.size());
   }
 }
 
@@ -355,7 +381,7 @@ void blend_alpha_channel(Cosim& cs, BlendMode mode, const char* tag) {
 // pixel, so the weight is k: "(w*s + (N - w)*d + N/2) >> log2 N" with w = k (the farther and
 // full cases use the same unit with w = N - cs and N, values k covers). As blend_rgb, three
 // triples per pixel: d on R, d + 86 on G, d + 172 on B (clamped), all four channels blended.
-void blend_coverage_rgb(Cosim& cs) {
+void blend_coverage_rgb(Cosim& cs, Progress& progress) {
   RopState load;
   load.depth_test = false;
   load.blend = BlendMode::kReplace;
@@ -363,7 +389,7 @@ void blend_coverage_rgb(Cosim& cs) {
   st.depth_test = true;
   st.depth_write = true;
   st.blend = BlendMode::kCoverage;
-  constexpr uint64_t kTotal = uint64_t(kRtlCoverageSamples + 1) * 256 * 86;  // d fastest, s, k
+  constexpr uint64_t kTotal = kCoverageTotal;
   std::vector<Fragment> dst, src;
   int pass = 0;
   for (uint64_t first = 0; first < kTotal; first += kBlendPix) {
@@ -384,6 +410,7 @@ void blend_coverage_rgb(Cosim& cs) {
     const std::string n = std::to_string(++pass);
     draw_pass(cs, "blend-coverage-load-" + n, load, dst);
     draw_pass(cs, "blend-coverage-" + n, st, src);
+    progress.add(src.size());
   }
 }
 
@@ -396,13 +423,15 @@ Tally suite_blend(const Config& c) {
   Tally t;
   const int iters = c.iterations ? c.iterations : 1;
   const uint64_t count = c.fragments ? std::max<uint64_t>(1, c.fragments / 4) : kBlendIndices;
+  const uint64_t per_iteration = 2 * std::min(count, kBlendIndices) + 2 * kAlphaTotal + kCoverageTotal;
+  Progress progress(c, iters * per_iteration);
   for (int it = 0; it < iters; ++it) {
     const bool ok = run_iteration("blend", c, c.seed + it, t, [&](Cosim& cs) {
-      blend_rgb(cs, BlendMode::kAlpha, "alpha", count);
-      blend_alpha_channel(cs, BlendMode::kAlpha, "alpha");
-      blend_rgb(cs, BlendMode::kAdditive, "additive", count);
-      blend_alpha_channel(cs, BlendMode::kAdditive, "additive");
-      blend_coverage_rgb(cs);
+      blend_rgb(cs, BlendMode::kAlpha, "alpha", count, progress);
+      blend_alpha_channel(cs, BlendMode::kAlpha, "alpha", progress);
+      blend_rgb(cs, BlendMode::kAdditive, "additive", count, progress);
+      blend_alpha_channel(cs, BlendMode::kAdditive, "additive", progress);
+      blend_coverage_rgb(cs, progress);
     });
     if (!ok) break;
   }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@ struct Config {
   std::string mismatch_fst = "out/mismatch.fst";
   bool verbose = false;
   CoverageTotals* coverage = nullptr;  // coverage builds: every model's counts are added here
+  std::function<void(double)> progress;  // when set: the share of the suite done, 0 to 1
 };
 
 // What a suite did: its counts, whether it failed, and a line of its own.

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 #include <unordered_map>
 
@@ -124,6 +125,7 @@ class GltfReader {
         if (!child[i]) roots.push_back(static_cast<int>(i));
     }
     for (int r : roots) visit(r);
+    warn_textures();
     if (default_used_) scene_.materials.push_back(Material{"default", {255, 255, 255, 255}});
     scene_.description = fmt::format("glTF file, {} nodes, {} meshes, {} materials", model_.nodes.size(),
                                       model_.meshes.size(), model_.materials.size());
@@ -156,6 +158,17 @@ class GltfReader {
     }
     scene_.materials.push_back(mat);
     dropped_.push_back(drop);
+  }
+
+  // Textures are not sampled: each drawn material with a base colour texture is named.
+  void warn_textures() {
+    std::set<uint32_t> used;
+    for (const Object& obj : scene_.objects) used.insert(obj.material);
+    for (uint32_t m : used)
+      if (m < model_.materials.size() &&
+          model_.materials[m].pbrMetallicRoughness.baseColorTexture.index >= 0)
+        scene_.warnings.push_back(fmt::format("material '{}': texture ignored, its base colour "
+                                              "is used", printable(scene_.materials[m].name)));
   }
 
   glm::mat4 local_matrix(const tinygltf::Node& n, const std::string& place) const {

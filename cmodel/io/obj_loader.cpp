@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
 #include <unordered_map>
 
@@ -38,15 +39,23 @@ struct CheckedText {
   }
 };
 
-// The statements zblend reads (newmtl, Kd, d, Tr); returns them alone.
-std::string check_mtl(const std::string& path, const std::string& text) {
+// The statements zblend reads (newmtl, Kd, d, Tr); returns them alone. The materials with a
+// diffuse texture (map_Kd, not read) go to `textured`, named as tinyobjloader names them.
+std::string check_mtl(const std::string& path, const std::string& text,
+                      std::set<std::string>& textured) {
   bool have_material = false;
+  std::string material;
   CheckedText kept;
   for_each_line(text, [&](int line, const std::vector<std::string>& tok) {
     const std::string& key = tok[0];
     if (key == "newmtl") {
       if (tok.size() < 2) fail(path, fmt::format("line {}", line), "'newmtl' without a name");
       have_material = true;
+      material = tok[1];
+      for (size_t i = 2; i < tok.size(); ++i) material += " " + tok[i];
+    } else if (key == "map_Kd") {
+      if (have_material) textured.insert(material);
+      return;
     } else if (key == "Kd" || key == "d" || key == "Tr") {
       if (!have_material) fail(path, fmt::format("line {}", line), fmt::format("'{}' before any 'newmtl'", key));
       expect_numbers(path, line, tok, 1, key == "Kd" ? 3 : 1, true);
@@ -63,6 +72,7 @@ std::string check_mtl(const std::string& path, const std::string& text) {
 struct ObjCheck {
   std::string text;
   std::map<std::string, std::string> mtl_texts;
+  std::set<std::string> textured;  // materials with a texture
   std::vector<int> vertex_lines;
 };
 
@@ -110,7 +120,7 @@ ObjCheck check_obj(const std::string& path, const std::string& text, const Scene
         const FileRead r = read(mtl, mtl_text);
         if (r == FileRead::kMissing) fail(path, place, fmt::format("material library '{}' not found", mtl));
         if (r != FileRead::kOk) fail(mtl, "mtllib", "cannot read the file");
-        out.mtl_texts.emplace(tok[i], check_mtl(mtl, mtl_text));
+        out.mtl_texts.emplace(tok[i], check_mtl(mtl, mtl_text, out.textured));
       }
     } else if (key == "usemtl") {
       if (tok.size() < 2) fail(path, place, "'usemtl' without a name");
@@ -247,6 +257,12 @@ Scene load_obj(const std::string& path, const std::string& text, const SceneFile
     }
   }
   if (used_default) scene.materials.push_back(Material{"default", {255, 255, 255, 255}});
+  std::set<uint32_t> used;
+  for (const Object& obj : scene.objects) used.insert(obj.material);
+  for (uint32_t m : used)
+    if (m < mats.size() && checked.textured.count(mats[m].name))
+      scene.warnings.push_back(fmt::format(
+          "material '{}': texture ignored, its base colour is used", printable(mats[m].name)));
   scene.description = fmt::format("OBJ file, {} shapes, {} materials", shapes.size(), mats.size());
   return scene;
 }

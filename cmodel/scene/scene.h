@@ -50,6 +50,7 @@ struct Scene {
   std::vector<Object> objects;
   Camera camera;
   Rgba8 background{255, 255, 255, 255};
+  std::vector<std::string> warnings;    // what the loader read but could not use, one line each
 
   size_t triangle_count() const;
 };

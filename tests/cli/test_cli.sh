@@ -2,7 +2,8 @@
 # The zblend command as a user meets it: help, listings, a render, and bad input that must
 # give one line on stderr, exit code 2 and no output file.
 set -u
-zblend=${1:?usage: test_cli.sh PATH/TO/zblend}
+zblend=${1:?usage: test_cli.sh PATH/TO/zblend PATH/TO/zblend_tb}
+tb=${2:?usage: test_cli.sh PATH/TO/zblend PATH/TO/zblend_tb}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 . "$(dirname "$0")/cli_lib.sh"
@@ -92,7 +93,6 @@ expect_zblend_error "depth bits" "--depth-bits" render --depth-bits 40 --out "$t
 expect_zblend_error "not a number" "width" render --width abc --out "$tmp/out/a.png"
 expect_zblend_error "no output" "--out" render --scene cad
 expect_zblend_error "not png" "must end in .png" render --out "$tmp/out/a.jpg"
-expect_zblend_error "missing dir" "does not exist" render --out "$tmp/out/no/such/a.png"
 expect_zblend_error "several methods one file" "--out-dir" render --method opaque,three-pass --out "$tmp/out/a.png"
 expect_zblend_error "unknown subcommand" "" frobnicate
 expect_zblend_error "unknown backend" "unknown backend 'gpu'.*golden, rtl, both" render --backend gpu --out "$tmp/out/a.png"
@@ -132,6 +132,119 @@ if [[ $(id -u) -ne 0 ]]; then
 else
   expect_zblend_error "unwritable" "cannot write" render -q --width 8 --height 8 --out /proc/zblend-test.png
 fi
+
+# ---- output paths (docs/cli.md): missing directories made, files on the way refused ----------
+: >"$tmp/afile"
+mkdir -p "$tmp/dir.png" "$tmp/dir.fst"
+small=(-q --width 8 --height 6)
+if "$zblend" render "${small[@]}" --out "$tmp/new1/a/x.png" && [[ -s "$tmp/new1/a/x.png" ]]; then ok; else bad "--out: parent directories made"; fi
+if "$zblend" render "${small[@]}" --backend rtl --out "$tmp/new2/x.png" --waves "$tmp/new2/w/w.fst" &&
+   [[ -s "$tmp/new2/w/w.fst" ]]; then ok; else bad "--waves: parent directories made"; fi
+if "$zblend" render "${small[@]}" --out-dir "$tmp/new3/b/c" && [[ -s "$tmp/new3/b/c/summary.csv" ]]; then ok; else bad "--out-dir: made"; fi
+if "$zblend" plan --scene quads --max-error 255 -W 16 -H 12 --json "$tmp/new4/p.json" >/dev/null 2>&1 &&
+   [[ -s "$tmp/new4/p.json" ]]; then ok; else bad "--json: parent directories made"; fi
+expect_zblend_error "out-dir is a file" "^zblend: error: --out-dir: /etc/passwd is a file, not a directory$" render --out-dir /etc/passwd
+expect_zblend_error "out-dir under a file" "--out-dir: $tmp/afile is a file, not a directory" render --out-dir "$tmp/afile/sub"
+expect_zblend_error "out under a file" "--out: $tmp/afile is a file, not a directory" render --out "$tmp/afile/x.png"
+expect_zblend_error "out is a directory" "--out: $tmp/dir.png is a directory, not a .png file" render --out "$tmp/dir.png"
+expect_zblend_error "stats under a file" "--stats: $tmp/afile is a file" render --out "$tmp/out/a.png" --stats "$tmp/afile/s.json"
+expect_zblend_error "stats extension" "--stats: .* must end in .json" render --out "$tmp/out/a.png" --stats "$tmp/out/s.txt"
+expect_zblend_error "waves under a file" "--waves: $tmp/afile is a file" render --backend rtl --out "$tmp/out/a.png" --waves "$tmp/afile/w.fst"
+expect_zblend_error "waves extension" "--waves: .* must end in .fst" render --backend rtl --out "$tmp/out/a.png" --waves "$tmp/out/w.vcd"
+expect_zblend_error "plan json under a file" "--json: $tmp/afile is a file" plan --scene quads -e 5 --json "$tmp/afile/p.json"
+expect_zblend_error "trace under a file" "--out: $tmp/afile is a file" trace --out "$tmp/afile/t.zbt"
+expect_zblend_error "lab out-dir is a file" "--out-dir: $tmp/afile is a file" lab --out-dir "$tmp/afile"
+expect_zblend_error "sweep out-dir under a file" "--out-dir: $tmp/afile is a file" sweep depth --out-dir "$tmp/afile/s"
+# The testbench: the same rule, checked before any suite runs.
+tiny=(--suite random --iterations 1 --fragments 6000)
+expect_error "tb trace extension" "^zblend_tb: error: --trace: '.*x.vcd' must end in .fst$" "$tb" "${tiny[@]}" --trace "$tmp/out/x.vcd"
+expect_error "tb trace under a file" "--trace: $tmp/afile is a file, not a directory" "$tb" "${tiny[@]}" --trace "$tmp/afile/x.fst"
+expect_error "tb trace is a directory" "--trace: $tmp/dir.fst is a directory" "$tb" "${tiny[@]}" --trace "$tmp/dir.fst"
+expect_error "tb mismatch-fst under a file" "--mismatch-fst: $tmp/afile is a file" "$tb" "${tiny[@]}" --mismatch-fst "$tmp/afile/dir/x.fst"
+if "$tb" -q "${tiny[@]}" --trace "$tmp/new5/sub/x.fst" >/dev/null && [[ -s "$tmp/new5/sub/x.fst" ]]; then ok; else bad "tb --trace: parent directories made"; fi
+
+# ---- options that would do nothing are refused ----------------------------------------------
+expect_zblend_error "backpressure on golden" "--backpressure: needs --backend rtl or both" render --backpressure 0.3 --out "$tmp/out/a.png"
+expect_zblend_error "seed on golden" "--seed: needs --backend rtl or both" render --seed 5 --out "$tmp/out/a.png"
+expect_zblend_error "negative seed" "--seed: -1 is out of range" render --backend rtl --seed -1 --out "$tmp/out/a.png"
+expect_zblend_error "threads above the maximum" "--threads: 1000 is out of range \(1 to 256\)" render --threads 1000 --out "$tmp/out/a.png"
+expect_zblend_error "threads on the RTL" "--threads: needs --backend golden" render --backend both --threads 2 --out "$tmp/out/a.png"
+expect_error "tb iterations 0" "--iterations: 0 is out of range" "$tb" --suite random --iterations 0
+expect_error "tb fragments 0" "--fragments: 0 is out of range" "$tb" --suite random --iterations 1 --fragments 0
+
+# ---- plan: --method and --scene ------------------------------------------------------------
+expect_zblend_error "plan method and scene" "^zblend: error: --method, --scene: give one of them" plan --method three-pass --scene cad
+
+# ---- unknown options name the closest one, in every subcommand and zblend_tb ------------------
+expect_zblend_error "render typo" "^zblend render: error: unknown option '--scnee'; did you mean '--scene'\?$" render --scnee cad
+expect_zblend_error "trace typo" "^zblend trace: error: unknown option '--metod'; did you mean '--method'\?$" trace --metod opaque
+expect_zblend_error "plan typo" "^zblend plan: error: unknown option '--max-eror'; did you mean '--max-error'\?$" plan --max-eror 3
+expect_zblend_error "lab typo" "^zblend lab: error: unknown option '--scens'; did you mean '--scenes'\?$" lab --scens quads
+expect_zblend_error "sweep typo" "^zblend sweep: error: unknown option '--step'; did you mean '--steps'\?$" sweep depth --step 3
+expect_zblend_error "methods typo" "^zblend methods: error: unknown option '--hepl'; did you mean '--help'\?$" methods --hepl
+expect_zblend_error "scenes typo" "^zblend scenes: error: unknown option '--hlep'; did you mean '--help'\?$" scenes --hlep
+expect_zblend_error "typo with =" "unknown option '--out_dir'; did you mean '--out-dir'\?$" render --out_dir="$tmp/out/d"
+expect_zblend_error "nothing close" "^zblend render: error: unknown option '--frobnicate' \(see 'zblend render --help'\)$" render --frobnicate
+expect_error "tb typo" "^zblend_tb: error: unknown option '--iteratoins'; did you mean '--iterations'\?$" "$tb" --iteratoins 3
+
+# ---- lab --help: the RTL flag's default shown once, plainly -------------------------------------
+"$zblend" lab --help >"$tmp/help" 2>&1
+if ! grep -q '{false}' "$tmp/help" && [[ $(grep -c 'the default' "$tmp/help") -eq 1 ]] &&
+   grep -qE '^ +--no-rtl +Golden model only' "$tmp/help"; then ok; else bad "lab --help: $(grep rtl "$tmp/help")"; fi
+expect_zblend_error "lab rtl and no-rtl" "--rtl, --no-rtl: give one of them" lab --rtl --no-rtl --out-dir "$tmp/out/lab"
+
+# ---- warnings: nothing drawn, textures ignored; --background; silent under -q --------------------
+models=/usr/share/assimp/models
+"$zblend" render --scene "$models/OBJ/concave_polygon.obj" -W 64 -H 48 --out "$tmp/cp.png" 2>"$tmp/err" >/dev/null
+rc=$?
+[[ $rc -eq 0 ]] && grep -qx "zblend render: warning: nothing drawn: 0 fragments reach the frame; try --camera" "$tmp/err" &&
+  ok || bad "nothing drawn: exit $rc, $(cat "$tmp/err")"
+"$zblend" render -q --scene "$models/OBJ/concave_polygon.obj" -W 64 -H 48 --out "$tmp/cp.png" 2>"$tmp/err"
+[[ $? -eq 0 && ! -s "$tmp/err" ]] && ok || bad "nothing drawn under -q: $(cat "$tmp/err")"
+"$zblend" render --scene "$models/OBJ/spider.obj" -W 32 -H 24 --out "$tmp/spider.png" 2>"$tmp/err" >/dev/null
+[[ $(grep -cx "zblend render: warning: material 'Skin': texture ignored, its base colour is used" "$tmp/err") -eq 1 &&
+   $(grep -c "warning: material" "$tmp/err") -eq $(grep "warning: material" "$tmp/err" | sort -u | wc -l) ]] &&
+  ok || bad "OBJ texture warnings: $(cat "$tmp/err")"
+[[ $(head -1 "$tmp/err") == *"spider.obj: 1368 triangles in the scene, "* ]] && ok || bad "warnings after the first line: $(head -1 "$tmp/err")"
+boxgltf=$models/glTF2/BoxTextured-glTF/BoxTextured.gltf
+if [[ -f $boxgltf ]]; then
+  "$zblend" trace --scene "$boxgltf" -W 16 -H 12 --out "$tmp/box.zbt" 2>"$tmp/err" >/dev/null
+  grep -qx "zblend trace: warning: material 'Texture': texture ignored, its base colour is used" "$tmp/err" &&
+    ok || bad "glTF texture warning: $(cat "$tmp/err")"
+  "$zblend" render -q --scene "$boxgltf" -W 16 -H 12 --out "$tmp/box.png" 2>"$tmp/err"
+  [[ ! -s "$tmp/err" ]] && ok || bad "texture warning under -q: $(cat "$tmp/err")"
+fi
+# box.obj: the white default material on the white background; --background shows it.
+box=(--scene "$models/OBJ/box.obj" -W 32 -H 24)
+if "$zblend" render -q "${box[@]}" --out "$tmp/box-white.png" &&
+   "$zblend" render -q "${box[@]}" --background 0,0,0 --out "$tmp/box-black.png" &&
+   "$zblend" render -q "${box[@]}" --background 0,0,0,255 --out "$tmp/box-black4.png"; then
+  ! cmp -s "$tmp/box-white.png" "$tmp/box-black.png" && cmp -s "$tmp/box-black.png" "$tmp/box-black4.png" &&
+    ok || bad "--background: images"
+else
+  bad "render --background"
+fi
+if "$zblend" trace "${box[@]}" --background 10,20,30 --out "$tmp/bg.zbt" >/dev/null &&
+   "$zblend" trace "${box[@]}" --out "$tmp/nobg.zbt" >/dev/null && ! cmp -s "$tmp/bg.zbt" "$tmp/nobg.zbt"; then ok; else bad "trace --background"; fi
+for v in 1,2 256,0,0 0,0,0,0,0 a,b,c 1,,2 -1,0,0; do
+  expect_zblend_error "background $v" "^zblend: error: --background: '$v' is not R,G,B or R,G,B,A, each 0 to 255$" render --background "$v" --out "$tmp/out/a.png"
+done
+
+# ---- render's first line: the scene's triangles and those after clipping ----------------------
+if "$zblend" render --scene "$regr01" --width 40 --height 30 --out "$tmp/r.png" --stats "$tmp/r.json" 2>"$tmp/err" >/dev/null; then
+  head -1 "$tmp/err" | grep -qE "regr01.obj: 2710 triangles in the scene, [0-9]+ after clipping, [0-9]+ fragments at 40x30 " &&
+    ok || bad "render header: $(head -1 "$tmp/err")"
+  grep -q '"triangles": 2710,' "$tmp/r.json" && grep -qE '"triangles_drawn": [0-9]+,' "$tmp/r.json" &&
+    ok || bad "stats triangles: $(grep triangles "$tmp/r.json")"
+else
+  bad "render regr01 --stats"
+fi
+
+# ---- zblend_tb: progress on stderr, none under -q ---------------------------------------------
+"$tb" "${tiny[@]}" >/dev/null 2>"$tmp/err"
+grep -qx "zblend_tb: suite random: started" "$tmp/err" && ok || bad "tb progress: $(cat "$tmp/err")"
+"$tb" -q "${tiny[@]}" >/dev/null 2>"$tmp/err"
+[[ $? -eq 0 && ! -s "$tmp/err" ]] && ok || bad "tb -q: $(cat "$tmp/err")"
 
 echo "$pass passed, $fail failed"
 [[ $fail -eq 0 ]]
