@@ -1,7 +1,10 @@
 # The RTL as the C++ side builds it: its sources, its widths (one set of -G parameters for every
 # Verilated model and for the C++ mirrors), Verilator's options, and zblend_verilate(), the one
 # place a model of zb_rop is Verilated (rtlmodel/ for the testbench, systemc/ with --sc).
+# The package first: its types are used by every module after it.
 file(GLOB ZBLEND_RTL CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/rtl/*.sv)
+list(REMOVE_ITEM ZBLEND_RTL ${PROJECT_SOURCE_DIR}/rtl/zb_pkg.sv)
+list(PREPEND ZBLEND_RTL ${PROJECT_SOURCE_DIR}/rtl/zb_pkg.sv)
 set(ZBLEND_RTL_WAIVERS ${PROJECT_SOURCE_DIR}/rtl/lint_waivers.vlt)
 
 # The widths (docs/sizing.md; `make plan-rtl` builds a tree with those `zblend plan` chooses).

@@ -19,13 +19,14 @@
 //         mask's alternative alt = mask ? coverage : d
 //   c+4   r = r_lo; colour = (mask && !coverage) ? r : alt  (no carry chain here: it
 //         drives the RAM's write data)
-module zb_blend #(
+module zb_blend
+#(
   parameter int unsigned COV_SAMPLES = 16,  // N: 1, 2, 4, 8 or 16
   localparam int unsigned CovW       = $clog2(COV_SAMPLES + 1),
   localparam int unsigned QW         = 8 + CovW  // w*s + N/2 < 2^(8 + log2 N + 1)
 ) (
   input  logic            clk_i,
-  input  logic [2:0]      mode_i,   // 0 replace, 1 alpha, 2 additive, 3 coverage, 4 under
+  input  zb_pkg::blend_mode_e mode_i,
   input  logic [3:0]      mask_i,   // write mask, bit c for channel c
   input  logic [31:0]     dst_i,    // stored colour, cycle c: r [7:0], g, b, a [31:24]
   input  logic [31:0]     k_i,      // per channel, cycle c
@@ -38,8 +39,8 @@ module zb_blend #(
   localparam int unsigned CovLog = $clog2(COV_SAMPLES);
 
   logic under, cov;
-  assign under = mode_i == 3'd4;
-  assign cov   = mode_i == 3'd3;
+  assign under = mode_i == zb_pkg::BlendUnder;
+  assign cov   = mode_i == zb_pkg::BlendCoverage;
 
   // The write mask's alternative to r, formed a cycle early: coverage result or stored colour.
   logic [31:0] cov3, d3, alt_d;
@@ -130,7 +131,7 @@ module zb_blend #(
     if (c == 0) begin : g_bug
       logic [4:1] bug_q;
       always_ff @(posedge clk_i) begin
-        bug_q <= {bug_q[3:1], mode_i == 3'd1 && !k_i[0]};
+        bug_q <= {bug_q[3:1], mode_i == zb_pkg::BlendAlpha && !k_i[0]};
       end
       assign color_o[8*c +: 8] = (mask_i[c] && !cov) ? {r[7:1], r[0] ^ bug_q[4]} : alt4_q;
     end else begin : g_nobug

@@ -14,7 +14,8 @@
 // write, from that write's data itself, bypassed into the younger fragment's X7.
 // Reset: rst_ni, asynchronous, active low, on control state only (valid bits, interlock, pass
 // state, counters). Memories and data registers are not reset.
-module zb_rop #(
+module zb_rop
+#(
   parameter int unsigned DEPTH_BITS = 24,   // 8..32
   parameter int unsigned TILE_W     = 64,   // power of two
   parameter int unsigned TILE_H     = 64,   // power of two
@@ -26,7 +27,7 @@ module zb_rop #(
   input  logic                  clk_i,
   input  logic                  rst_ni,
   input  logic                  state_we_i,
-  input  logic [12:0]           state_i,
+  input  zb_pkg::pass_state_t   state_i,
   input  logic [15:0]           tile_x0_i,
   input  logic [15:0]           tile_y0_i,
   input  logic                  frag_valid_i,
@@ -81,10 +82,10 @@ module zb_rop #(
   // ---------------------------------------------------------------------------------------
   // Pass state register (docs/datapath.md "The pass state"); loaded only while idle.
   // ---------------------------------------------------------------------------------------
-  logic [12:0] state_d, state_q;
+  zb_pkg::pass_state_t state_d, state_q;
   logic        st_depth_test, st_depth_write, st_peel_test;
-  logic [2:0]  st_depth_func;
-  logic [2:0]  st_blend;
+  zb_pkg::depth_func_e st_depth_func;
+  zb_pkg::blend_mode_e st_blend;
   logic [3:0]  st_color_mask;
 
 
@@ -95,15 +96,15 @@ module zb_rop #(
     end
   end
 
-  assign st_depth_test  = state_q[0];
-  assign st_depth_func  = state_q[3:1];
-  assign st_depth_write = state_q[4];
-  assign st_blend       = state_q[7:5];
-  assign st_color_mask  = state_q[11:8];
-  assign st_peel_test   = state_q[12];
+  assign st_depth_test  = state_q.depth_test;
+  assign st_depth_func  = state_q.depth_func;
+  assign st_depth_write = state_q.depth_write;
+  assign st_blend       = state_q.blend;
+  assign st_color_mask  = state_q.color_mask;
+  assign st_peel_test   = state_q.peel_test;
 
-  logic st_cov;  // coverage mode: blend code 3 (docs/datapath.md "Coverage blend")
-  assign st_cov = st_blend == 3'd3;
+  logic st_cov;  // coverage mode (docs/datapath.md "Coverage blend")
+  assign st_cov = st_blend == zb_pkg::BlendCoverage;
 
   localparam int unsigned QW    = 8 + CovW;  // coverage blend addend w*s + N/2 (zb_blend)
   // A younger fragment to the same pixel issues at least Span cycles after the older one. At
@@ -434,22 +435,22 @@ module zb_rop #(
       x6_k3[10*c +: 10] = 10'h000;
       x6_add[8*c +: 8]  = s;
       unique case (st_blend)
-        3'd1: begin                                 // alpha
+        zb_pkg::BlendAlpha: begin
           x6_k[8*c +: 8]    = ~x6_a;
           x6_k3[10*c +: 10] = x6_ia3_q;
           x6_add[8*c +: 8]  = x6_ms_q[8*c +: 8];
         end
-        3'd2: begin                                 // additive: m(d, 255) = d
+        zb_pkg::BlendAdditive: begin  // m(d, 255) = d
           x6_k[8*c +: 8]    = 8'hff;
           x6_k3[10*c +: 10] = 10'd765;
           x6_add[8*c +: 8]  = x6_ms_q[8*c +: 8];
         end
-        3'd3: begin                                 // coverage
+        zb_pkg::BlendCoverage: begin
           x6_k[8*c +: 8]    = x6_kc_q;
           x6_k3[10*c +: 10] = x6_kc3_q;
           x6_add[8*c +: 8]  = 8'h00;
         end
-        3'd4: begin                                 // under: RGB scale m(s, a), alpha a
+        zb_pkg::BlendUnder: begin     // RGB scale m(s, a), alpha a
           x6_k[8*c +: 8]    = (c == 3) ? x6_a : x6_ms_q[8*c +: 8];
           x6_k3[10*c +: 10] = (c == 3) ? x_a3_q[5*10 +: 10] : x6_ms3_q[10*c +: 10];
           x6_add[8*c +: 8]  = 8'h00;
@@ -631,7 +632,7 @@ module zb_rop #(
   assign x4_color_on = x4_valid & x4_pass_q & (st_color_mask != 4'h0);
   // Replace with all four channels written needs no destination colour; the other modes
   // (alpha, additive, coverage, under) blend with it.
-  assign reads_dest  = (st_blend != 3'd0) | (st_color_mask != 4'hf);
+  assign reads_dest  = (st_blend != zb_pkg::BlendReplace) | (st_color_mask != 4'hf);
 
   always_comb begin
     cnt_inc    = '0;
@@ -735,7 +736,7 @@ module zb_rop #(
       (x_valid_q[3] && x3_pass && st_peel_test && !st_cov) |-> x3_behind_q);
   // Only the five blend codes are loaded.
   BlendCodeValid: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      state_we_i |-> (state_i[7:5] <= 3'd4));
+      state_we_i |-> (state_i.blend <= zb_pkg::BlendUnder));
 `endif
 
 endmodule

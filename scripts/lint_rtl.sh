@@ -4,7 +4,10 @@
 #        lint_rtl.sh --all            every set of rtl/lint_sets.txt
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-lint() { verilator --lint-only -Wall "$root/rtl/lint_waivers.vlt" "$root"/rtl/*.sv --top-module zb_rop "$@"; }
+# The package first: its types are used by every module after it.
+rtl=("$root/rtl/zb_pkg.sv")
+for f in "$root"/rtl/*.sv; do [[ $f == */zb_pkg.sv ]] || rtl+=("$f"); done
+lint() { verilator --lint-only -Wall "$root/rtl/lint_waivers.vlt" "${rtl[@]}" --top-module zb_rop "$@"; }
 if [[ ${1:-} == --all ]]; then
   while IFS= read -r line; do
     [[ $line =~ ^([a-z0-9_-]+):\ *(.*)$ ]] || continue

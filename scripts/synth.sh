@@ -61,7 +61,7 @@ done
 
 cd "$root"
 mkdir -p "$out"
-rtl=$(ls rtl/*.sv | tr '\n' ' ')
+rtl="rtl/zb_pkg.sv $(ls rtl/*.sv | grep -v '/zb_pkg.sv$' | tr '\n' ' ')"  # the package first
 params="-set TILE_W $tile -set TILE_H $tile -set DEPTH_BITS $depth_bits -set COV_SAMPLES $cov_samples"
 latch_types='t:$dlatch t:$adlatch t:$dlatchsr t:$_DLATCH_* t:$_DLATCHSR_*'
 t0=$SECONDS

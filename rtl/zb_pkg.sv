@@ -1,0 +1,39 @@
+// zb_pkg: the datapath's types (docs/datapath.md, "The pass state"): the GL depth functions, the
+// blend modes and the pass state register, whose bit layout the C++ side packs (pack_state in
+// cmodel/rop/fragment.cpp): [0] depth_test, [3:1] depth_func, [4] depth_write, [7:5] blend,
+// [11:8] color_mask, [12] peel_test.
+// Modules name its types and values qualified (zb_pkg::BlendAlpha): Yosys 0.23 reads no
+// `import` statement.
+package zb_pkg;
+
+  // GL's depth functions, in GL's order (GL_NEVER + code).
+  typedef enum logic [2:0] {
+    DepthNever    = 3'd0,
+    DepthLess     = 3'd1,
+    DepthEqual    = 3'd2,
+    DepthLequal   = 3'd3,
+    DepthGreater  = 3'd4,
+    DepthNotequal = 3'd5,
+    DepthGequal   = 3'd6,
+    DepthAlways   = 3'd7
+  } depth_func_e;
+
+  typedef enum logic [2:0] {
+    BlendReplace  = 3'd0,
+    BlendAlpha    = 3'd1,
+    BlendAdditive = 3'd2,
+    BlendCoverage = 3'd3,
+    BlendUnder    = 3'd4
+  } blend_mode_e;
+
+  // The pass state register; the first field is the most significant.
+  typedef struct packed {
+    logic        peel_test;    // [12] second compare, z > peel (depth peeling)
+    logic [3:0]  color_mask;   // [11:8] bit c writes channel c
+    blend_mode_e blend;        // [7:5]
+    logic        depth_write;  // [4]
+    depth_func_e depth_func;   // [3:1]
+    logic        depth_test;   // [0]
+  } pass_state_t;
+
+endpackage
