@@ -162,8 +162,9 @@ void run_plan(const RenderOptions& o, const RasterizedScene& rs, const PassPlan&
 
 // One pass plan on the golden model, the whole frame from the scene by the banded renderer
 // (frame_render.h): geometry, raster and datapath, which host_ms times.
-void run_golden(const RenderOptions& o, const Scene& scene, const Viewport& vp,
-                const PassPlan& plan, MethodRun& run) {
+// Returns the set-up triangles it drew from.
+size_t run_golden(const RenderOptions& o, const Scene& scene, const Viewport& vp,
+                  const PassPlan& plan, MethodRun& run) {
   FrameRenderOptions options;
   options.threads = o.threads;
   RenderResult result = render_frame(scene, vp, plan, options);
@@ -171,13 +172,12 @@ void run_golden(const RenderOptions& o, const Scene& scene, const Viewport& vp,
   run.total = PassStats{};
   for (const PassStats& p : result.passes) *run.total += p;
   run.image = std::move(result.framebuffer);
+  return result.triangles;
 }
 
 // The scene after the options: its file read, its camera aimed, --background applied.
 Scene load_scene(const RenderOptions& o) {
-  const std::optional<Rgba8> background = parse_background(o.background);
-  Scene scene = resolve_scene(o.frame.scene, o.frame.camera);
-  if (background) scene.background = *background;
+  Scene scene = resolve_scene_with_background(o.frame, o.background);
 #ifdef __GLIBC__
   // The scene loaders free large temporaries that glibc keeps resident; returned before the
   // frame's buffers are allocated, they stay out of the run's peak memory.
@@ -271,13 +271,17 @@ void run_render(const RenderOptions& o) {
     reference = render_reference(*rs);
     reference_ms = ms_since(t1);
   }
-  // Set-up triangles: counted on their own only where none were stored (--no-error).
+  // Set-up triangles: the stored ones, or (golden model alone) those of its first run, which
+  // the header then follows.
   size_t drawn = rs ? rs->triangles.size() : 0;
-  if (!rs && (!o.quiet || !o.stats.empty())) drawn = setup_triangles(scene, vp).size();
-  if (!o.quiet) {
+  bool header = o.quiet;
+  auto print_header_once = [&] {
+    if (header) return;
+    header = true;
     print_header(o, scene, drawn, rs, raster_ms);
     print_warnings("zblend render", scene);
-  }
+  };
+  if (rs) print_header_once();
 
   std::vector<MethodRun> runs;
   uint64_t mismatches = 0;
@@ -287,7 +291,7 @@ void run_render(const RenderOptions& o) {
     const auto start = Clock::now();
     if (const PassPlan* plan = find_plan(m)) {
       if (golden)
-        run_golden(o, scene, vp, *plan, run);
+        drawn = run_golden(o, scene, vp, *plan, run);
       else
         run_plan(o, *rs, *plan, run);
       run.host_ms = ms_since(start);
@@ -297,6 +301,7 @@ void run_render(const RenderOptions& o) {
     }
     if (need_reference) run.error = compare_images(run.image, reference);
     mismatches += run.mismatches;
+    print_header_once();
     if (!o.quiet) fmt::print(stderr, "  {:<12} {:8.1f} ms\n", m, run.host_ms);
     runs.push_back(std::move(run));
   }

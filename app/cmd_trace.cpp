@@ -28,11 +28,9 @@ void run_trace(const TraceOptions& o) {
                                  join(names)));
   }
   const Viewport vp = check_viewport(o.frame.width, o.frame.height, o.frame.depth_bits);
-  const std::optional<Rgba8> background = parse_background(o.background);
   const std::vector<OutputPath> outputs = {{"--out", o.out, ".zbt"}};
   check_outputs(outputs);
-  Scene scene = resolve_scene(o.frame.scene, o.frame.camera);
-  if (background) scene.background = *background;
+  const Scene scene = resolve_scene_with_background(o.frame, o.background);
   create_output_dirs(outputs);
   print_warnings("zblend trace", scene);
   const Trace trace = make_trace(rasterize_scene(scene, vp), *plan);

@@ -59,6 +59,9 @@ Viewport check_viewport(int width, int height, int depth_bits);
 // parse_background gives nothing for empty text.
 void add_background_option(CLI::App* cmd, std::string& text);
 std::optional<Rgba8> parse_background(const std::string& text);
+// resolve_scene(frame.scene, frame.camera) with the --background text applied; the text is
+// checked first, so a bad one fails before a large file is read.
+Scene resolve_scene_with_background(const FrameOptions& frame, const std::string& background);
 
 // The rule for every output path (docs/cli.md, "Output paths"). A file must end in its
 // extension and not be a directory; a directory must not be a file; the nearest existing

@@ -147,6 +147,13 @@ std::optional<Rgba8> parse_background(const std::string& text) {
   return Rgba8{v[0], v[1], v[2], v[3]};
 }
 
+Scene resolve_scene_with_background(const FrameOptions& frame, const std::string& background) {
+  const std::optional<Rgba8> colour = parse_background(background);
+  Scene scene = resolve_scene(frame.scene, frame.camera);
+  if (colour) scene.background = *colour;
+  return scene;
+}
+
 namespace {
 
 // The nearest existing directory at or above `dir` (empty: "."), which must be writable with no

@@ -162,13 +162,10 @@ class GltfReader {
 
   // Textures are not sampled: each drawn material with a base colour texture is named.
   void warn_textures() {
-    std::set<uint32_t> used;
-    for (const Object& obj : scene_.objects) used.insert(obj.material);
-    for (uint32_t m : used)
-      if (m < model_.materials.size() &&
-          model_.materials[m].pbrMetallicRoughness.baseColorTexture.index >= 0)
-        scene_.warnings.push_back(fmt::format("material '{}': texture ignored, its base colour "
-                                              "is used", printable(scene_.materials[m].name)));
+    warn_ignored_textures(scene_, [&](uint32_t m) {
+      return m < model_.materials.size() &&
+             model_.materials[m].pbrMetallicRoughness.baseColorTexture.index >= 0;
+    });
   }
 
   glm::mat4 local_matrix(const tinygltf::Node& n, const std::string& place) const {

@@ -257,12 +257,9 @@ Scene load_obj(const std::string& path, const std::string& text, const SceneFile
     }
   }
   if (used_default) scene.materials.push_back(Material{"default", {255, 255, 255, 255}});
-  std::set<uint32_t> used;
-  for (const Object& obj : scene.objects) used.insert(obj.material);
-  for (uint32_t m : used)
-    if (m < mats.size() && checked.textured.count(mats[m].name))
-      scene.warnings.push_back(fmt::format(
-          "material '{}': texture ignored, its base colour is used", printable(mats[m].name)));
+  warn_ignored_textures(scene, [&](uint32_t m) {
+    return m < mats.size() && checked.textured.count(mats[m].name) > 0;
+  });
   scene.description = fmt::format("OBJ file, {} shapes, {} materials", shapes.size(), mats.size());
   return scene;
 }

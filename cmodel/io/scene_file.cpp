@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include <fmt/core.h>
@@ -61,6 +62,15 @@ Scene load_scene_bytes(const std::string& name, const std::string& bytes, const 
   scene.background = {255, 255, 255, 255};
   fit_camera(scene);
   return scene;
+}
+
+void warn_ignored_textures(Scene& scene, const std::function<bool(uint32_t)>& textured) {
+  std::set<uint32_t> used;
+  for (const Object& obj : scene.objects) used.insert(obj.material);
+  for (uint32_t m : used)
+    if (textured(m))
+      scene.warnings.push_back(fmt::format("material '{}': texture ignored, its base colour is used",
+                                           printable(scene.materials[m].name)));
 }
 
 }  // namespace zb

@@ -63,10 +63,11 @@ FrameOp resolve_op(FrameOp op, Rgba8 background) {
   return op;
 }
 
-void feed_pass(FragmentSource& source, size_t index, const PassState& pass, const DrawFn& draw) {
+void feed_pass(FragmentSource& source, size_t index, const PassState& pass, const DrawFn& draw,
+               std::vector<Fragment>& buf) {
   const bool edges = pass.filter == PrimFilter::kEdges;
   const bool rewrite = edges || feeder_rewrites(pass);
-  std::vector<Fragment> buf;
+  buf.clear();
   buf.reserve(2 * kChunk);
   // One primitive's fragments, buf[from..]: rewritten (or dropped) in place with `offset`; the
   // buffer drawn once it holds a chunk.

@@ -54,7 +54,9 @@ class FragmentSource {
 using DrawFn = std::function<void(const Fragment* fragments, size_t count)>;
 
 // Pass `index` of a plan: its fragments from `source`, filtered and rewritten by the pass's
-// rules, handed to `draw` in primitive order, a few thousand at a time.
-void feed_pass(FragmentSource& source, size_t index, const PassState& pass, const DrawFn& draw);
+// rules, handed to `draw` in primitive order, a few thousand at a time. `buffer` is the
+// scratch they gather in (cleared first; the caller keeps it from pass to pass).
+void feed_pass(FragmentSource& source, size_t index, const PassState& pass, const DrawFn& draw,
+               std::vector<Fragment>& buffer);
 
 }  // namespace zb

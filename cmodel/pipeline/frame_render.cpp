@@ -302,6 +302,7 @@ RenderResult render_frame(const FrameGeometry& geometry, const PassPlan& plan,
     stats[size_t(w)] = r.stats();
   });
   result.passes.assign(plan.passes.size(), PassStats{});
+  result.triangles = tris.size();
   for (const std::vector<PassStats>& s : stats)
     for (size_t i = 0; i < s.size(); ++i) result.passes[i] += s[i];
   return result;

@@ -100,9 +100,10 @@ RasterizedScene rasterize_triangles(std::vector<ScreenTriangle> triangles, const
 }
 
 std::vector<Fragment> pass_fragments(const RasterizedScene& rs, const PassState& pass) {
-  std::vector<Fragment> out;
+  std::vector<Fragment> out, buffer;
   StoredSource source(rs);
-  feed_pass(source, 0, pass, [&](const Fragment* f, size_t n) { out.insert(out.end(), f, f + n); });
+  feed_pass(source, 0, pass, [&](const Fragment* f, size_t n) { out.insert(out.end(), f, f + n); },
+            buffer);
   return out;
 }
 
@@ -110,6 +111,7 @@ RenderResult render(const RasterizedScene& rs, const PassPlan& plan, Backend& ba
   StoredSource source(rs);
   RenderResult result;
   result.passes = run_plan(plan, rs.viewport, rs.background, source, backend);
+  result.triangles = rs.triangles.size();
   result.framebuffer = backend.framebuffer();
   return result;
 }

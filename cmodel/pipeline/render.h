@@ -43,6 +43,7 @@ std::vector<Fragment> pass_fragments(const RasterizedScene& rs, const PassState&
 struct RenderResult {
   Framebuffer framebuffer;
   std::vector<PassStats> passes;  // one per pass of the plan
+  size_t triangles = 0;           // set-up triangles the frame was drawn from (after clipping)
 };
 
 RenderResult render(const RasterizedScene& rs, const PassPlan& plan, Backend& backend);

@@ -122,8 +122,9 @@ TEST(Executor, RunsThePlanInItsOrder) {
 
 std::vector<Fragment> fed(const PassState& pass) {
   KnownSource src;
-  std::vector<Fragment> out;
-  feed_pass(src, 0, pass, [&](const Fragment* f, size_t n) { out.insert(out.end(), f, f + n); });
+  std::vector<Fragment> out, buffer;
+  feed_pass(src, 0, pass, [&](const Fragment* f, size_t n) { out.insert(out.end(), f, f + n); },
+            buffer);
   return out;
 }
 

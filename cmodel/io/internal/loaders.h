@@ -2,6 +2,8 @@
 // library reads it. Internal to the golden model.
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <string>
 
 #include "io/scene_file.h"
@@ -13,5 +15,9 @@ Scene load_obj(const std::string& path, const std::string& text, const SceneFile
 // glTF 2.0, text or binary (gltf_loader.cpp), through tinygltf.
 Scene load_gltf(const std::string& path, const std::string& data, bool binary,
                 const SceneFileReader& read);
+
+// Textures are not sampled: a warning on `scene` for each material its objects use for which
+// textured(m) holds.
+void warn_ignored_textures(Scene& scene, const std::function<bool(uint32_t)>& textured);
 
 }  // namespace zb
