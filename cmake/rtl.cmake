@@ -11,6 +11,7 @@ set(ZBLEND_RTL_WAIVERS ${PROJECT_SOURCE_DIR}/rtl/lint_waivers.vlt)
 set(ZBLEND_RTL_DEPTH_BITS 24 CACHE STRING "zb_rop DEPTH_BITS: depth width, 8 to 32")
 set(ZBLEND_RTL_COV_SAMPLES 16 CACHE STRING "zb_rop COV_SAMPLES: coverage samples, 1, 2, 4, 8 or 16")
 set(ZBLEND_RTL_TILE 64 CACHE STRING "zb_rop TILE_W and TILE_H: square tile, a power of two >= 2")
+set(ZBLEND_RTL_WINDOW 8 CACHE STRING "zb_rop WINDOW: issue window slots, 2 to 16")
 if(NOT ZBLEND_RTL_DEPTH_BITS MATCHES "^[0-9]+$" OR ZBLEND_RTL_DEPTH_BITS LESS 8
    OR ZBLEND_RTL_DEPTH_BITS GREATER 32)
   message(FATAL_ERROR "ZBLEND_RTL_DEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS}: choose 8 to 32")
@@ -21,11 +22,15 @@ endif()
 if(NOT ZBLEND_RTL_TILE MATCHES "^(2|4|8|16|32|64|128|256|512|1024)$")
   message(FATAL_ERROR "ZBLEND_RTL_TILE=${ZBLEND_RTL_TILE}: choose a power of two from 2 to 1024")
 endif()
-set(ZBLEND_RTL_PARAMS -GDEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS} -GCOV_SAMPLES=${ZBLEND_RTL_COV_SAMPLES}
+if(NOT ZBLEND_RTL_WINDOW MATCHES "^([2-9]|1[0-6])$")
+  message(FATAL_ERROR "ZBLEND_RTL_WINDOW=${ZBLEND_RTL_WINDOW}: choose 2 to 16")
+endif()
+set(ZBLEND_RTL_PARAMS -GWINDOW=${ZBLEND_RTL_WINDOW} -GDEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS} -GCOV_SAMPLES=${ZBLEND_RTL_COV_SAMPLES}
     -GTILE_W=${ZBLEND_RTL_TILE} -GTILE_H=${ZBLEND_RTL_TILE})
 # The same values for the C++ mirrors (rtlmodel/rtl_params.h).
 set(ZBLEND_RTL_DEFINES ZBLEND_RTL_DEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS}
-    ZBLEND_RTL_COV_SAMPLES=${ZBLEND_RTL_COV_SAMPLES} ZBLEND_RTL_TILE=${ZBLEND_RTL_TILE})
+    ZBLEND_RTL_COV_SAMPLES=${ZBLEND_RTL_COV_SAMPLES} ZBLEND_RTL_TILE=${ZBLEND_RTL_TILE}
+    ZBLEND_RTL_WINDOW=${ZBLEND_RTL_WINDOW})
 
 # Verilator's optimisation options, the model's threads and the C++ flags of its hot code:
 # chosen by measurement (scripts/verilator_options.sh, docs/bench.md), overridable for it.
@@ -35,13 +40,14 @@ set(ZBLEND_VERILATOR_THREADS 1 CACHE STRING "Verilator --threads of the RTL mode
 set(ZBLEND_VERILATOR_OPT_FAST "" CACHE STRING "C++ flags added to the model's hot code")
 
 # zblend_verilate(TARGET PREFIX P DIRECTORY D [SYSTEMC] [BUG] [COVERAGE] [TRACE]): a static
-# library TARGET holding zb_rop Verilated with the widths above. BUG adds
-# +define+ZB_INJECT_BLEND_BUG (the defect the checkers must catch); SYSTEMC builds it with --sc.
+# library TARGET holding zb_rop Verilated with the widths above. BUG adds the deliberate defects
+# the checkers must catch, each switched on by a plusarg (+zb_bug_blend, +zb_bug_window);
+# SYSTEMC builds it with --sc.
 function(zblend_verilate target)
   cmake_parse_arguments(V "SYSTEMC;BUG;COVERAGE;TRACE" "PREFIX;DIRECTORY" "" ${ARGN})
   set(args --assert ${ZBLEND_VERILATOR_OPT} -Wall ${ZBLEND_RTL_PARAMS})
   if(V_BUG)
-    list(APPEND args +define+ZB_INJECT_BLEND_BUG)
+    list(APPEND args +define+ZB_INJECT_BLEND_BUG +define+ZB_INJECT_WINDOW_BUG)
   endif()
   set(kind "")
   if(V_SYSTEMC)

@@ -51,43 +51,29 @@ void CostCounter::begin_frame(int width, int height, int depth_bits, Rgba8 clear
     Grid g;
     g.size = size;
     g.columns = (width + size - 1) / size;
-    g.count.assign(size_t(g.columns) * size_t((height + size - 1) / size), 0);
-    g.issue.assign(g.count.size(), 0);
-    g.pixel_issue.assign(size_t(width) * size_t(height), 0);
-    g.pixel_pass.assign(size_t(width) * size_t(height), 0);
+    g.stream.assign(size_t(g.columns) * size_t((height + size - 1) / size), {});
     grids_.push_back(std::move(g));
     cost_.tiles.push_back(TileCost{size, 0, 0, 0, 0});
   }
 }
 
-void CostCounter::begin_pass(const RopState& state) {
-  inner_.begin_pass(state);
-  ++pass_;
-}
+void CostCounter::begin_pass(const RopState& state) { inner_.begin_pass(state); }
 
-// The driver streams each tile's fragments in pass order (a stable binning); zb_rop issues
-// them in order, each as early as the interlock allows (kRtlIssueSpan after its pixel's
-// previous fragment).
+// The driver streams each tile's fragments in pass order (a stable binning).
 void CostCounter::draw(const Fragment* fragments, size_t count) {
   inner_.draw(fragments, count);
   for (Grid& g : grids_)
     for (size_t i = 0; i < count; ++i) {
       const Fragment& f = fragments[i];
       const size_t t = size_t(f.y / g.size) * size_t(g.columns) + size_t(f.x / g.size);
-      const size_t p = size_t(f.y) * size_t(width_) + size_t(f.x);
-      const bool first = g.count[t]++ == 0;
-      if (first) g.touched.push_back(uint32_t(t));
-      const uint64_t issue =
-          rtl_issue_cycle(first, g.issue[t], g.pixel_pass[p] == pass_, g.pixel_issue[p]);
-      g.issue[t] = issue;
-      g.pixel_issue[p] = issue;
-      g.pixel_pass[p] = pass_;
+      if (g.stream[t].empty()) g.touched.push_back(uint32_t(t));
+      g.stream[t].push_back(uint32_t(size_t(f.y) * size_t(width_) + size_t(f.x)));
     }
 }
 
 // The driver's run of a pass (rtlmodel/rtl_rop.cpp): per touched tile, load its pixels (clipped to
-// the frame), one cycle to write the state and clear the counters, stream and drain (to
-// kRtlDrain cycles after the last issue), store.
+// the frame), one cycle to write the state and clear the counters, stream through zb_rop's
+// issue window and drain (IssueSchedule), store.
 PassStats CostCounter::end_pass() {
   const PassStats s = inner_.end_pass();
   cost_.totals += s;
@@ -100,10 +86,10 @@ PassStats CostCounter::end_pass() {
       const int y0 = int(t / uint32_t(g.columns)) * g.size;
       const uint64_t pixels =
           uint64_t(std::min(g.size, width_ - x0)) * uint64_t(std::min(g.size, height_ - y0));
-      c.stream_cycles += g.issue[t] + kRtlDrain;
+      c.stream_cycles += schedule_.run(g.stream[t].data(), g.stream[t].size());
       c.tile_io_cycles += 2 * pixels + 1;
       c.tile_io_pixels += pixels;
-      g.count[t] = 0;
+      g.stream[t].clear();
     }
     c.tiles_loaded += g.touched.size();
     g.touched.clear();

@@ -16,7 +16,7 @@ namespace zb {
 struct TileCost {
   int tile = 0;
   uint64_t tiles_loaded = 0;    // summed over passes: the tiles each pass touches
-  uint64_t stream_cycles = 0;   // per touched tile: issue cycles as zb_rop's interlock, drain
+  uint64_t stream_cycles = 0;   // per touched tile: issue cycles as zb_rop's window, drain
   uint64_t tile_io_cycles = 0;  // per touched tile: load and store a word a clock, 1 state write
   uint64_t tile_io_pixels = 0;  // pixels loaded, and again stored
   // The RTL's clock cycles for the frame without back-pressure (`zblend render --backend rtl`
@@ -65,19 +65,16 @@ class CostCounter final : public Backend {
   const MethodCost& cost() const { return cost_; }
 
  private:
-  // One tile size's binning of the current pass, and its issue cycles.
+  // One tile size's binning of the current pass: each tile's stream, as frame pixel indices.
   struct Grid {
     int size = 0, columns = 0;
-    std::vector<uint32_t> count;    // fragments per tile
+    std::vector<std::vector<uint32_t>> stream;  // per tile
     std::vector<uint32_t> touched;  // tiles with a fragment, in first-touch order
-    std::vector<uint64_t> issue;    // per tile: the issue cycle of its last fragment
-    std::vector<uint64_t> pixel_issue;  // per frame pixel: its last fragment's issue cycle,
-    std::vector<uint32_t> pixel_pass;   // valid when pixel_pass equals pass_
   };
   Backend& inner_;
   int width_ = 0, height_ = 0;
-  uint32_t pass_ = 0;  // stamps the pixels a pass touched
   std::vector<Grid> grids_;
+  IssueSchedule schedule_;
   MethodCost cost_;
 };
 

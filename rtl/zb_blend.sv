@@ -127,11 +127,14 @@ module zb_blend
 
 `ifdef ZB_INJECT_BLEND_BUG
     // Deliberate defect for checker tests: alpha blend, odd source alpha (k = 255 - a even),
-    // red bit 0 flipped. The flag rides the pipeline with the fragment.
+    // red bit 0 flipped. The flag rides the pipeline with the fragment. On unless the plusarg
+    // +zb_bug_window picks the issue window's defect instead (zb_issue_window).
     if (c == 0) begin : g_bug
       logic [4:1] bug_q;
+      logic       bug_on;
+      initial bug_on = $test$plusargs("zb_bug_window") == 0;
       always_ff @(posedge clk_i) begin
-        bug_q <= {bug_q[3:1], mode_i == zb_pkg::BlendAlpha && !k_i[0]};
+        bug_q <= {bug_q[3:1], bug_on && mode_i == zb_pkg::BlendAlpha && !k_i[0]};
       end
       assign color_o[8*c +: 8] = (mask_i[c] && !cov) ? {r[7:1], r[0] ^ bug_q[4]} : alt4_q;
     end else begin : g_nobug

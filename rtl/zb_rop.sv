@@ -2,8 +2,9 @@
 //
 // Pipelined for 100 MHz in iCE40 fabric, one fragment per clock; docs/rtl.md has the diagram.
 //   I/S  input register and skid register (frag_ready_o comes from a flop)
-//   M    interlock: waits while a fragment to the same pixel issued less than Span cycles
-//        ago; issues (depth, coverage and peel reads) otherwise
+//   W    issue window (zb_issue_window): picks the oldest fragment whose pixel is free, so a
+//        fragment that waits for its pixel does not hold back fragments to other pixels
+//   M    issue: depth, coverage and peel reads
 //   X1..X4   depth, coverage, peel: data, compare, decide, write (edge E4)
 //   X1..X6   fragment side of the blend: m(s, a), k, 3k, coverage weight terms
 //   X6..X11  colour: read at edge E6, blend (zb_blend, 4 stages), write at edge E11
@@ -12,7 +13,7 @@
 // coverage at E4; colour at E11), from the forwarding register that holds that write (the RAMs
 // need no read-during-write behaviour); or, a colour read one edge before the older colour
 // write, from that write's data itself, bypassed into the younger fragment's X7.
-// Reset: rst_ni, asynchronous, active low, on control state only (valid bits, interlock, pass
+// Reset: rst_ni, asynchronous, active low, on control state only (valid bits, window, pass
 // state, counters). Memories and data registers are not reset.
 module zb_rop
 #(
@@ -21,6 +22,7 @@ module zb_rop
   parameter int unsigned TILE_H     = 64,   // power of two
   parameter int unsigned CNT_W      = 32,
   parameter int unsigned COV_SAMPLES = 16,  // N of the sample pattern: 1, 2, 4, 8 or 16
+  parameter int unsigned WINDOW     = 8,    // issue window slots, 2..16
   localparam int unsigned AddrW     = $clog2(TILE_W * TILE_H),
   localparam int unsigned CovW      = $clog2(COV_SAMPLES + 1)  // coverage count 0..N
 ) (
@@ -128,7 +130,7 @@ module zb_rop
   logic [31:0]           i_rgba_d, i_rgba_q, s_rgba_d, s_rgba_q;
   logic [CovW-1:0]       i_cov_d, i_cov_q, s_cov_d, s_cov_q;
   logic                  i_free;       // I's fragment leaves (or I is empty) at this edge
-  logic                  m_adv;        // M takes I's fragment at this edge
+  logic                  m_adv;        // the window takes I's fragment at this edge
 
   assign frag_ready_o = in_ready_q & ~stall_i & ~tile_req_i;
   assign accept       = frag_valid_i & frag_ready_o;
@@ -185,19 +187,23 @@ module zb_rop
 `endif
 
   // ---------------------------------------------------------------------------------------
-  // M: the interlock. X1..X(Span-1) hold the fragments issued 1..Span-1 edges ago; M's
-  // fragment waits while one of them has its address. hit_q[k-1] = "Xk has M's address", kept
-  // registered: computed when a fragment enters M (I's address against M's and X1..X(Span-2)'s,
-  // which become X1..X(Span-1)), shifted while M waits.
+  // W: the issue window (zb_issue_window). It picks the oldest fragment whose pixel is free
+  // (no older fragment in the window has it, and none issued less than Span cycles before this
+  // one would issue); M takes the pick and issues it: the depth, coverage and peel reads.
   // ---------------------------------------------------------------------------------------
-  logic                  m_valid_d, m_valid_q;
-  logic [AddrW-1:0]      m_addr_d, m_addr_q;
-  logic [DEPTH_BITS-1:0] m_z_d, m_z_q;
-  logic [31:0]           m_rgba_d, m_rgba_q;
-  logic [CovW-1:0]       m_cov_d, m_cov_q;
-  logic [9:0]            m_a3_d, m_a3_q;      // 3 a for the premultiply (zb_premul)
-  logic [Span-2:0]       hit_d, hit_q;
-  logic                  hazard, issue;
+  localparam int unsigned WinDataW = 10 + CovW + 32 + DEPTH_BITS;  // {3 a, cov, rgba, z}
+
+  logic                  m_valid_q;
+  logic [AddrW-1:0]      m_addr_q;
+  logic [DEPTH_BITS-1:0] m_z_q;
+  logic [31:0]           m_rgba_q;
+  logic [CovW-1:0]       m_cov_q;
+  logic [9:0]            m_a3_q;      // 3 a for the premultiply (zb_premul)
+  logic                  issue;
+  logic                  w_ready, w_busy, pick_valid;
+  logic [AddrW-1:0]      pick_addr;
+  logic [WinDataW-1:0]   pick_data;
+  logic [9:0]            i_a3;
 
   // Pipeline after M: one valid bit and address per stage, x[k] for Xk (k = 1..11).
   localparam int unsigned Last = 11;
@@ -210,31 +216,35 @@ module zb_rop
   assign x10_addr = x_addr_q[9*AddrW +: AddrW];
   assign x11_addr = x_addr_q[10*AddrW +: AddrW];
 
-  assign hazard = |hit_q;
-  assign issue  = m_valid_q & ~hazard;
-  assign m_adv  = ~m_valid_q | ~hazard;
+  // The window's view of the pipeline after it: P1 = M, P(k+1) = Xk.
+  logic [Span-3:0]           pos_valid;
+  logic [(Span-2)*AddrW-1:0] pos_addr;
+  assign pos_valid = {x_valid_q[Span-3:1], m_valid_q};
+  assign pos_addr  = {x_addr_q[0 +: (Span-3)*AddrW], m_addr_q};
 
-  always_comb begin
-    m_valid_d = m_valid_q;
-    m_addr_d  = m_addr_q;
-    m_z_d     = m_z_q;
-    m_rgba_d  = m_rgba_q;
-    m_cov_d   = m_cov_q;
-    m_a3_d    = m_a3_q;
-    hit_d     = {hit_q[Span-3:0], 1'b0};
-    if (m_adv) begin
-      m_valid_d = i_valid_q;
-      m_addr_d  = i_addr_q;
-      m_z_d     = i_z_q;
-      m_rgba_d  = i_rgba_q;
-      m_cov_d   = i_cov_q;
-      m_a3_d    = {2'b00, i_rgba_q[31:24]} + {1'b0, i_rgba_q[31:24], 1'b0};
-      hit_d[0]  = i_valid_q & issue & (i_addr_q == m_addr_q);
-      for (int unsigned k = 1; k < Span - 1; k++) begin
-        hit_d[k] = i_valid_q & x_valid_q[k] & (i_addr_q == x_addr_q[(k-1)*AddrW +: AddrW]);
-      end
-    end
-  end
+  assign i_a3   = {2'b00, i_rgba_q[31:24]} + {1'b0, i_rgba_q[31:24], 1'b0};
+  assign m_adv  = w_ready;
+  assign issue  = m_valid_q;
+
+  zb_issue_window #(
+    .WINDOW(WINDOW),
+    .ADDR_W(AddrW),
+    .DATA_W(WinDataW),
+    .SPAN  (Span)
+  ) u_window (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .in_valid_i  (i_valid_q),
+    .in_ready_o  (w_ready),
+    .in_addr_i   (i_addr_q),
+    .in_data_i   ({i_a3, i_cov_q, i_rgba_q, i_z_q}),
+    .pos_valid_i (pos_valid),
+    .pos_addr_i  (pos_addr),
+    .pick_valid_o(pick_valid),
+    .pick_addr_o (pick_addr),
+    .pick_data_o (pick_data),
+    .busy_o      (w_busy)
+  );
 
   // ---------------------------------------------------------------------------------------
   // Depth, coverage and peel planes: read at the issue edge E0 (M's address), written at E4.
@@ -516,7 +526,7 @@ module zb_rop
   assign tile_rdepth_o = dmem_rdata;
   assign tile_rcov_o   = vmem_rdata;
   assign tile_rpeel_o  = pmem_rdata;
-  assign busy_o        = i_valid_q | s_valid_q | m_valid_q | (|x_valid_q);
+  assign busy_o        = i_valid_q | s_valid_q | w_busy | m_valid_q | (|x_valid_q);
 
   // ---------------------------------------------------------------------------------------
   // Flops. Control (valid bits, interlock, ready, pass state) reset; data not.
@@ -528,15 +538,13 @@ module zb_rop
       i_valid_q  <= 1'b0;
       s_valid_q  <= 1'b0;
       m_valid_q  <= 1'b0;
-      hit_q      <= '0;
       x_valid_q  <= '0;
     end else begin
       state_q    <= state_d;
       in_ready_q <= in_ready_d;
       i_valid_q  <= i_valid_d;
       s_valid_q  <= s_valid_d;
-      m_valid_q  <= m_valid_d;
-      hit_q      <= hit_d;
+      m_valid_q  <= pick_valid;
       x_valid_q  <= {x_valid_q[Last-1:1], issue};
     end
   end
@@ -550,11 +558,8 @@ module zb_rop
     s_z_q    <= s_z_d;
     s_rgba_q <= s_rgba_d;
     s_cov_q  <= s_cov_d;
-    m_addr_q <= m_addr_d;
-    m_z_q    <= m_z_d;
-    m_rgba_q <= m_rgba_d;
-    m_cov_q  <= m_cov_d;
-    m_a3_q   <= m_a3_d;
+    m_addr_q <= pick_addr;
+    {m_a3_q, m_cov_q, m_rgba_q, m_z_q} <= pick_data;
 
     x_addr_q <= {x_addr_q[(Last-1)*AddrW-1:0], m_addr_q};
     x_rgba_q <= {x_rgba_q[5*32-1:0], m_rgba_q};
@@ -710,11 +715,6 @@ module zb_rop
       (x_valid_q[6] && x11_cwe && x6_addr == x11_addr) |=> fwd_hit_q);
   ColorBypassCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
       (x_valid_q[6] && x10_cwe && x6_addr == x10_addr) |=> (byp_hit_q && x11_cwe));
-  // hit_q is exact: it flags x_k's address as long as M holds the same fragment.
-  for (genvar k = 1; k < Span; k++) begin : g_hit
-    HitExact: assert property (@(posedge clk_i) disable iff (!rst_ni)
-        m_valid_q |-> (hit_q[k-1] == (x_valid_q[k] && x_addr_q[(k-1)*AddrW +: AddrW] == m_addr_q)));
-  end
   // frag_ready_o's flop is "S empty": it never drops for another reason.
   ReadyIsSkidEmpty: assert property (@(posedge clk_i) disable iff (!rst_ni)
       in_ready_q == !s_valid_q);

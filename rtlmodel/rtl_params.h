@@ -3,8 +3,9 @@
 // links zbrtl_common; rtl_rop.cpp static_asserts them against the Verilated model.
 #pragma once
 
-#if !defined(ZBLEND_RTL_DEPTH_BITS) || !defined(ZBLEND_RTL_COV_SAMPLES) || !defined(ZBLEND_RTL_TILE)
-#error "ZBLEND_RTL_DEPTH_BITS, _COV_SAMPLES and _TILE come from CMake: link zbrtl_common"
+#if !defined(ZBLEND_RTL_DEPTH_BITS) || !defined(ZBLEND_RTL_COV_SAMPLES) || !defined(ZBLEND_RTL_TILE) || \
+    !defined(ZBLEND_RTL_WINDOW)
+#error "ZBLEND_RTL_DEPTH_BITS, _COV_SAMPLES, _TILE and _WINDOW come from CMake: link zbrtl_common"
 #endif
 namespace zb {
 
@@ -12,5 +13,6 @@ constexpr int kRtlTileW = ZBLEND_RTL_TILE;
 constexpr int kRtlTileH = ZBLEND_RTL_TILE;
 constexpr int kRtlDepthBits = ZBLEND_RTL_DEPTH_BITS;
 constexpr int kRtlCoverageSamples = ZBLEND_RTL_COV_SAMPLES;  // COV_SAMPLES
+constexpr unsigned kRtlWindow = ZBLEND_RTL_WINDOW;           // WINDOW: issue window slots
 
 }  // namespace zb

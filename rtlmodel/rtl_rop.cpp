@@ -88,9 +88,12 @@ struct Sim {
   uint64_t cycle = 0;
   uint64_t dump_from = 0, dump_to = std::numeric_limits<uint64_t>::max();
 
-  explicit Sim(const std::string& fst_path, CoverageTotals* totals = nullptr)
+  Sim(const std::string& fst_path, const RtlOptions& o, CoverageTotals* totals = nullptr)
       : ctx(std::make_unique<VerilatedContext>()), coverage(totals) {
-    ctx->commandArgs(0, static_cast<const char**>(nullptr));
+    std::vector<const char*> argv{"zb_rop"};
+    for (const std::string& a : o.plusargs) argv.push_back(a.c_str());
+    ctx->commandArgs(int(argv.size()), argv.data());
+    ctx->assertOn(o.assertions);
     ctx->fatalOnError(true);
     if (!fst_path.empty()) ctx->traceEverOn(true);  // before the model exists
     top = std::make_unique<VModel>(ctx.get(), "zb_rop");
@@ -177,7 +180,8 @@ struct RtlRop::Impl {
   bool in_pass = false;
   uint64_t io_cycles = 0, stalls = 0;
 
-  explicit Impl(RtlOptions o) : opt(std::move(o)), sim(opt.trace_path, opt.coverage) {}
+  explicit Impl(RtlOptions o)
+      : opt(std::move(o)), sim(opt.trace_path, opt, opt.coverage) {}
 
   int tiles_x() const { return (fb.width + kRtlTileW - 1) / kRtlTileW; }
 
@@ -402,7 +406,7 @@ Framebuffer RtlRop::replay_tile(const Framebuffer& before, int x0, int y0,
     VerilatedContext* ctx;
     ~RestoreContext() { Verilated::threadContextp(ctx); }
   } restore{m.sim.ctx.get()};
-  Sim sim(fst_path);
+  Sim sim(fst_path, m.opt);
   sim.dump_from = from;
   sim.dump_to = to;
   // Same cycle numbers as the original run, so the waveform's times match the report.

@@ -19,6 +19,10 @@ struct RtlOptions {
   double backpressure = 0;  // probability per cycle of stall_i, and (independently) of a valid gap
   uint64_t seed = 1;        // back-pressure pattern; deterministic
   std::string trace_path;   // FST of the whole run when set
+  // Verilator plusargs for the model. The bug build (zbrtl_bug) reads +zb_bug_window: the issue
+  // window's defect instead of the blend's (docs/testbench.md "A checker that can fail").
+  std::vector<std::string> plusargs;
+  bool assertions = true;   // the RTL's assertions; off shows what the comparison alone catches
   // Coverage build only (ZBLEND_RTL_COVERAGE): the model's line and toggle counts are added
   // here when it closes. Not owned; ignored in other builds.
   CoverageTotals* coverage = nullptr;

@@ -1,31 +1,54 @@
-// zb_rop's timing facts, the one source the cost model (lab/sizing_cost.h) and the SystemC
-// golden module (systemc/) take them from. The RTL states the same numbers (zb_rop.sv: Span,
-// the X stages, the drain); tests/rtl/test_rtl_timing.cpp fails when the two disagree, by
-// reading Span from the Verilated model and measuring first issue, span and drain.
+// zb_rop's timing facts, the one source the cost model (lab/sizing_cost.h), the SystemC golden
+// module (systemc/) and the RTL driver's checks take them from. The RTL states the same numbers
+// (zb_rop.sv: Span, Last; zb_issue_window.sv: WINDOW); tests/rtl/test_rtl_timing.cpp fails when
+// the two disagree, by reading them from the Verilated model and measuring streams on it.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <vector>
+
+#include "rtl_params.h"
 
 namespace zb {
 
-// zb_rop's streaming timing (docs/rtl.md "Pipeline" and "Interlock"), fragments offered every
-// cycle from the tile's first streaming cycle (cycle 0): the first issues in cycle
-// kRtlFirstIssue; each later one in max(the previous one's cycle + 1, the cycle of the
-// previous fragment to its pixel + kRtlIssueSpan); busy_o falls kRtlDrain cycles after the
-// last issue. So a tile streams last issue + kRtlDrain cycles: its fragments + 13 when no
-// fragment waits.
-constexpr uint64_t kRtlFirstIssue = 2;
-constexpr uint64_t kRtlIssueSpan = 4;
+// docs/rtl.md "Issue window". Fragments offered every cycle from a tile's first streaming cycle
+// (cycle 0) reach the window two cycles after they are accepted. Each cycle the window picks its
+// oldest fragment whose pixel is free: no older fragment in the window has that pixel, and the
+// pick would issue at least kRtlIssueSpan cycles after the pixel's last issue. The pick issues
+// (M, the plane reads) two cycles later, after the pick register K. The window takes a fragment
+// in a cycle that begins with a free slot. busy_o falls kRtlDrain cycles after the last issue.
+constexpr uint64_t kRtlFirstIssue = 4;  // a lone fragment: accepted 0, window 2, K 3, issued 4
+constexpr uint64_t kRtlIssueSpan = 4;   // cycles between issues to one pixel
 constexpr uint64_t kRtlDrain = 12;
 
-// The cycle a fragment issues in, by that rule: `first` for the tile's first fragment, else
-// `previous` is the tile's previous issue; `pixel_seen` when an earlier fragment of this
-// tile's run hit the same pixel, issued in `pixel_previous`.
-constexpr uint64_t rtl_issue_cycle(bool first, uint64_t previous, bool pixel_seen,
-                                   uint64_t pixel_previous) {
-  const uint64_t issue = first ? kRtlFirstIssue : previous + 1;
-  return pixel_seen && pixel_previous + kRtlIssueSpan > issue ? pixel_previous + kRtlIssueSpan
-                                                              : issue;
-}
+// The issue schedule of a tile's stream, cycle for cycle as zb_rop issues it.
+class IssueSchedule {
+ public:
+  // `window` slots (2 or more, as zb_issue_window); pixel keys below `keys` (a tile's or a frame's pixel index).
+  explicit IssueSchedule(unsigned window = kRtlWindow, size_t keys = 0);
+
+  // Schedules a stream of `n` fragments to pixels `pixel[0..n)`, offered every cycle without
+  // back-pressure; writes each one's issue cycle to issue[k] when `issue` is not null. Returns
+  // the stream's cycles: the last issue + kRtlDrain (0 for an empty stream).
+  uint64_t run(const uint32_t* pixel, size_t n, uint64_t* issue = nullptr);
+
+  unsigned window() const { return window_; }
+
+ private:
+  struct Entry {
+    uint32_t pixel;
+    uint32_t index;     // in the stream
+    uint64_t earliest;  // first cycle it may be picked; kNever while an older one has its pixel
+  };
+  static constexpr uint64_t kNever = ~uint64_t{0};
+
+  unsigned window_;
+  uint32_t run_ = 0;                // stamps the pixels this run has seen
+  std::vector<uint32_t> stamp_;     // per pixel key: run_ when last_ and pending_ are this run's
+  std::vector<uint64_t> last_;      // the pixel's last issue cycle
+  std::vector<uint32_t> pending_;   // the pixel's fragments in the window
+  std::vector<Entry> entries_;      // the window, oldest first
+};
 
 }  // namespace zb

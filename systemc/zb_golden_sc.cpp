@@ -1,5 +1,6 @@
 #include "zb_golden_sc.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "rtl_params.h"
@@ -22,9 +23,6 @@ void ZbGoldenSc::run() {
     switch (c.kind) {
       case PassCommand::Kind::kBeginFrame:
         rop_.begin_frame(c.width, c.height, c.depth_bits, c.clear, c.coverage_samples);
-        pixel_issue_.assign(size_t(c.width) * size_t(c.height), 0);
-        pixel_tile_.assign(pixel_issue_.size(), 0);
-        tile_stamp_ = 0;
         break;
       case PassCommand::Kind::kBeginPass:
         rop_.begin_pass(c.state);
@@ -37,9 +35,9 @@ void ZbGoldenSc::run() {
   }
 }
 
-// The fragments in the RTL driver's order (tile by tile, pass order within a tile: a pixel
-// sees them in pass order, so the result is render()'s), each after the clock cycles zb_rop's
-// interlock gives it (rtlmodel/rtl_timing.h), then the drain. Tile load and store are not timed.
+// The fragments of each tile in the order zb_rop issues them (rtlmodel/rtl_timing.h: the issue
+// window keeps pass order per pixel, so the result is render()'s), each at its issue cycle, then
+// the drain. Tile load and store are not timed.
 PassStats ZbGoldenSc::run_pass() {
   wait(clk_i.posedge_event());  // a pass starts on a clock edge, as zb_rop's would
   const sc_core::sc_time start = sc_core::sc_time_stamp();
@@ -49,20 +47,25 @@ PassStats ZbGoldenSc::run_pass() {
   for (size_t t = 0; t + 1 < bins_.first.size(); ++t) {
     const uint32_t b = bins_.first[t], e = bins_.first[t + 1];
     if (b == e) continue;
-    ++tile_stamp_;
-    uint64_t now = 0, issue = 0;
+    pixels_.clear();
     for (uint32_t k = b; k < e; ++k) {
       const Fragment& f = frags_[bins_.order[k]];
-      const size_t p = fb.index(f.x, f.y);
-      issue = rtl_issue_cycle(k == b, issue, pixel_tile_[p] == tile_stamp_, pixel_issue_[p]);
-      pixel_tile_[p] = tile_stamp_;
-      pixel_issue_[p] = issue;
-      wait_cycles(issue - now);
-      now = issue;
-      rop_.draw(&f, 1);
+      pixels_.push_back(uint32_t(fb.index(f.x, f.y)));
     }
-    wait_cycles(kRtlDrain);
-    stream_cycles += issue + kRtlDrain;
+    issue_.resize(pixels_.size());
+    const uint64_t cycles = schedule_.run(pixels_.data(), pixels_.size(), issue_.data());
+    order_.resize(pixels_.size());
+    for (uint32_t k = 0; k < order_.size(); ++k) order_[k] = k;
+    std::sort(order_.begin(), order_.end(),
+              [&](uint32_t a, uint32_t c) { return issue_[a] < issue_[c]; });
+    uint64_t now = 0;
+    for (const uint32_t k : order_) {
+      wait_cycles(issue_[k] - now);
+      now = issue_[k];
+      rop_.draw(&frags_[bins_.order[b + k]], 1);
+    }
+    wait_cycles(cycles - now);
+    stream_cycles += cycles;
   }
   PassStats s = rop_.end_pass();
   s.cycles = stream_cycles;

@@ -7,6 +7,7 @@
 #include <systemc>
 
 #include "rop/rop.h"
+#include "rtl_timing.h"
 #include "tile_bins.h"
 #include "zb_sc_types.h"
 
@@ -37,9 +38,10 @@ class ZbGoldenSc : public sc_core::sc_module {
   GoldenRop rop_;
   std::vector<Fragment> frags_;
   TileBins bins_;
-  std::vector<uint64_t> pixel_issue_;  // per frame pixel: last issue cycle in its tile's stream
-  std::vector<uint32_t> pixel_tile_;   // stamp: pixel_issue_ is valid when it equals the run
-  uint32_t tile_stamp_ = 0;
+  IssueSchedule schedule_;        // zb_rop's issue window
+  std::vector<uint32_t> pixels_;  // a tile's stream, as frame pixel indices
+  std::vector<uint64_t> issue_;   // its issue cycles
+  std::vector<uint32_t> order_;   // its fragments in issue order
   uint64_t busy_cycles_ = 0;
   sc_core::sc_time busy_time_;
 };

@@ -25,10 +25,17 @@ Rgba8 unpack_rgba(uint32_t v) {
   return {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
 }
 
+// The model's plusargs, set before it exists: none. The bug build reads them ($test$plusargs) and
+// so runs its blend defect.
+std::unique_ptr<Vzb_rop_sc> make_model() {
+  Verilated::commandArgs(0, static_cast<const char**>(nullptr));
+  return std::make_unique<Vzb_rop_sc>("zb_rop");
+}
+
 }  // namespace
 
 ZbRtlSc::ZbRtlSc(sc_core::sc_module_name name)
-    : sc_core::sc_module(name), rtl_(std::make_unique<Vzb_rop_sc>("zb_rop")) {
+    : sc_core::sc_module(name), rtl_(make_model()) {
   Vzb_rop_sc& r = *rtl_;
   r.clk_i(clk_i);
   r.rst_ni(rst_n_);

@@ -30,6 +30,7 @@ struct Args {
   int64_t fragments = 0;
   bool list = false;
   bool quiet = false;
+  std::string defect = "blend";  // zblend_tb_bug: the injected defect
 };
 
 // Progress on stderr: a line as each suite starts, then one every kEvery with the share done.
@@ -148,6 +149,16 @@ void add_options(CLI::App& app, Config& c, Args& a) {
   app.add_option("--replay", a.replay, "replay a trace file (zblend trace) through the cosim");
   app.add_flag("-v,--verbose", c.verbose, "one line per iteration");
   app.add_flag("-q,--quiet", a.quiet, "no progress on stderr");
+  app.add_flag("!--no-assertions", c.assertions,
+               "run the RTL with its assertions off, to see what the comparison alone catches");
+#ifdef ZB_TB_BUG  // zblend_tb_bug: the RTL holds deliberate defects, one switched on per run
+  app.add_option("--defect", a.defect,
+                 "the injected defect: blend (alpha blend with an odd source alpha flips red "
+                 "bit 0) or window (the issue window lets a fragment pass an older one to its "
+                 "pixel)")
+      ->check(CLI::IsMember({"blend", "window"}))
+      ->capture_default_str();
+#endif
 #if defined(VM_COVERAGE) && VM_COVERAGE  // only the coverage build (ZBLEND_RTL_COVERAGE)
   app.add_option("--coverage-out", a.coverage_out,
                  "write the RTL line and toggle coverage of the run here at exit "
@@ -164,6 +175,7 @@ void check_args(const CLI::App& app, Config& c, const Args& a) {
                                    "suite's default)", name, value));
   c.iterations = a.iterations;
   c.fragments = static_cast<uint64_t>(a.fragments);
+  if (a.defect == "window") c.plusargs.push_back("+zb_bug_window");
   // The mismatch waveform's directory is made only if a mismatch writes it.
   app::check_outputs({{"--mismatch-fst", c.mismatch_fst, ".fst"}});
   app::create_output_dirs(

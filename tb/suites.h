@@ -22,6 +22,8 @@ struct Config {
   bool verbose = false;
   CoverageTotals* coverage = nullptr;  // coverage builds: every model's counts are added here
   std::function<void(double)> progress;  // when set: the share of the suite done, 0 to 1
+  std::vector<std::string> plusargs;     // given to every RTL model (RtlOptions::plusargs)
+  bool assertions = true;                // the RTL's assertions (RtlOptions::assertions)
 };
 
 // What a suite did: its counts, whether it failed, and a line of its own.
@@ -70,6 +72,7 @@ class HazardStimulus {
 Tally suite_scenes(const Config& c);  // every built-in scene x every pass plan at 96x72
 Tally suite_random(const Config& c);  // constrained-random states and streams
 Tally suite_hazard(const Config& c);  // runs on 1-4 pixels; fragments per clock
+Tally suite_window(const Config& c);  // directed issue-window streams
 Tally suite_blend(const Config& c);   // the blend unit, exhaustively, through the pipeline
 
 struct Suite {

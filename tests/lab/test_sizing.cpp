@@ -127,7 +127,7 @@ TEST(Analysis, TilesTouchedByACornerRectangle) {
   EXPECT_EQ(a.aa_edge_pixels, 0u);
 }
 
-// The driver's loop per touched tile: load its pixels, one state cycle, the fragments, 13 to
+// The driver's loop per touched tile: load its pixels, one state cycle, the fragments, 15 to
 // issue and drain (none waits here: each pixel once), store its pixels.
 TEST(CostModel, CountsTheDriversTileLoop) {
   const RasterizedScene rs =
@@ -139,7 +139,7 @@ TEST(CostModel, CountsTheDriversTileLoop) {
   EXPECT_EQ(c.passes, 1u);
   EXPECT_EQ(c.totals.fragments_in, 800u);
   EXPECT_EQ(c.at(16).tiles_loaded, 6u);
-  EXPECT_EQ(c.at(16).stream_cycles, 800u + 6u * 13u);
+  EXPECT_EQ(c.at(16).stream_cycles, 800u + 6u * 15u);
   EXPECT_EQ(c.at(16).tile_io_cycles, 6u * (2u * 256u + 1u));
   // A 64 x 64 tile clipped to the 128 x 96 frame's first tile: all 64 x 64 inside.
   EXPECT_EQ(c.at(64).tile_io_cycles, 2u * 4096u + 1u);

@@ -3,6 +3,7 @@
 // Verilated model, and the cycles a tile's stream takes, measured.
 #include <gtest/gtest.h>
 
+#include <random>
 #include <vector>
 
 #include "Vzb_rop.h"
@@ -18,6 +19,7 @@ namespace {
 TEST(RtlTiming, ConstantsAreTheRtls) {
   EXPECT_EQ(uint64_t{Vzb_rop_zb_rop::Span}, kRtlIssueSpan) << "zb_rop.sv Span";
   EXPECT_EQ(uint64_t{Vzb_rop_zb_rop::Last} + 1, kRtlDrain) << "zb_rop.sv Last (the drain)";
+  EXPECT_EQ(unsigned{Vzb_rop_zb_rop::WINDOW}, kRtlWindow) << "zb_rop.sv WINDOW";
 }
 
 // The streaming cycles of one pass of `fragments` on one tile, as the RTL counts them.
@@ -31,18 +33,40 @@ uint64_t stream_cycles(const std::vector<Fragment>& fragments) {
   return rtl.end_pass().cycles;
 }
 
-// The same by rtl_timing.h's rule.
+// The same by rtl_timing.h's schedule.
 uint64_t predicted_cycles(const std::vector<Fragment>& fragments) {
-  std::vector<uint64_t> last(size_t(kRtlTileW) * kRtlTileH, 0);
-  std::vector<bool> seen(last.size(), false);
-  uint64_t issue = 0;
-  for (size_t i = 0; i < fragments.size(); ++i) {
-    const size_t p = size_t(fragments[i].y) * kRtlTileW + fragments[i].x;
-    issue = rtl_issue_cycle(i == 0, issue, seen[p], last[p]);
-    seen[p] = true;
-    last[p] = issue;
-  }
-  return issue + kRtlDrain;
+  std::vector<uint32_t> pixels;
+  for (const Fragment& f : fragments) pixels.push_back(uint32_t(f.y) * kRtlTileW + f.x);
+  IssueSchedule schedule;
+  return schedule.run(pixels.data(), pixels.size());
+}
+
+// The schedule by hand: A A B C to pixels 0 0 1 2. Fragment k reaches the window in cycle
+// k + 2 and issues two cycles after its pick; the second A waits the span, B and C pass it.
+// With two slots, C finds A and B in the window and enters only as B leaves; then the
+// older A goes first.
+TEST(IssueSchedule, IssueCyclesByHand) {
+  const uint32_t pixels[] = {0, 0, 1, 2};
+  uint64_t issue[4] = {};
+  IssueSchedule two(2);
+  EXPECT_EQ(two.run(pixels, 4, issue), 9 + kRtlDrain);
+  EXPECT_EQ(issue[1], 8u);
+  EXPECT_EQ(issue[2], 6u);
+  EXPECT_EQ(issue[3], 9u);
+  IssueSchedule schedule(4);
+  EXPECT_EQ(schedule.run(pixels, 4, issue), 8 + kRtlDrain);
+  EXPECT_EQ(issue[0], kRtlFirstIssue);
+  EXPECT_EQ(issue[1], kRtlFirstIssue + kRtlIssueSpan);
+  EXPECT_EQ(issue[2], kRtlFirstIssue + 2);
+  EXPECT_EQ(issue[3], kRtlFirstIssue + 3);
+}
+
+// One pixel: the bound is the span, whatever the window.
+TEST(IssueSchedule, OnePixelRunsAtTheSpan) {
+  const std::vector<uint32_t> pixels(100, 3);
+  for (const unsigned w : {2u, 8u, 16u})
+    EXPECT_EQ(IssueSchedule(w).run(pixels.data(), pixels.size()),
+              kRtlFirstIssue + 99 * kRtlIssueSpan + kRtlDrain);
 }
 
 Fragment at(int x, int y) {
@@ -66,10 +90,50 @@ TEST(RtlTiming, SamePixelWaitsTheSpan) {
   EXPECT_EQ(stream_cycles(f), predicted_cycles(f));
 }
 
-TEST(RtlTiming, MixedStreamFollowsTheIssueRule) {
+TEST(RtlTiming, MixedStreamFollowsTheSchedule) {
   const std::vector<Fragment> f = {at(0, 0), at(1, 0), at(0, 0), at(2, 0), at(2, 0),
                                    at(3, 0), at(0, 0), at(1, 0), at(1, 0), at(4, 0)};
   EXPECT_EQ(stream_cycles(f), predicted_cycles(f));
+}
+
+// A fragment that waits for its pixel lets the ones behind it pass: with a window of three or
+// more, A A B C issues B and C while the second A waits, so the stream ends when the second A
+// issues, Span after the first.
+TEST(RtlTiming, FragmentsPassOneThatWaits) {
+  if (kRtlWindow < 3) GTEST_SKIP() << "two slots: C enters only as B leaves";
+  const std::vector<Fragment> f = {at(0, 0), at(0, 0), at(1, 0), at(2, 0)};
+  EXPECT_EQ(stream_cycles(f), kRtlFirstIssue + kRtlIssueSpan + kRtlDrain);
+  EXPECT_EQ(stream_cycles(f), predicted_cycles(f));
+}
+
+// One pixel fills the window: the fragments behind it wait for a free slot, so a stream of
+// WINDOW + 2 fragments to one pixel and then others runs at the span until the window drains.
+TEST(RtlTiming, OnePixelFillsTheWindow) {
+  std::vector<Fragment> f(kRtlWindow + 2, at(5, 5));
+  for (int i = 0; i < 12; ++i) f.push_back(at(i, 1));
+  EXPECT_EQ(stream_cycles(f), predicted_cycles(f));
+}
+
+// Two pixels alternating: each waits the span for itself, so two issue per span.
+TEST(RtlTiming, TwoPixelsAlternate) {
+  std::vector<Fragment> f;
+  for (int i = 0; i < 24; ++i) f.push_back(at(i % 2, 0));
+  EXPECT_EQ(stream_cycles(f), predicted_cycles(f));
+}
+
+// Random streams over few pixels (many waits, many reorders): the RTL's cycles are the
+// schedule's, stream after stream.
+TEST(RtlTiming, RandomStreamsFollowTheSchedule) {
+  std::mt19937 rng(7);
+  for (const int pixels : {2, 3, 5, 9, 17, 64}) {
+    std::uniform_int_distribution<int> pick(0, pixels - 1);
+    std::vector<Fragment> f;
+    for (int i = 0; i < 300; ++i) {
+      const int p = pick(rng);
+      f.push_back(at(p % kRtlTileW, (p / kRtlTileW) % kRtlTileH));
+    }
+    EXPECT_EQ(stream_cycles(f), predicted_cycles(f)) << pixels << " pixels";
+  }
 }
 
 }  // namespace

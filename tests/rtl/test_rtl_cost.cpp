@@ -1,0 +1,41 @@
+// The cost model (lab/sizing_cost.h, behind `zblend plan`) against the RTL itself: on every
+// built-in scene x every pass plan, the streaming and tile cycles it predicts at the RTL's tile
+// size are the ones the Verilated zb_rop takes.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "pipeline/passes.h"
+#include "pipeline/render.h"
+#include "rtl_params.h"
+#include "rtl_rop.h"
+#include "metrics/scene_analysis.h"
+#include "scene/builtin_scenes.h"
+#include "sizing_cost.h"
+
+namespace zb {
+namespace {
+
+TEST(CostModel, EqualsTheRtlOnEveryBuiltinSceneAndMethod) {
+  bool analysed = false;
+  for (const int size : kAnalysisTileSizes) analysed = analysed || size == kRtlTileW;
+  if (!analysed) GTEST_SKIP() << "the cost model does not analyse the RTL's tile size";
+  for (const SceneInfo& info : builtin_scenes()) {
+    const RasterizedScene rs =
+        rasterize_scene(*builtin_scene(info.name), Viewport{160, 120, kRtlDepthBits});
+    for (const PassPlan& plan : pass_plans()) {
+      RtlRop rtl;
+      CostCounter counter(rtl);
+      const RenderResult r = render(rs, plan, counter);
+      uint64_t stream = 0;
+      for (const PassStats& s : r.passes) stream += s.cycles;
+      const TileCost& c = counter.cost().at(kRtlTileW);
+      const std::string what = std::string(info.name) + " x " + plan.name;
+      EXPECT_EQ(c.stream_cycles, stream) << what << ": streaming cycles";
+      EXPECT_EQ(c.tile_io_cycles, rtl.tile_io_cycles()) << what << ": tile cycles";
+    }
+  }
+}
+
+}  // namespace
+}  // namespace zb
