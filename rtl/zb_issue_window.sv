@@ -176,15 +176,6 @@ module zb_issue_window #(
           valid_q[i] |-> (hit_q[i*HitW + k] ==
                           (pos_valid_i[k-1] && pos_addr_i[(k-1)*ADDR_W +: ADDR_W] == slot_addr(i))));
     end
-    for (genvar j = 0; j < WINDOW; j++) begin : g_pair
-      if (i != j) begin : g_other
-        SameExact: assert property (@(posedge clk_i) disable iff (!rst_ni)
-            valid_q[i] |-> (same_q[i*WINDOW + j] ==
-                            (valid_q[j] && older_q[i*WINDOW + j] && slot_addr(j) == slot_addr(i))));
-        AgeOrder: assert property (@(posedge clk_i) disable iff (!rst_ni)
-            (valid_q[i] && valid_q[j]) |-> (older_q[i*WINDOW + j] != older_q[j*WINDOW + i]));
-      end
-    end
     // Per-pixel order: a pick has no older fragment to its pixel in the window.
     PickInPixelOrder: assert property (@(posedge clk_i) disable iff (!rst_ni)
         pick[i] |-> !(|(valid_q & older_q[i*WINDOW +: WINDOW] & eq_addr(i))));
@@ -192,6 +183,10 @@ module zb_issue_window #(
     PickPastOlder: cover property (@(posedge clk_i) disable iff (!rst_ni)
         pick[i] && |(valid_q & older_q[i*WINDOW +: WINDOW]));
   end
+  // Pairs of occupied slots, checked in one assertion each (one evaluation per cycle, not
+  // WINDOW^2): same_q is exact, and older_q orders the slots totally.
+  SameExact: assert property (@(posedge clk_i) disable iff (!rst_ni) same_exact());
+  AgeOrder: assert property (@(posedge clk_i) disable iff (!rst_ni) age_order());
   // The window fills (the stream waits for pixels, not for a full pipeline).
   WindowFull: cover property (@(posedge clk_i) disable iff (!rst_ni) &valid_q);
   OnePick: assert property (@(posedge clk_i) disable iff (!rst_ni) $onehot0(pick));
@@ -199,6 +194,29 @@ module zb_issue_window #(
   PickedSlotHeld: assert property (@(posedge clk_i) disable iff (!rst_ni)
       |pick_q |-> (pick_q & valid_q) == '0);
 
+  function automatic logic same_exact();
+    same_exact = 1'b1;
+    for (int unsigned i = 0; i < WINDOW; i++) begin
+      for (int unsigned j = 0; j < WINDOW; j++) begin
+        if (valid_q[i] && i != j &&
+            same_q[i*WINDOW + j] != (valid_q[j] && older_q[i*WINDOW + j] &&
+                                     slot_addr(j) == slot_addr(i))) begin
+          same_exact = 1'b0;
+        end
+      end
+    end
+  endfunction
+  function automatic logic age_order();
+    age_order = 1'b1;
+    for (int unsigned i = 0; i < WINDOW; i++) begin
+      for (int unsigned j = 0; j < WINDOW; j++) begin
+        if (valid_q[i] && valid_q[j] && i != j &&
+            older_q[i*WINDOW + j] == older_q[j*WINDOW + i]) begin
+          age_order = 1'b0;
+        end
+      end
+    end
+  endfunction
   function automatic logic [ADDR_W-1:0] slot_addr(int unsigned i);
     slot_addr = addr_q[i*ADDR_W +: ADDR_W];
   endfunction
