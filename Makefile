@@ -101,9 +101,9 @@ plan-rtl: setup $(BUILD)/CMakeCache.txt ## Size a model to SCENE within MAX_ERRO
 	$$tree/zblend render --scene $(SCENE) --method $$m --backend both --depth-bits $$d \
 	  $(PLAN_SIZE) --out-dir $(PLAN_DIR); \
 	awk -F, -v m=$$m 'NR == 1 { for (i = 1; i <= NF; i++) col[$$i] = i; next } \
-	  $$1 == m { s = $$col["rtl_cycles"]; io = $$col["rtl_tile_io_cycles"]; \
-	    printf "plan-rtl: RTL cycles %d streaming + %d tile I/O = %d; %s mismatches\n", \
-	      s, io, s + io, $$col["mismatches"] }' $(PLAN_DIR)/summary.csv; \
+	  $$1 == m { printf "plan-rtl: RTL cycles %d streaming + %d tile = %d; %s mismatches\n", \
+	      $$col["rtl_stream_cycles"], $$col["rtl_tile_cycles"], $$col["rtl_cycles"], \
+	      $$col["mismatches"] }' $(PLAN_DIR)/summary.csv; \
 	echo "plan-rtl: the scene touches $$(key scene_tiles_touched) of the frame's" \
 	  "$$(key frame_tiles) tiles of $${t}x$$t; its passes load $$(key pass_tiles_loaded);" \
 	  "the cost model expected $$(key rtl_cycles_expected) RTL cycles"
@@ -126,6 +126,8 @@ coverage: setup ## RTL line and toggle coverage of the suites, annotated: out/co
 	$(COV_TB) $(COV_DIR)/runs/hazard_bp.dat --suite hazard --seed 7 --fragments 50000 \
 	  --backpressure 0.3
 	$(COV_TB) $(COV_DIR)/runs/blend.dat --suite blend --fragments 400000
+	$(COV_TB) $(COV_DIR)/runs/window.dat --suite window --seed 1
+	$(COV_TB) $(COV_DIR)/runs/window_bp.dat --suite window --seed 5 --backpressure 0.3
 	@verilator_coverage --write $(COV_DIR)/merged.dat $(COV_DIR)/runs/*.dat
 	@verilator_coverage --annotate $(COV_DIR)/annotated $(COV_DIR)/merged.dat \
 	  | sed 's/^/verilator_coverage: /'
@@ -136,6 +138,14 @@ coverage: setup ## RTL line and toggle coverage of the suites, annotated: out/co
 	  END { for (k in n) printf "coverage: %-6s %5d of %5d points covered (%.1f%%)\n", \
 	    k "s", hit[k], n[k], 100 * hit[k] / n[k] }' | sort
 	@echo "open: $(COV_DIR)/annotated/zb_rop.sv (and the other .sv there); lines marked %00 never ran"
+	@# The RTL's cover properties (forward, bypass, reorder, full window): each must be reached.
+	@tr '\001\002' '|=' < $(COV_DIR)/merged.dat | awk '/^C / && /page=v_user/ { \
+	    n = match($$0, /\|o=[^|]*/) ? substr($$0, RSTART + 3, RLENGTH - 3) : "?"; \
+	    h = match($$0, /\|h=[^|]*/) ? substr($$0, RSTART + 3, RLENGTH - 3) : ""; \
+	    printf "cover: %-48s %12d%s\n", h "." n, $$NF, $$NF > 0 ? "" : "  NEVER REACHED"; \
+	    if ($$NF == 0) bad++ } END { exit bad > 0 }' > $(COV_DIR)/covers.txt; \
+	  rc=$$?; cat $(COV_DIR)/covers.txt; \
+	  test $$rc -eq 0 || { echo "coverage: a cover property was never reached"; exit 1; }
 
 # libFuzzer (clang) in a build tree of its own: docs/fuzzing.md.
 FUZZ_BUILD      ?= build-fuzz

@@ -107,8 +107,9 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
       if (o.rtl) {
         RtlRop rtl;
         const RenderResult rr = render(rs, *plan, rtl);
-        row.rtl_cycles = sum_passes(rr).cycles;
-        row.rtl_tile_io_cycles = rtl.tile_io_cycles();
+        row.rtl_stream_cycles = sum_passes(rr).cycles;
+        row.rtl_tile_cycles = rtl.tile_io_cycles();
+        row.rtl_cycles = row.rtl_stream_cycles + row.rtl_tile_cycles;
         row.rtl_mismatch_pixels = differing_pixels(rr.framebuffer, image);
       }
     } else if (m == kReferenceMethod) {
@@ -132,7 +133,7 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
 std::string lab_csv(const std::vector<LabRow>& rows) {
   std::string csv =
       "scene,family,method,passes,fragments,fragments_passed,color_reads,color_writes,"
-      "depth_reads,depth_writes,bytes_read,bytes_written,host_ms,rtl_cycles,rtl_tile_io_cycles,"
+      "depth_reads,depth_writes,bytes_read,bytes_written,host_ms,rtl_cycles,rtl_stream_cycles,rtl_tile_cycles,"
       "rtl_mismatch_pixels,rmse,psnr_db,max_abs,share_over_2,share_over_16,delta_e_mean,"
       "delta_e_max,ss_rmse,ss_psnr_db,ss_max_abs,ss_share_over_2,ss_share_over_16,"
       "ss_delta_e_mean,ss_delta_e_max,fair_reference,fair_delta_e_mean,fair_rmse\n";
@@ -143,9 +144,10 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
                                  s.fragments_passed, s.color_reads, s.color_writes, s.depth_reads,
                                  s.depth_writes, r.bytes_read, r.bytes_written)
                    : ",,,,,,,,";
-    const std::string rtl = r.rtl_cycles ? fmt::format("{},{},{}", *r.rtl_cycles,
-                                                       r.rtl_tile_io_cycles, r.rtl_mismatch_pixels)
-                                         : ",,";
+    const std::string rtl =
+        r.rtl_cycles ? fmt::format("{},{},{},{}", *r.rtl_cycles, r.rtl_stream_cycles,
+                                   r.rtl_tile_cycles, r.rtl_mismatch_pixels)
+                     : ",,,";
     csv += fmt::format("{},{},{},{},{:.3f},{},{},{},{},{:.4f},{:.4f}\n", r.scene, r.family,
                        r.method, cost, r.host_ms, rtl, error_cells(r.error),
                        error_cells(r.error_ss), to_string(r.fair), r.fair_error().delta_e_mean,

@@ -53,8 +53,9 @@ struct LabRow {
   uint64_t bytes_read = 0;
   uint64_t bytes_written = 0;
   double host_ms = 0;             // golden model's render, best of 3 (reference: its composite)
-  std::optional<uint64_t> rtl_cycles;  // streaming cycles on the RTL
-  uint64_t rtl_tile_io_cycles = 0;     // RTL cycles loading and storing tiles
+  std::optional<uint64_t> rtl_cycles;  // the RTL's cycles: streaming plus tile load and store
+  uint64_t rtl_stream_cycles = 0;      // of which streaming fragments (first offer to drain)
+  uint64_t rtl_tile_cycles = 0;        // of which loading and storing tiles
   uint64_t rtl_mismatch_pixels = 0;    // pixels where the RTL's frame differs from the golden's
   ImageError error;               // against the exact reference
   ImageError error_ss;            // against the supersampled reference

@@ -715,6 +715,18 @@ module zb_rop
       (x_valid_q[6] && x11_cwe && x6_addr == x11_addr) |=> fwd_hit_q);
   ColorBypassCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
       (x_valid_q[6] && x10_cwe && x6_addr == x10_addr) |=> (byp_hit_q && x11_cwe));
+  // Every path a read can take to its pixel's newest word is reached (`make coverage` lists
+  // them, with the window's reorder and full covers, and fails on one never reached).
+  DepthForwardPath: cover property (@(posedge clk_i) disable iff (!rst_ni)
+      issue && x4_dwe && m_addr_q == x4_addr);
+  CovForwardPath: cover property (@(posedge clk_i) disable iff (!rst_ni)
+      issue && x4_vwe && m_addr_q == x4_addr);
+  ColorForwardPath: cover property (@(posedge clk_i) disable iff (!rst_ni)
+      x_valid_q[6] && x11_cwe && x6_addr == x11_addr);
+  ColorBypassPath: cover property (@(posedge clk_i) disable iff (!rst_ni)
+      x_valid_q[6] && x10_cwe && x6_addr == x10_addr);
+  // The skid register takes a fragment (I held by a full window).
+  SkidTaken: cover property (@(posedge clk_i) disable iff (!rst_ni) accept && !i_free);
   // frag_ready_o's flop is "S empty": it never drops for another reason.
   ReadyIsSkidEmpty: assert property (@(posedge clk_i) disable iff (!rst_ni)
       in_ready_q == !s_valid_q);

@@ -147,6 +147,10 @@ TEST(LabRun, TinyCaseCsv) {
   EXPECT_EQ(cell(1, "method"), "unsorted");
   EXPECT_EQ(cell(1, "passes"), "2");
   EXPECT_NE(cell(1, "rtl_cycles"), "");
+  // The total is its two parts, both there.
+  EXPECT_NE(cell(1, "rtl_tile_cycles"), "0");
+  EXPECT_EQ(std::stoull(cell(1, "rtl_cycles")),
+            std::stoull(cell(1, "rtl_stream_cycles")) + std::stoull(cell(1, "rtl_tile_cycles")));
   EXPECT_EQ(cell(1, "rtl_mismatch_pixels"), "0");
   EXPECT_GT(std::stod(cell(1, "rmse")), 0.0);  // unsorted gets the left half wrong
 
