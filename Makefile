@@ -140,10 +140,10 @@ coverage: setup ## RTL line and toggle coverage of the suites, annotated: out/co
 	@echo "open: $(COV_DIR)/annotated/zb_rop.sv (and the other .sv there); lines marked %00 never ran"
 	@# The RTL's cover properties (forward, bypass, reorder, full window): each must be reached.
 	@tr '\001\002' '|=' < $(COV_DIR)/merged.dat | awk '/^C / && /page=v_user/ { \
-	    n = match($$0, /\|o=[^|]*/) ? substr($$0, RSTART + 3, RLENGTH - 3) : "?"; \
-	    h = match($$0, /\|h=[^|]*/) ? substr($$0, RSTART + 3, RLENGTH - 3) : ""; \
-	    printf "cover: %-48s %12d%s\n", h "." n, $$NF, $$NF > 0 ? "" : "  NEVER REACHED"; \
-	    if ($$NF == 0) bad++ } END { exit bad > 0 }' > $(COV_DIR)/covers.txt; \
+	    h = match($$0, /\|h=[^|'"'"']*/) ? substr($$0, RSTART + 3, RLENGTH - 3) : "?"; \
+	    sub(/^zb_rop\.zb_rop\./, "", h); gsub(/__BRA__/, "[", h); gsub(/__KET__/, "]", h); \
+	    printf "cover: %-44s %12d%s\n", h, $$NF, ($$NF > 0 ? "" : "  NEVER REACHED"); \
+	    if ($$NF == 0) bad++ } END { exit (bad > 0) }' > $(COV_DIR)/covers.txt; \
 	  rc=$$?; cat $(COV_DIR)/covers.txt; \
 	  test $$rc -eq 0 || { echo "coverage: a cover property was never reached"; exit 1; }
 
