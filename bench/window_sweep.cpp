@@ -18,7 +18,6 @@
 #include "rtl_params.h"
 #include "rtl_timing.h"
 #include "scene/builtin_scenes.h"
-#include "tile_bins.h"
 
 namespace zb {
 namespace {
@@ -49,14 +48,8 @@ class Sweep final : public Backend {
     fragments_ += frags_.size();
     for (size_t w = 0; w < std::size(kWindows); ++w) {
       IssueSchedule schedule(kWindows[w]);
-      for (size_t t = 0; t + 1 < bins_.first.size(); ++t) {
-        pixels_.clear();
-        for (uint32_t k = bins_.first[t]; k < bins_.first[t + 1]; ++k) {
-          const Fragment& f = frags_[bins_.order[k]];
-          pixels_.push_back(uint32_t(f.y) * uint32_t(width_) + f.x);
-        }
-        cycles_[w] += schedule.run(pixels_.data(), pixels_.size());
-      }
+      for (size_t t = 0; t + 1 < bins_.first.size(); ++t)
+        cycles_[w] += schedule.run_tile(bins_, t, frags_.data(), width_);
     }
     return golden_.end_pass();
   }
@@ -70,7 +63,6 @@ class Sweep final : public Backend {
   int width_ = 0, height_ = 0;
   std::vector<Fragment> frags_;
   TileBins bins_;
-  std::vector<uint32_t> pixels_;
   uint64_t fragments_ = 0;
   uint64_t cycles_[std::size(kWindows)] = {};
 };

@@ -67,17 +67,26 @@ uint64_t IssueSchedule::run(const uint32_t* pixel, size_t n, uint64_t* issue) {
       entries_.push_back(Entry{p, uint32_t(next), earliest});
       ++next;
     } else if (!picked_one) {
-      // Nothing picked and nothing taken: nothing changes until the first entry frees.
+      // Nothing picked and nothing taken: nothing changes until the first entry frees (the
+      // oldest entry of each pixel has a finite `earliest`).
       uint64_t wake = kNever;
       for (const Entry& e : entries_) wake = std::min(wake, e.earliest);
-      if (wake != kNever && wake > c + 1) {
-        c = wake;
-        continue;
-      }
+      c = std::max(c + 1, wake);
+      continue;
     }
     ++c;
   }
   return last_issue + kRtlDrain;
+}
+
+uint64_t IssueSchedule::run_tile(const TileBins& bins, size_t tile, const Fragment* f, int width,
+                                 uint64_t* issue) {
+  tile_pixels_.clear();
+  for (uint32_t k = bins.first[tile]; k < bins.first[tile + 1]; ++k) {
+    const Fragment& g = f[bins.order[k]];
+    tile_pixels_.push_back(uint32_t(g.y) * uint32_t(width) + g.x);
+  }
+  return run(tile_pixels_.data(), tile_pixels_.size(), issue);
 }
 
 }  // namespace zb

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rtl_params.h"
+#include "tile_bins.h"
 
 namespace zb {
 
@@ -32,8 +33,10 @@ class IssueSchedule {
   // back-pressure; writes each one's issue cycle to issue[k] when `issue` is not null. Returns
   // the stream's cycles: the last issue + kRtlDrain (0 for an empty stream).
   uint64_t run(const uint32_t* pixel, size_t n, uint64_t* issue = nullptr);
-
-  unsigned window() const { return window_; }
+  // The same for tile `tile` of `bins` (the driver's stream of that tile), the fragments `f` of
+  // a frame `width` pixels wide; issue[k] for the tile's k-th fragment.
+  uint64_t run_tile(const TileBins& bins, size_t tile, const Fragment* f, int width,
+                    uint64_t* issue = nullptr);
 
  private:
   struct Entry {
@@ -49,6 +52,7 @@ class IssueSchedule {
   std::vector<uint64_t> last_;      // the pixel's last issue cycle
   std::vector<uint32_t> pending_;   // the pixel's fragments in the window
   std::vector<Entry> entries_;      // the window, oldest first
+  std::vector<uint32_t> tile_pixels_;  // run_tile's stream
 };
 
 }  // namespace zb

@@ -47,14 +47,9 @@ PassStats ZbGoldenSc::run_pass() {
   for (size_t t = 0; t + 1 < bins_.first.size(); ++t) {
     const uint32_t b = bins_.first[t], e = bins_.first[t + 1];
     if (b == e) continue;
-    pixels_.clear();
-    for (uint32_t k = b; k < e; ++k) {
-      const Fragment& f = frags_[bins_.order[k]];
-      pixels_.push_back(uint32_t(fb.index(f.x, f.y)));
-    }
-    issue_.resize(pixels_.size());
-    const uint64_t cycles = schedule_.run(pixels_.data(), pixels_.size(), issue_.data());
-    order_.resize(pixels_.size());
+    issue_.resize(e - b);
+    const uint64_t cycles = schedule_.run_tile(bins_, t, frags_.data(), fb.width, issue_.data());
+    order_.resize(e - b);
     for (uint32_t k = 0; k < order_.size(); ++k) order_[k] = k;
     std::sort(order_.begin(), order_.end(),
               [&](uint32_t a, uint32_t c) { return issue_[a] < issue_[c]; });

@@ -39,7 +39,6 @@ class ZbGoldenSc : public sc_core::sc_module {
   std::vector<Fragment> frags_;
   TileBins bins_;
   IssueSchedule schedule_;        // zb_rop's issue window
-  std::vector<uint32_t> pixels_;  // a tile's stream, as frame pixel indices
   std::vector<uint64_t> issue_;   // its issue cycles
   std::vector<uint32_t> order_;   // its fragments in issue order
   uint64_t busy_cycles_ = 0;
