@@ -12,6 +12,7 @@ set(ZBLEND_RTL_DEPTH_BITS 24 CACHE STRING "zb_rop DEPTH_BITS: depth width, 8 to 
 set(ZBLEND_RTL_COV_SAMPLES 16 CACHE STRING "zb_rop COV_SAMPLES: coverage samples, 1, 2, 4, 8 or 16")
 set(ZBLEND_RTL_TILE 64 CACHE STRING "zb_rop TILE_W and TILE_H: square tile, a power of two >= 2")
 set(ZBLEND_RTL_WINDOW 8 CACHE STRING "zb_rop WINDOW: issue window slots, 2 to 16")
+set(ZBLEND_RTL_BEAT 8 CACHE STRING "zb_rop BEAT: tile port pixels per clock, a power of two, 2 to the tile")
 if(NOT ZBLEND_RTL_DEPTH_BITS MATCHES "^[0-9]+$" OR ZBLEND_RTL_DEPTH_BITS LESS 8
    OR ZBLEND_RTL_DEPTH_BITS GREATER 32)
   message(FATAL_ERROR "ZBLEND_RTL_DEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS}: choose 8 to 32")
@@ -25,12 +26,15 @@ endif()
 if(NOT ZBLEND_RTL_WINDOW MATCHES "^([2-9]|1[0-6])$")
   message(FATAL_ERROR "ZBLEND_RTL_WINDOW=${ZBLEND_RTL_WINDOW}: choose 2 to 16")
 endif()
-set(ZBLEND_RTL_PARAMS -GWINDOW=${ZBLEND_RTL_WINDOW} -GDEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS} -GCOV_SAMPLES=${ZBLEND_RTL_COV_SAMPLES}
+if(NOT ZBLEND_RTL_BEAT MATCHES "^(2|4|8|16|32|64|128|256|512|1024)$" OR ZBLEND_RTL_BEAT GREATER ZBLEND_RTL_TILE)
+  message(FATAL_ERROR "ZBLEND_RTL_BEAT=${ZBLEND_RTL_BEAT}: choose a power of two from 2 to the tile (${ZBLEND_RTL_TILE})")
+endif()
+set(ZBLEND_RTL_PARAMS -GWINDOW=${ZBLEND_RTL_WINDOW} -GBEAT=${ZBLEND_RTL_BEAT} -GDEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS} -GCOV_SAMPLES=${ZBLEND_RTL_COV_SAMPLES}
     -GTILE_W=${ZBLEND_RTL_TILE} -GTILE_H=${ZBLEND_RTL_TILE})
 # The same values for the C++ mirrors (rtlmodel/rtl_params.h).
 set(ZBLEND_RTL_DEFINES ZBLEND_RTL_DEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS}
     ZBLEND_RTL_COV_SAMPLES=${ZBLEND_RTL_COV_SAMPLES} ZBLEND_RTL_TILE=${ZBLEND_RTL_TILE}
-    ZBLEND_RTL_WINDOW=${ZBLEND_RTL_WINDOW})
+    ZBLEND_RTL_WINDOW=${ZBLEND_RTL_WINDOW} ZBLEND_RTL_BEAT=${ZBLEND_RTL_BEAT})
 
 # Verilator's optimisation options, the model's threads and the C++ flags of its hot code:
 # chosen by measurement (scripts/verilator_options.sh, docs/bench.md), overridable for it.

@@ -19,7 +19,11 @@ uint64_t tile_pixel_bits(int depth_bits, int coverage_samples) {
 }
 
 uint64_t MethodCost::traffic_bytes(int tile, int depth_bits, int coverage_samples) const {
-  const uint64_t io = 2 * at(tile).tile_io_pixels * tile_pixel_bits(depth_bits, coverage_samples);
+  const std::array<uint64_t, kTilePlanes> bits{32, uint64_t(depth_bits),
+                                               uint64_t(coverage_bits(coverage_samples)),
+                                               uint64_t(depth_bits)};
+  uint64_t io = 0;
+  for (size_t p = 0; p < bits.size(); ++p) io += at(tile).plane_pixels[p] * bits[p];
   const uint64_t access = 32 * (totals.color_reads + totals.color_writes) +
                           uint64_t(depth_bits) * (totals.depth_reads + totals.depth_writes);
   return (io + access + 7) / 8;
@@ -52,12 +56,17 @@ void CostCounter::begin_frame(int width, int height, int depth_bits, Rgba8 clear
     g.size = size;
     g.columns = (width + size - 1) / size;
     g.stream.assign(size_t(g.columns) * size_t((height + size - 1) / size), {});
+    g.states = TileStates(width, height, size, depth_bits, clear_color);
     grids_.push_back(std::move(g));
-    cost_.tiles.push_back(TileCost{size, 0, 0, 0, 0});
+    cost_.tiles.push_back(TileCost{});
+    cost_.tiles.back().tile = size;
   }
 }
 
-void CostCounter::begin_pass(const RopState& state) { inner_.begin_pass(state); }
+void CostCounter::begin_pass(const RopState& state) {
+  inner_.begin_pass(state);
+  state_ = state;
+}
 
 // The driver streams each tile's fragments in pass order (a stable binning).
 void CostCounter::draw(const Fragment* fragments, size_t count) {
@@ -71,9 +80,9 @@ void CostCounter::draw(const Fragment* fragments, size_t count) {
     }
 }
 
-// The driver's run of a pass (rtlmodel/rtl_rop.cpp): per touched tile, load its pixels (clipped to
-// the frame), one cycle to write the state and clear the counters, stream through zb_rop's
-// issue window and drain (IssueSchedule), store.
+// The driver's run of a pass (rtlmodel/rtl_rop.cpp): per touched tile, the setup cycle and the
+// load beats of its planes (tile_io.h; clipped to the frame), stream through zb_rop's issue
+// window and drain (IssueSchedule), the store beats.
 PassStats CostCounter::end_pass() {
   const PassStats s = inner_.end_pass();
   cost_.totals += s;
@@ -84,11 +93,15 @@ PassStats CostCounter::end_pass() {
     for (const uint32_t t : g.touched) {
       const int x0 = int(t % uint32_t(g.columns)) * g.size;
       const int y0 = int(t / uint32_t(g.columns)) * g.size;
-      const uint64_t pixels =
-          uint64_t(std::min(g.size, width_ - x0)) * uint64_t(std::min(g.size, height_ - y0));
+      const int w = std::min(g.size, width_ - x0), h = std::min(g.size, height_ - y0);
+      const uint64_t beats = tile_beats(w, h, beat_), pixels = uint64_t(w) * uint64_t(h);
+      const TileIo io = g.states.plan(t, state_);
+      g.states.stored(t, io.store);
       c.stream_cycles += schedule_.run(g.stream[t].data(), g.stream[t].size());
-      c.tile_io_cycles += 2 * pixels + 1;
-      c.tile_io_pixels += pixels;
+      c.tile_io_cycles += tile_io_cycles(beats, io);
+      c.tile_beats += (io.load ? beats : 0) + (io.store ? beats : 0);
+      for (int p = 0; p < kTilePlanes; ++p)
+        c.plane_pixels[size_t(p)] += pixels * ((io.load >> p & 1) + (io.store >> p & 1));
       g.stream[t].clear();
     }
     c.tiles_loaded += g.touched.size();
@@ -99,6 +112,7 @@ PassStats CostCounter::end_pass() {
 
 void CostCounter::frame_op(const FrameOp& op) {
   inner_.frame_op(op);
+  for (Grid& g : grids_) g.states.frame_op(op);
   ++cost_.frame_ops;
   cost_.frame_op_pixels += uint64_t(width_) * uint64_t(height_);
 }

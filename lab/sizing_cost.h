@@ -4,11 +4,13 @@
 // once.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
 #include "rop/backend.h"
 #include "rtl_timing.h"
+#include "tile_io.h"
 
 namespace zb {
 
@@ -17,8 +19,10 @@ struct TileCost {
   int tile = 0;
   uint64_t tiles_loaded = 0;    // summed over passes: the tiles each pass touches
   uint64_t stream_cycles = 0;   // per touched tile: issue cycles as zb_rop's window, drain
-  uint64_t tile_io_cycles = 0;  // per touched tile: load and store a word a clock, 1 state write
-  uint64_t tile_io_pixels = 0;  // pixels loaded, and again stored
+  uint64_t tile_io_cycles = 0;  // per touched tile: setup, load and store beats (tile_io.h)
+  uint64_t tile_beats = 0;      // beats loaded and stored
+  // Per plane (colour, depth, coverage, peel): pixels loaded plus pixels stored.
+  std::array<uint64_t, kTilePlanes> plane_pixels{};
   // The RTL's clock cycles for the frame without back-pressure (`zblend render --backend rtl`
   // reports them as rtl_cycles plus the tile I/O).
   uint64_t rtl_cycles() const { return stream_cycles + tile_io_cycles; }
@@ -35,7 +39,7 @@ struct MethodCost {
   // The figure "cheapest" ranks by: RTL cycles at `tile`, plus a cycle per pixel of every
   // frame operation (a tile port writes a word a clock).
   uint64_t cycles(int tile) const { return at(tile).rtl_cycles() + frame_op_pixels; }
-  // Bytes moved, rounded up from bits: tile loads and stores (every plane, tile_pixel_bits) and
+  // Bytes moved, rounded up from bits: tile loads and stores (each plane its width) and
   // the datapath's colour (32 bits) and depth (depth_bits) reads and writes in tile memory.
   uint64_t traffic_bytes(int tile, int depth_bits, int coverage_samples) const;
   // The tile size of least cycles (then least bytes, then the smaller tile: less memory).
@@ -49,7 +53,8 @@ uint64_t tile_pixel_bits(int depth_bits, int coverage_samples);
 // Wraps a backend, forwarding every call, and counts the method's cost.
 class CostCounter final : public Backend {
  public:
-  explicit CostCounter(Backend& inner) : inner_(inner) {}
+  // `beat`: the tile port's pixels per clock (zb_rop's BEAT; other widths for the sweep).
+  explicit CostCounter(Backend& inner, int beat = kRtlBeat) : inner_(inner), beat_(beat) {}
   const char* name() const override { return inner_.name(); }
   using Backend::begin_frame;
   void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
@@ -70,8 +75,11 @@ class CostCounter final : public Backend {
     int size = 0, columns = 0;
     std::vector<std::vector<uint32_t>> stream;  // per tile
     std::vector<uint32_t> touched;  // tiles with a fragment, in first-touch order
+    TileStates states;
   };
   Backend& inner_;
+  int beat_;
+  RopState state_;
   int width_ = 0, height_ = 0;
   std::vector<Grid> grids_;
   IssueSchedule schedule_;

@@ -36,4 +36,12 @@ package zb_pkg;
     logic        depth_test;   // [0]
   } pass_state_t;
 
+  // The planes of the resident tile, as the tile port selects them (tile_planes_i).
+  typedef struct packed {
+    logic peel;      // [3]
+    logic coverage;  // [2]
+    logic depth;     // [1]
+    logic color;     // [0]
+  } planes_t;
+
 endpackage

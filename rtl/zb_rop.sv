@@ -23,7 +23,9 @@ module zb_rop
   parameter int unsigned CNT_W      = 32,
   parameter int unsigned COV_SAMPLES = 16,  // N of the sample pattern: 1, 2, 4, 8 or 16
   parameter int unsigned WINDOW     = 8,    // issue window slots, 2..16
+  parameter int unsigned BEAT       = 8,    // tile port pixels per clock: 2..TILE_W, power of two
   localparam int unsigned AddrW     = $clog2(TILE_W * TILE_H),
+  localparam int unsigned BeatAW    = $clog2(TILE_W * TILE_H / BEAT),
   localparam int unsigned CovW      = $clog2(COV_SAMPLES + 1)  // coverage count 0..N
 ) (
   input  logic                  clk_i,
@@ -40,17 +42,23 @@ module zb_rop
   input  logic [31:0]           frag_rgba_i,
   input  logic [CovW-1:0]       frag_cov_i,
   input  logic                  stall_i,
-  input  logic                  tile_req_i,
-  input  logic                  tile_we_i,
-  input  logic [AddrW-1:0]      tile_addr_i,
-  input  logic [31:0]           tile_wcolor_i,
-  input  logic [DEPTH_BITS-1:0] tile_wdepth_i,
-  input  logic [CovW-1:0]       tile_wcov_i,
-  input  logic [DEPTH_BITS-1:0] tile_wpeel_i,
-  output logic [31:0]           tile_rcolor_o,
-  output logic [DEPTH_BITS-1:0] tile_rdepth_o,
-  output logic [CovW-1:0]       tile_rcov_o,
-  output logic [DEPTH_BITS-1:0] tile_rpeel_o,
+  // Tile port (docs/rtl.md "Tile port"): a beat of BEAT pixels of a row a clock, lane b at
+  // [b*width +: width]. tile_req_i with tile_we_i loads the beat at tile_addr_i into the planes
+  // of tile_planes_i; without, reads it (the data next clock). tile_clear_i fast-clears the
+  // planes of tile_planes_i to lane 0 of the write data: no beat moves.
+  input  logic                       tile_req_i,
+  input  logic                       tile_we_i,
+  input  logic                       tile_clear_i,
+  input  zb_pkg::planes_t            tile_planes_i,
+  input  logic [BeatAW-1:0]          tile_addr_i,
+  input  logic [BEAT*32-1:0]         tile_wcolor_i,
+  input  logic [BEAT*DEPTH_BITS-1:0] tile_wdepth_i,
+  input  logic [BEAT*CovW-1:0]       tile_wcov_i,
+  input  logic [BEAT*DEPTH_BITS-1:0] tile_wpeel_i,
+  output logic [BEAT*32-1:0]         tile_rcolor_o,
+  output logic [BEAT*DEPTH_BITS-1:0] tile_rdepth_o,
+  output logic [BEAT*CovW-1:0]       tile_rcov_o,
+  output logic [BEAT*DEPTH_BITS-1:0] tile_rpeel_o,
   output logic                  busy_o,
   input  logic                  cnt_clear_i,
   output logic [CNT_W-1:0]      cnt_frag_in_o,
@@ -61,7 +69,9 @@ module zb_rop
   output logic [CNT_W-1:0]      cnt_color_reads_o,
   output logic [CNT_W-1:0]      cnt_color_writes_o,
   output logic [CNT_W-1:0]      cnt_stall_cycles_o,
-  output logic [CNT_W-1:0]      cnt_cycles_o
+  output logic [CNT_W-1:0]      cnt_cycles_o,
+  output logic [CNT_W-1:0]      cnt_tile_loads_o,    // beats loaded
+  output logic [CNT_W-1:0]      cnt_tile_stores_o    // beats read
 );
 
   localparam int unsigned XW    = $clog2(TILE_W);
@@ -78,6 +88,9 @@ module zb_rop
   if (COV_SAMPLES < 1 || COV_SAMPLES > 16 || (COV_SAMPLES & (COV_SAMPLES - 1)) != 0)
   begin : g_bad_cov
     $error("zb_rop: COV_SAMPLES must be 1, 2, 4, 8 or 16");
+  end
+  if (BEAT < 2 || BEAT > TILE_W || (BEAT & (BEAT - 1)) != 0) begin : g_bad_beat
+    $error("zb_rop: BEAT must be a power of two, 2..TILE_W");
   end
 `endif
 
@@ -132,7 +145,7 @@ module zb_rop
   logic                  i_free;       // I's fragment leaves (or I is empty) at this edge
   logic                  m_adv;        // the window takes I's fragment at this edge
 
-  assign frag_ready_o = in_ready_q & ~stall_i & ~tile_req_i;
+  assign frag_ready_o = in_ready_q & ~stall_i & ~tile_req_i & ~tile_clear_i;
   assign accept       = frag_valid_i & frag_ready_o;
   assign dx           = frag_x_i - tile_x0_i;
   assign dy           = frag_y_i - tile_y0_i;
@@ -209,8 +222,8 @@ module zb_rop
   localparam int unsigned Last = 11;
   logic [Last:1]         x_valid_q;
   logic [Last*AddrW-1:0] x_addr_q;          // Xk at [(k-1)*AddrW +: AddrW]
-  logic [AddrW-1:0]      x1_addr, x4_addr, x6_addr, x10_addr, x11_addr;
-  assign x1_addr  = x_addr_q[0*AddrW +: AddrW];
+  logic [AddrW-1:0]      x3_addr, x4_addr, x6_addr, x10_addr, x11_addr;
+  assign x3_addr  = x_addr_q[2*AddrW +: AddrW];
   assign x4_addr  = x_addr_q[3*AddrW +: AddrW];
   assign x6_addr  = x_addr_q[5*AddrW +: AddrW];
   assign x10_addr = x_addr_q[9*AddrW +: AddrW];
@@ -258,57 +271,72 @@ module zb_rop
   zb_plane #(
     .WIDTH    (DEPTH_BITS),
     .WORDS    (Words),
+    .BEAT     (BEAT),
     .FORWARDED(1'b1)
   ) u_depth_plane (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
     .tile_req_i  (tile_req_i),
     .tile_we_i   (tile_we_i),
+    .tile_en_i   (tile_planes_i.depth),
+    .tile_clear_i(tile_clear_i),
     .tile_addr_i (tile_addr_i),
     .tile_wdata_i(tile_wdepth_i),
+    .tile_rdata_o(tile_rdepth_o),
     .pipe_re_i   (issue),
     .pipe_raddr_i(m_addr_q),
     .pipe_we_i   (x4_dwe),
     .pipe_waddr_i(x4_addr),
     .pipe_wdata_i(x4_z_q),
+    .pipe_wnext_i(x3_addr),
     .rdata_o     (dmem_rdata)
   );
 
   zb_plane #(
     .WIDTH    (CovW),
     .WORDS    (Words),
+    .BEAT     (BEAT),
     .FORWARDED(1'b1)
   ) u_cov_plane (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
     .tile_req_i  (tile_req_i),
     .tile_we_i   (tile_we_i),
+    .tile_en_i   (tile_planes_i.coverage),
+    .tile_clear_i(tile_clear_i),
     .tile_addr_i (tile_addr_i),
     .tile_wdata_i(tile_wcov_i),
+    .tile_rdata_o(tile_rcov_o),
     .pipe_re_i   (issue),
     .pipe_raddr_i(m_addr_q),
     .pipe_we_i   (x4_vwe),
     .pipe_waddr_i(x4_addr),
     .pipe_wdata_i(x4_cov_new_q),
+    .pipe_wnext_i(x3_addr),
     .rdata_o     (vmem_rdata)
   );
 
   // Peel: written only by the tile port, so its word is constant during a pass.
   zb_plane #(
     .WIDTH(DEPTH_BITS),
-    .WORDS(Words)
+    .WORDS(Words),
+    .BEAT (BEAT)
   ) u_peel_plane (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
     .tile_req_i  (tile_req_i),
     .tile_we_i   (tile_we_i),
+    .tile_en_i   (tile_planes_i.peel),
+    .tile_clear_i(tile_clear_i),
     .tile_addr_i (tile_addr_i),
     .tile_wdata_i(tile_wpeel_i),
+    .tile_rdata_o(tile_rpeel_o),
     .pipe_re_i   (issue),
     .pipe_raddr_i(m_addr_q),
     .pipe_we_i   (1'b0),
     .pipe_waddr_i(m_addr_q),
     .pipe_wdata_i(m_z_q),
+    .pipe_wnext_i(m_addr_q),
     .rdata_o     (pmem_rdata)
   );
 
@@ -492,19 +520,24 @@ module zb_rop
   zb_plane #(
     .WIDTH    (32),
     .WORDS    (Words),
+    .BEAT     (BEAT),
     .FORWARDED(1'b1)
   ) u_color_plane (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
     .tile_req_i  (tile_req_i),
     .tile_we_i   (tile_we_i),
+    .tile_en_i   (tile_planes_i.color),
+    .tile_clear_i(tile_clear_i),
     .tile_addr_i (tile_addr_i),
     .tile_wdata_i(tile_wcolor_i),
+    .tile_rdata_o(tile_rcolor_o),
     .pipe_re_i   (x_valid_q[6]),
     .pipe_raddr_i(x6_addr),
     .pipe_we_i   (x11_cwe),
     .pipe_waddr_i(x11_addr),
     .pipe_wdata_i(x11_color),
+    .pipe_wnext_i(x10_addr),
     .rdata_o     (cmem_rdata)
   );
 
@@ -522,10 +555,6 @@ module zb_rop
     .color_o(x11_color)
   );
 
-  assign tile_rcolor_o = cmem_rdata;
-  assign tile_rdepth_o = dmem_rdata;
-  assign tile_rcov_o   = vmem_rdata;
-  assign tile_rpeel_o  = pmem_rdata;
   assign busy_o        = i_valid_q | s_valid_q | w_busy | m_valid_q | (|x_valid_q);
 
   // ---------------------------------------------------------------------------------------
@@ -627,7 +656,7 @@ module zb_rop
   // ---------------------------------------------------------------------------------------
   // Counters (docs/datapath.md "Counters"); fragment events are counted in X4.
   // ---------------------------------------------------------------------------------------
-  localparam int unsigned NumCnt = 9;
+  localparam int unsigned NumCnt = 11;
 
   logic                    x4_valid, x4_color_on, reads_dest;
   logic [NumCnt-1:0]       cnt_inc;
@@ -650,6 +679,8 @@ module zb_rop
     cnt_inc[6] = x4_color_on;                           // color_writes
     cnt_inc[7] = frag_valid_i & ~frag_ready_o;          // stall cycles
     cnt_inc[8] = 1'b1;                                  // cycles
+    cnt_inc[9] = tile_req_i & tile_we_i;                // tile beats loaded
+    cnt_inc[10] = tile_req_i & ~tile_we_i;              // tile beats read
   end
 
   zb_counters #(
@@ -672,6 +703,8 @@ module zb_rop
   assign cnt_color_writes_o = cnt_all[6*CNT_W +: CNT_W];
   assign cnt_stall_cycles_o = cnt_all[7*CNT_W +: CNT_W];
   assign cnt_cycles_o       = cnt_all[8*CNT_W +: CNT_W];
+  assign cnt_tile_loads_o   = cnt_all[9*CNT_W +: CNT_W];
+  assign cnt_tile_stores_o  = cnt_all[10*CNT_W +: CNT_W];
 
   // ---------------------------------------------------------------------------------------
   // Assertions
@@ -680,7 +713,7 @@ module zb_rop
   // The tile port is used only while no fragment is in flight (its address and write would
   // collide with the pipeline's).
   TilePortIdle: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      tile_req_i |-> !busy_o);
+      (tile_req_i || tile_clear_i) |-> !busy_o);
   // The pass state is written only while idle (a write in the cycle of an accept applies to
   // that fragment).
   StateWriteIdle: assert property (@(posedge clk_i) disable iff (!rst_ni)
@@ -739,10 +772,6 @@ module zb_rop
       (x_valid_q[3] && st_cov && x3_dwe) |-> x3_lt_q);
   CovNeverShrinks: assert property (@(posedge clk_i) disable iff (!rst_ni)
       (x_valid_q[3] && st_cov) |-> (x3_cov_new >= x3_cs_q));
-  // The peel plane is read-only during a pass (its pipe write is tied off and TilePortIdle
-  // keeps the tile port away), so the word a fragment read is still the memory's word.
-  PeelStable: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      x_valid_q[1] |-> (u_peel_plane.u_mem.mem_q[x1_addr] == pmem_rdata));
   // A fragment that passes with the peel test on lies strictly behind the peel plane.
   PeelPassBehind: assert property (@(posedge clk_i) disable iff (!rst_ni)
       (x_valid_q[3] && x3_pass && st_peel_test && !st_cov) |-> x3_behind_q);

@@ -4,8 +4,8 @@
 #pragma once
 
 #if !defined(ZBLEND_RTL_DEPTH_BITS) || !defined(ZBLEND_RTL_COV_SAMPLES) || !defined(ZBLEND_RTL_TILE) || \
-    !defined(ZBLEND_RTL_WINDOW)
-#error "ZBLEND_RTL_DEPTH_BITS, _COV_SAMPLES, _TILE and _WINDOW come from CMake: link zbrtl_common"
+    !defined(ZBLEND_RTL_WINDOW) || !defined(ZBLEND_RTL_BEAT)
+#error "ZBLEND_RTL_DEPTH_BITS, _COV_SAMPLES, _TILE, _WINDOW and _BEAT come from CMake: link zbrtl_common"
 #endif
 namespace zb {
 
@@ -14,5 +14,6 @@ constexpr int kRtlTileH = ZBLEND_RTL_TILE;
 constexpr int kRtlDepthBits = ZBLEND_RTL_DEPTH_BITS;
 constexpr int kRtlCoverageSamples = ZBLEND_RTL_COV_SAMPLES;  // COV_SAMPLES
 constexpr unsigned kRtlWindow = ZBLEND_RTL_WINDOW;           // WINDOW: issue window slots
+constexpr int kRtlBeat = ZBLEND_RTL_BEAT;                    // BEAT: tile port pixels per clock
 
 }  // namespace zb

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <limits>
+#include <type_traits>
 #include <stdexcept>
 #include <string>
 
@@ -42,6 +43,7 @@ static_assert(VParams::TILE_H == kRtlTileH, "tb mirror of TILE_H disagrees with 
 static_assert(VParams::DEPTH_BITS == kRtlDepthBits, "tb mirror of DEPTH_BITS disagrees");
 static_assert(VParams::COV_SAMPLES == kRtlCoverageSamples, "tb mirror of COV_SAMPLES disagrees");
 static_assert(VParams::CNT_W == 32, "the driver reads 32-bit counters");
+static_assert(VParams::BEAT == kRtlBeat, "tb mirror of BEAT disagrees with the RTL");
 
 namespace {
 
@@ -70,6 +72,38 @@ uint32_t pack_rgba(Rgba8 c) {
 }
 Rgba8 unpack_rgba(uint32_t v) {
   return {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
+}
+
+// Lane `lane` (`width` bits) of a tile port: a Verilated integer up to 64 bits, VlWide beyond.
+template <class Port>
+void put_lane(Port& port, unsigned lane, unsigned width, uint32_t v) {
+  const unsigned lo = lane * width;
+  if constexpr (std::is_integral_v<Port>) {
+    const uint64_t m = (width >= 64 ? ~uint64_t{0} : (uint64_t{1} << width) - 1) << lo;
+    port = Port((uint64_t(port) & ~m) | (uint64_t{v} << lo & m));
+  } else {
+    for (unsigned done = 0; done < width;) {
+      const unsigned pos = lo + done, off = pos % 32, n = std::min(32 - off, width - done);
+      const uint32_t m = (n == 32 ? ~0u : (1u << n) - 1) << off;
+      port[pos / 32] = (port[pos / 32] & ~m) | (v >> done << off & m);
+      done += n;
+    }
+  }
+}
+template <class Port>
+uint32_t get_lane(const Port& port, unsigned lane, unsigned width) {
+  const unsigned lo = lane * width;
+  if constexpr (std::is_integral_v<Port>) {
+    return uint32_t(uint64_t(port) >> lo & ((uint64_t{1} << width) - 1));
+  } else {
+    uint32_t v = 0;
+    for (unsigned done = 0; done < width;) {
+      const unsigned pos = lo + done, off = pos % 32, n = std::min(32 - off, width - done);
+      v |= (port[pos / 32] >> off & (n == 32 ? ~0u : (1u << n) - 1)) << done;
+      done += n;
+    }
+    return v;
+  }
 }
 
 // A fragment as streamed: the datapath's fields and its index in the pass.
@@ -146,6 +180,8 @@ struct Sim {
     top->stall_i = 0;
     top->tile_req_i = 0;
     top->tile_we_i = 0;
+    top->tile_clear_i = 0;
+    top->tile_planes_i = 0;
     top->cnt_clear_i = 0;
   }
 
@@ -176,6 +212,7 @@ struct RtlRop::Impl {
   std::vector<Streamed> binned;     // frags in tile order, stable
   std::vector<uint32_t> tile_first; // per tile, start in `binned`; one extra at the end
   std::vector<TileRun> runs;
+  TileStates tiles;                 // the frame's planes per tile: cleared or stored
   uint64_t pass_no = 0;
   bool in_pass = false;
   uint64_t io_cycles = 0, stalls = 0;
@@ -189,37 +226,57 @@ struct RtlRop::Impl {
     return splitmix64(opt.seed ^ splitmix64(pass * 0x100000001b3ull + tile));
   }
 
-  // Loads the tile at (x0, y0) from `src`, runs `n` fragments, stores it into `dst`.
+  // Runs tile (x0, y0) of a pass: the setup cycle (pass state, counter clear, fast clear of the
+  // planes `io` clears), the load beats of the planes it loads from `src`, `n` fragments, the
+  // drain, the store beats; the stored planes go to `dst`.
   void run_tile(Sim& s, const Framebuffer& src, Framebuffer& dst, int x0, int y0,
-                const Streamed* f, size_t n, uint64_t seed, uint64_t* accept_out, TileRun& run,
-                PassStats& stats) const {
+                const TileIo& io, const Streamed* f, size_t n, uint64_t seed,
+                uint64_t* accept_out, TileRun& run, PassStats& stats) const {
     VModel& t = *s.top;
     const int w = std::min(kRtlTileW, src.width - x0), h = std::min(kRtlTileH, src.height - y0);
+    const int beats_x = (w + kRtlBeat - 1) / kRtlBeat;
+    constexpr unsigned cw = 32, dw = kRtlDepthBits, vw = coverage_bits(kRtlCoverageSamples);
     run.x0 = x0;
     run.y0 = y0;
+    run.io = io;
     run.load_begin = s.cycle;
-    t.tile_req_i = 1;
-    t.tile_we_i = 1;
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
-        const size_t i = src.index(x0 + x, y0 + y);
-        t.tile_addr_i = y * kRtlTileW + x;
-        t.tile_wcolor_i = pack_rgba(src.color[i]);
-        t.tile_wdepth_i = src.depth[i];
-        t.tile_wcov_i = src.coverage[i];
-        t.tile_wpeel_i = src.peel[i];
-        s.tick();
-      }
-    t.tile_req_i = 0;
-    t.tile_we_i = 0;
     t.tile_x0_i = x0;
     t.tile_y0_i = y0;
     t.state_i = pack_state(state);
     t.state_we_i = 1;
     t.cnt_clear_i = 1;
+    t.tile_clear_i = io.clear != 0;
+    t.tile_planes_i = io.clear;
+    put_lane(t.tile_wcolor_i, 0, cw, io.clear_value[0]);
+    put_lane(t.tile_wdepth_i, 0, dw, io.clear_value[1]);
+    put_lane(t.tile_wcov_i, 0, vw, io.clear_value[2]);
+    put_lane(t.tile_wpeel_i, 0, dw, io.clear_value[3]);
     s.tick();
     t.state_we_i = 0;
     t.cnt_clear_i = 0;
+    t.tile_clear_i = 0;
+    if (io.load) {
+      t.tile_req_i = 1;
+      t.tile_we_i = 1;
+      t.tile_planes_i = io.load;
+      for (int y = 0; y < h; ++y)
+        for (int bx = 0; bx < beats_x; ++bx) {
+          t.tile_addr_i = (y * kRtlTileW + bx * kRtlBeat) / kRtlBeat;
+          for (int b = 0; b < kRtlBeat; ++b) {
+            const int x = bx * kRtlBeat + b;
+            if (x >= w) break;  // lanes past the frame's edge carry what they carried
+            const size_t i = src.index(x0 + x, y0 + y);
+            put_lane(t.tile_wcolor_i, unsigned(b), cw, pack_rgba(src.color[i]));
+            put_lane(t.tile_wdepth_i, unsigned(b), dw, src.depth[i]);
+            put_lane(t.tile_wcov_i, unsigned(b), vw, src.coverage[i]);
+            put_lane(t.tile_wpeel_i, unsigned(b), dw, src.peel[i]);
+          }
+          s.tick();
+        }
+      t.tile_req_i = 0;
+      t.tile_we_i = 0;
+    }
+    t.tile_planes_i = 0;
 
     run.stream_begin = s.cycle;
     XorShift rng(seed);
@@ -281,19 +338,33 @@ struct RtlRop::Impl {
     if (uint64_t{t.cnt_frag_killed_o} != uint64_t{t.cnt_frag_in_o} - t.cnt_frag_passed_o)
       throw std::runtime_error("rtl: cnt_frag_killed_o != cnt_frag_in_o - cnt_frag_passed_o");
 
-    t.tile_req_i = 1;
-    t.tile_we_i = 0;
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
-        t.tile_addr_i = y * kRtlTileW + x;
-        s.tick();
-        const size_t i = dst.index(x0 + x, y0 + y);
-        dst.color[i] = unpack_rgba(t.tile_rcolor_o);
-        dst.depth[i] = t.tile_rdepth_o;
-        dst.coverage[i] = t.tile_rcov_o;
-        dst.peel[i] = t.tile_rpeel_o;
-      }
-    t.tile_req_i = 0;
+    if (io.store) {
+      t.tile_req_i = 1;
+      t.tile_we_i = 0;
+      for (int y = 0; y < h; ++y)
+        for (int bx = 0; bx < beats_x; ++bx) {
+          t.tile_addr_i = (y * kRtlTileW + bx * kRtlBeat) / kRtlBeat;
+          s.tick();
+          for (int b = 0; b < kRtlBeat; ++b) {
+            const int x = bx * kRtlBeat + b;
+            if (x >= w) break;
+            const size_t i = dst.index(x0 + x, y0 + y);
+            if (io.store & kPlaneColor) dst.color[i] = unpack_rgba(get_lane(t.tile_rcolor_o, unsigned(b), cw));
+            if (io.store & kPlaneDepth) dst.depth[i] = get_lane(t.tile_rdepth_o, unsigned(b), dw);
+            if (io.store & kPlaneCoverage) dst.coverage[i] = uint8_t(get_lane(t.tile_rcov_o, unsigned(b), vw));
+          }
+        }
+      t.tile_req_i = 0;
+    }
+    run.load_beats = t.cnt_tile_loads_o;
+    run.store_beats = t.cnt_tile_stores_o;
+    const uint64_t beats = tile_beats(w, h, kRtlBeat);
+    if (run.load_beats != (io.load ? beats : 0) || run.store_beats != (io.store ? beats : 0))
+      throw std::runtime_error("rtl: tile (" + std::to_string(x0) + "," + std::to_string(y0) +
+                               ") counted " + std::to_string(run.load_beats) + " load and " +
+                               std::to_string(run.store_beats) + " store beats, the driver moved " +
+                               std::to_string(io.load ? beats : 0) + " and " +
+                               std::to_string(io.store ? beats : 0));
     run.store_end = s.cycle;
   }
 
@@ -326,6 +397,7 @@ void RtlRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_colo
     throw std::invalid_argument("rtl backend: frame size " + std::to_string(width) + "x" +
                                 std::to_string(height) + " outside 1..65535");
   impl_->fb = Framebuffer(width, height, depth_bits, clear_color, coverage_samples);
+  impl_->tiles = TileStates(width, height, kRtlTileW, depth_bits, clear_color);
   impl_->in_pass = false;
 }
 
@@ -364,9 +436,11 @@ PassStats RtlRop::end_pass() {
     const uint32_t b = m.tile_first[tile], e = m.tile_first[tile + 1];
     if (b == e) continue;
     TileRun run;
-    m.run_tile(m.sim, m.fb, m.fb, int(tile % tx) * kRtlTileW, int(tile / tx) * kRtlTileH,
+    const TileIo io = m.tiles.plan(tile, m.state);
+    m.run_tile(m.sim, m.fb, m.fb, int(tile % tx) * kRtlTileW, int(tile / tx) * kRtlTileH, io,
                m.binned.data() + b, e - b, m.tile_seed(m.pass_no, tile), m.accepted.data(), run,
                stats);
+    m.tiles.stored(tile, io.store);
     m.io_cycles += (run.stream_begin - run.load_begin) + (run.store_end - run.stream_end);
     m.stalls += run.stall_cycles;
     m.runs.push_back(run);
@@ -381,6 +455,7 @@ void RtlRop::frame_op(const FrameOp& op) {
   if (impl_->fb.width == 0) throw std::logic_error("rtl backend: frame_op before begin_frame");
   if (impl_->in_pass) throw std::logic_error("rtl backend: frame_op inside a pass");
   apply_frame_op(impl_->fb, op);
+  impl_->tiles.frame_op(op);
 }
 
 const Framebuffer& RtlRop::framebuffer() const { return impl_->fb; }
@@ -414,7 +489,7 @@ Framebuffer RtlRop::replay_tile(const Framebuffer& before, int x0, int y0,
   std::vector<uint64_t> accepted(m.frags.size(), 0);
   TileRun run;
   PassStats stats;
-  m.run_tile(sim, before, out, x0, y0, m.binned.data() + m.tile_first[tile],
+  m.run_tile(sim, before, out, x0, y0, found->io, m.binned.data() + m.tile_first[tile],
              m.tile_first[tile + 1] - m.tile_first[tile], m.tile_seed(m.pass_no - 1, tile),
              accepted.data(), run, stats);
   return out;

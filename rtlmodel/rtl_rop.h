@@ -10,6 +10,7 @@
 
 #include "rop/backend.h"
 #include "rtl_params.h"
+#include "tile_io.h"
 
 namespace zb {
 
@@ -31,12 +32,15 @@ struct RtlOptions {
 // The cycles of one tile's run in a pass, in cycles since reset.
 struct TileRun {
   int x0 = 0, y0 = 0;          // tile origin, pixels
-  uint64_t load_begin = 0;     // first tile-load cycle
-  uint64_t stream_begin = 0;   // first streaming cycle (after state write and counter clear)
+  TileIo io;                   // the planes fast-cleared, loaded and stored
+  uint64_t load_begin = 0;     // the setup cycle (state write, counter clear, fast clear)
+  uint64_t stream_begin = 0;   // first streaming cycle (after the load beats)
   uint64_t stream_end = 0;     // cycle after the drain (busy_o low)
   uint64_t store_end = 0;      // cycle after the last tile-store read
   uint64_t stall_cycles = 0;   // the RTL's cnt_stall_cycles_o
-  uint64_t rtl_cycles = 0;     // the RTL's cnt_cycles_o
+  uint64_t rtl_cycles = 0;     // the RTL's cnt_cycles_o at the end of the drain
+  uint64_t load_beats = 0;     // the RTL's cnt_tile_loads_o and cnt_tile_stores_o
+  uint64_t store_beats = 0;
 };
 
 class RtlRop final : public Backend {
@@ -58,7 +62,8 @@ class RtlRop final : public Backend {
   void frame_op(const FrameOp& op) override;
   const Framebuffer& framebuffer() const override;
 
-  // Cumulative cycles spent loading and storing tiles, and every cycle since reset.
+  // Cumulative cycles at the tile port (setup, load and store beats), and every cycle since
+  // reset.
   uint64_t tile_io_cycles() const;
   uint64_t total_cycles() const;
   uint64_t stall_cycles() const;  // summed cnt_stall_cycles_o

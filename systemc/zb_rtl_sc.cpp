@@ -13,6 +13,7 @@ namespace zb::sc {
 static_assert(Vzb_rop_sc_zb_rop::TILE_W == kRtlTileW, "zbsc_vlt's TILE_W disagrees with rtl_params.h");
 static_assert(Vzb_rop_sc_zb_rop::DEPTH_BITS == kRtlDepthBits, "DEPTH_BITS disagrees");
 static_assert(Vzb_rop_sc_zb_rop::COV_SAMPLES == kRtlCoverageSamples, "COV_SAMPLES disagrees");
+static_assert(Vzb_rop_sc_zb_rop::BEAT == kRtlBeat, "BEAT disagrees");
 
 namespace {
 
@@ -23,6 +24,25 @@ uint32_t pack_rgba(Rgba8 c) {
 }
 Rgba8 unpack_rgba(uint32_t v) {
   return {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
+}
+
+// Lane `lane` of `width` bits in a tile port's value: an integer up to 64 bits, sc_bv beyond.
+template <class T>
+void put_lane(T& v, int lane, int width, uint32_t x) {
+  if constexpr (std::is_integral_v<T>) {
+    const uint64_t m = ((uint64_t{1} << width) - 1) << (lane * width);
+    v = T((uint64_t(v) & ~m) | (uint64_t{x} << (lane * width) & m));
+  } else {
+    v.range(lane * width + width - 1, lane * width) = x;
+  }
+}
+template <class T>
+uint32_t get_lane(const T& v, int lane, int width) {
+  if constexpr (std::is_integral_v<T>) {
+    return uint32_t(uint64_t(v) >> (lane * width) & ((uint64_t{1} << width) - 1));
+  } else {
+    return v.range(lane * width + width - 1, lane * width).to_uint();
+  }
 }
 
 // The model's plusargs, set before it exists: none. The bug build reads them ($test$plusargs) and
@@ -53,6 +73,8 @@ ZbRtlSc::ZbRtlSc(sc_core::sc_module_name name)
   r.stall_i(stall_);
   r.tile_req_i(tile_req_);
   r.tile_we_i(tile_we_);
+  r.tile_clear_i(tile_clear_);
+  r.tile_planes_i(tile_planes_);
   r.tile_addr_i(tile_addr_);
   r.tile_wcolor_i(tile_wcolor_);
   r.tile_wdepth_i(tile_wdepth_);
@@ -73,6 +95,8 @@ ZbRtlSc::ZbRtlSc(sc_core::sc_module_name name)
   r.cnt_color_writes_o(cnt_color_writes_);
   r.cnt_stall_cycles_o(cnt_stall_cycles_);
   r.cnt_cycles_o(cnt_cycles_);
+  r.cnt_tile_loads_o(cnt_tile_loads_);
+  r.cnt_tile_stores_o(cnt_tile_stores_);
   SC_HAS_PROCESS(ZbRtlSc);
   SC_THREAD(run);
 }
@@ -95,6 +119,7 @@ void ZbRtlSc::run() {
                                       std::to_string(kRtlDepthBits) + " depth bits and " +
                                       std::to_string(kRtlCoverageSamples) + " coverage samples");
         fb_ = Framebuffer(c.width, c.height, c.depth_bits, c.clear, c.coverage_samples);
+        tiles_ = TileStates(c.width, c.height, kRtlTileW, c.depth_bits, c.clear);
         break;
       case PassCommand::Kind::kBeginPass:
         state_value_ = c.state;
@@ -102,7 +127,10 @@ void ZbRtlSc::run() {
         for (Fragment& f : frags_) f = frag_i.read();
         break;
       case PassCommand::Kind::kEndPass: stats_o.write(run_pass()); break;
-      case PassCommand::Kind::kFrameOp: apply_frame_op(fb_, c.op); break;
+      case PassCommand::Kind::kFrameOp:
+        apply_frame_op(fb_, c.op);
+        tiles_.frame_op(c.op);
+        break;
     }
   }
 }
@@ -118,33 +146,34 @@ PassStats ZbRtlSc::run_pass() {
   PassStats stats;
   for (size_t t = 0; t + 1 < bins_.first.size(); ++t)
     if (bins_.first[t] != bins_.first[t + 1])
-      run_tile(int(t % size_t(bins_.columns)) * kRtlTileW, int(t / size_t(bins_.columns)) * kRtlTileH,
+      run_tile(t, int(t % size_t(bins_.columns)) * kRtlTileW, int(t / size_t(bins_.columns)) * kRtlTileH,
                bins_.first[t], bins_.first[t + 1], stats);
   busy_cycles_ += cycles_ - start;
   busy_time_ += sc_core::sc_time_stamp() - start_time;
   return stats;
 }
 
-// One tile as RtlRop::run_tile (no back-pressure): load it a word a clock, write the state and
-// clear the counters, offer a fragment every clock (held while frag_ready_o is low), drain
-// while busy_o, read the counters, store the tile back a word a clock.
-void ZbRtlSc::run_tile(int x0, int y0, uint32_t b, uint32_t e, PassStats& stats) {
+// One tile as RtlRop::run_tile (no back-pressure): the setup cycle (state, counter clear, fast
+// clear), the load beats, a fragment offered every clock (held while frag_ready_o is low), the
+// drain while busy_o, the counters, the store beats.
+void ZbRtlSc::run_tile(size_t tile, int x0, int y0, uint32_t b, uint32_t e, PassStats& stats) {
   const int w = std::min(kRtlTileW, fb_.width - x0), h = std::min(kRtlTileH, fb_.height - y0);
+  const int beats_x = (w + kRtlBeat - 1) / kRtlBeat;
+  const TileIo io = tiles_.plan(tile, state_value_);
   const uint64_t load_begin = cycles_;
-  tile_req_.write(true);
-  tile_we_.write(true);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const size_t i = fb_.index(x0 + x, y0 + y);
-      tile_addr_.write(uint32_t(y * kRtlTileW + x));
-      tile_wcolor_.write(pack_rgba(fb_.color[i]));
-      tile_wdepth_.write(fb_.depth[i]);
-      tile_wcov_.write(fb_.coverage[i]);
-      tile_wpeel_.write(fb_.peel[i]);
-      cycle();
-    }
-  tile_req_.write(false);
-  tile_we_.write(false);
+  Bits<kRtlBeat * 32> color{};
+  Bits<kRtlBeat * kRtlDepthBits> depth{}, peel{};
+  Bits<kRtlBeat * kCovW> cov{};
+  put_lane(color, 0, 32, io.clear_value[0]);
+  put_lane(depth, 0, kRtlDepthBits, io.clear_value[1]);
+  put_lane(cov, 0, kCovW, io.clear_value[2]);
+  put_lane(peel, 0, kRtlDepthBits, io.clear_value[3]);
+  tile_wcolor_.write(color);
+  tile_wdepth_.write(depth);
+  tile_wcov_.write(cov);
+  tile_wpeel_.write(peel);
+  tile_clear_.write(io.clear != 0);
+  tile_planes_.write(io.clear);
   tile_x0_.write(uint32_t(x0));
   tile_y0_.write(uint32_t(y0));
   state_.write(pack_state(state_value_));
@@ -153,6 +182,35 @@ void ZbRtlSc::run_tile(int x0, int y0, uint32_t b, uint32_t e, PassStats& stats)
   cycle();
   state_we_.write(false);
   cnt_clear_.write(false);
+  tile_clear_.write(false);
+  if (io.load) {
+    tile_req_.write(true);
+    tile_we_.write(true);
+    tile_planes_.write(io.load);
+    for (int y = 0; y < h; ++y)
+      for (int bx = 0; bx < beats_x; ++bx) {
+        for (int l = 0; l < kRtlBeat && bx * kRtlBeat + l < w; ++l) {
+          const size_t i = fb_.index(x0 + bx * kRtlBeat + l, y0 + y);
+          put_lane(color, l, 32, pack_rgba(fb_.color[i]));
+          put_lane(depth, l, kRtlDepthBits, fb_.depth[i]);
+          put_lane(cov, l, kCovW, fb_.coverage[i]);
+          put_lane(peel, l, kRtlDepthBits, fb_.peel[i]);
+        }
+        tile_addr_.write(uint32_t((y * kRtlTileW + bx * kRtlBeat) / kRtlBeat));
+        tile_wcolor_.write(color);
+        tile_wdepth_.write(depth);
+        tile_wcov_.write(cov);
+        tile_wpeel_.write(peel);
+        cycle();
+      }
+    tile_req_.write(false);
+    tile_we_.write(false);
+  }
+  tile_planes_.write(0);
+  // frag_ready_o falls with tile_clear_i and tile_req_i: let their change reach it (the signal
+  // update, then the model's evaluation) before the first offer reads it.
+  wait(sc_core::SC_ZERO_TIME);
+  wait(sc_core::SC_ZERO_TIME);
 
   const uint64_t stream_begin = cycles_;
   uint64_t refused = 0;
@@ -164,7 +222,7 @@ void ZbRtlSc::run_tile(int x0, int y0, uint32_t b, uint32_t e, PassStats& stats)
     frag_z_.write(f.z);
     frag_rgba_.write(pack_rgba(f.color));
     frag_cov_.write(f.coverage);
-    // frag_ready_o depends on flops, stall_i and tile_req_i only (both low now): its value
+    // frag_ready_o depends on flops, stall_i and the tile port only (all low now): its value
     // since the last rising edge is the one the next edge sees.
     const bool accepted = frag_ready_.read();
     cycle();
@@ -196,18 +254,22 @@ void ZbRtlSc::run_tile(int x0, int y0, uint32_t b, uint32_t e, PassStats& stats)
   if (uint64_t{cnt_frag_killed_.read()} != uint64_t{cnt_frag_in_.read()} - cnt_frag_passed_.read())
     throw std::runtime_error("zb_rtl_sc: cnt_frag_killed_o != cnt_frag_in_o - cnt_frag_passed_o");
 
-  tile_req_.write(true);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      tile_addr_.write(uint32_t(y * kRtlTileW + x));
-      cycle();
-      const size_t i = fb_.index(x0 + x, y0 + y);
-      fb_.color[i] = unpack_rgba(tile_rcolor_.read());
-      fb_.depth[i] = tile_rdepth_.read();
-      fb_.coverage[i] = uint8_t(tile_rcov_.read());
-      fb_.peel[i] = tile_rpeel_.read();
-    }
-  tile_req_.write(false);
+  if (io.store) {
+    tile_req_.write(true);
+    for (int y = 0; y < h; ++y)
+      for (int bx = 0; bx < beats_x; ++bx) {
+        tile_addr_.write(uint32_t((y * kRtlTileW + bx * kRtlBeat) / kRtlBeat));
+        cycle();
+        for (int l = 0; l < kRtlBeat && bx * kRtlBeat + l < w; ++l) {
+          const size_t i = fb_.index(x0 + bx * kRtlBeat + l, y0 + y);
+          if (io.store & kPlaneColor) fb_.color[i] = unpack_rgba(get_lane(tile_rcolor_.read(), l, 32));
+          if (io.store & kPlaneDepth) fb_.depth[i] = get_lane(tile_rdepth_.read(), l, kRtlDepthBits);
+          if (io.store & kPlaneCoverage) fb_.coverage[i] = uint8_t(get_lane(tile_rcov_.read(), l, kCovW));
+        }
+      }
+    tile_req_.write(false);
+  }
+  tiles_.stored(tile, io.store);
   io_cycles_ += (stream_begin - load_begin) + (cycles_ - stream_end);
 }
 

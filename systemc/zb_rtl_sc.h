@@ -4,12 +4,16 @@
 
 #include <cstdint>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 #include <systemc>
 
+#include "rop/fixed.h"
 #include "rop/framebuffer.h"
+#include "rtl_params.h"
 #include "tile_bins.h"
+#include "tile_io.h"
 #include "zb_sc_types.h"
 
 class Vzb_rop_sc;
@@ -36,7 +40,7 @@ class ZbRtlSc : public sc_core::sc_module {
  private:
   void run();
   PassStats run_pass();
-  void run_tile(int x0, int y0, uint32_t b, uint32_t e, PassStats& stats);
+  void run_tile(size_t tile, int x0, int y0, uint32_t b, uint32_t e, PassStats& stats);
   void cycle() {
     wait(clk_i.negedge_event());
     ++cycles_;
@@ -44,15 +48,24 @@ class ZbRtlSc : public sc_core::sc_module {
 
   template <class T>
   using Sig = sc_core::sc_signal<T>;
-  Sig<bool> rst_n_, state_we_, frag_valid_, frag_ready_, stall_, tile_req_, tile_we_, busy_,
-      cnt_clear_;
+  // A port of W bits as Verilator --sc declares it.
+  template <int W>
+  using Bits = std::conditional_t<W <= 32, uint32_t,
+                                  std::conditional_t<W <= 64, uint64_t, sc_dt::sc_bv<W>>>;
+  static constexpr int kCovW = coverage_bits(kRtlCoverageSamples);
+  Sig<bool> rst_n_, state_we_, frag_valid_, frag_ready_, stall_, tile_req_, tile_we_, tile_clear_,
+      busy_, cnt_clear_;
   Sig<uint32_t> state_, tile_x0_, tile_y0_, frag_x_, frag_y_, frag_z_, frag_rgba_, frag_cov_,
-      tile_addr_, tile_wcolor_, tile_wdepth_, tile_wcov_, tile_wpeel_, tile_rcolor_, tile_rdepth_,
-      tile_rcov_, tile_rpeel_, cnt_frag_in_, cnt_frag_passed_, cnt_frag_killed_, cnt_depth_reads_,
-      cnt_depth_writes_, cnt_color_reads_, cnt_color_writes_, cnt_stall_cycles_, cnt_cycles_;
+      tile_planes_, tile_addr_, cnt_frag_in_, cnt_frag_passed_, cnt_frag_killed_,
+      cnt_depth_reads_, cnt_depth_writes_, cnt_color_reads_, cnt_color_writes_,
+      cnt_stall_cycles_, cnt_cycles_, cnt_tile_loads_, cnt_tile_stores_;
+  Sig<Bits<kRtlBeat * 32>> tile_wcolor_, tile_rcolor_;
+  Sig<Bits<kRtlBeat * kRtlDepthBits>> tile_wdepth_, tile_rdepth_, tile_wpeel_, tile_rpeel_;
+  Sig<Bits<kRtlBeat * kCovW>> tile_wcov_, tile_rcov_;
   std::unique_ptr<Vzb_rop_sc> rtl_;
 
   Framebuffer fb_;
+  TileStates tiles_;
   RopState state_value_;
   std::vector<Fragment> frags_;
   TileBins bins_;

@@ -127,8 +127,9 @@ TEST(Analysis, TilesTouchedByACornerRectangle) {
   EXPECT_EQ(a.aa_edge_pixels, 0u);
 }
 
-// The driver's loop per touched tile: load its pixels, one state cycle, the fragments, 15 to
-// issue and drain (none waits here: each pixel once), store its pixels.
+// The driver's loop per touched tile: one setup cycle (the new frame's planes are fast-cleared:
+// nothing loads), the fragments, 15 to issue and drain (none waits here: each pixel once),
+// then the colour and depth planes stored, a beat of 8 pixels a clock.
 TEST(CostModel, CountsTheDriversTileLoop) {
   const RasterizedScene rs =
       rasterize_triangles(corner_rect(40, 20), Viewport{128, 96}, Rgba8{0, 0, 0, 255});
@@ -140,16 +141,18 @@ TEST(CostModel, CountsTheDriversTileLoop) {
   EXPECT_EQ(c.totals.fragments_in, 800u);
   EXPECT_EQ(c.at(16).tiles_loaded, 6u);
   EXPECT_EQ(c.at(16).stream_cycles, 800u + 6u * 15u);
-  EXPECT_EQ(c.at(16).tile_io_cycles, 6u * (2u * 256u + 1u));
+  ASSERT_EQ(kRtlBeat, 8) << "the figures below are worked for 8 pixels a beat";
+  EXPECT_EQ(c.at(16).tile_io_cycles, 6u * (1u + 16u * 2u));
+  EXPECT_EQ(c.at(16).tile_beats, 6u * 16u * 2u);
   // A 64 x 64 tile clipped to the 128 x 96 frame's first tile: all 64 x 64 inside.
-  EXPECT_EQ(c.at(64).tile_io_cycles, 2u * 4096u + 1u);
+  EXPECT_EQ(c.at(64).tile_io_cycles, 1u + 64u * 8u);
   EXPECT_EQ(c.frame_op_pixels, 0u);
   // The pixel in bits: colour 32, depth and peel 24 each, coverage 5 (0..16).
   EXPECT_EQ(tile_pixel_bits(24, 16), 85u);
-  // Bytes at 16x16 tiles: 6 tiles of 256 pixels loaded and stored, plus 800 depth reads and
-  // writes (24 bits) and 800 colour writes (32 bits).
-  EXPECT_EQ(c.traffic_bytes(16, 24, 16), (2u * 6u * 256u * 85u + 800u * (24u + 24u + 32u)) / 8u);
-  EXPECT_EQ(c.best_tile(24, 16), 16);  // 6 * 513 I/O cycles against 8193 at 64
+  // Bytes at 16x16 tiles: 6 tiles of 256 pixels of colour (32 bits) and depth (24) stored,
+  // plus 800 depth reads and writes (24 bits) and 800 colour writes (32 bits).
+  EXPECT_EQ(c.traffic_bytes(16, 24, 16), (6u * 256u * 56u + 800u * (24u + 24u + 32u)) / 8u);
+  EXPECT_EQ(c.best_tile(24, 16), 16);  // 6 * 33 I/O cycles against 513 at 64
 }
 
 TEST(CostModel, ClipsTilesToTheFrame) {
@@ -158,8 +161,11 @@ TEST(CostModel, ClipsTilesToTheFrame) {
   GoldenRop golden;
   CostCounter counter(golden);
   render(rs, *find_plan("opaque"), counter);
-  EXPECT_EQ(counter.cost().at(64).tile_io_cycles, 2u * 40u * 20u + 1u);
-  EXPECT_EQ(counter.cost().at(16).tile_io_pixels, 40u * 20u);
+  // 20 rows of 40 pixels: 5 beats of 8 each, stored; at 16, the third column's tiles are 8
+  // wide (one beat a row) and the second row's 4 high.
+  EXPECT_EQ(counter.cost().at(64).tile_io_cycles, 1u + 20u * 5u);
+  EXPECT_EQ(counter.cost().at(16).tile_beats, 20u * (2u + 2u + 1u));
+  EXPECT_EQ(counter.cost().at(16).plane_pixels[0], 40u * 20u);  // colour stored once
 }
 
 TEST(Sizing, ErrorBeyondTheRoundingFloor) {

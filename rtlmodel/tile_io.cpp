@@ -1,0 +1,99 @@
+#include "tile_io.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "rop/blend.h"
+#include "rop/fixed.h"
+
+namespace zb {
+
+namespace {
+uint32_t pack(Rgba8 c) {
+  return uint32_t{c.r} | uint32_t{c.g} << 8 | uint32_t{c.b} << 16 | uint32_t{c.a} << 24;
+}
+Rgba8 unpack(uint32_t v) {
+  return {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
+}
+}  // namespace
+
+// As zb_rop: coverage mode reads depth (nearer) and the coverage plane; the peel test is not
+// used there. Colour is read only by a pass that writes it.
+uint8_t planes_read(const RopState& s) {
+  const bool cov = is_coverage_pass(s);
+  uint8_t p = 0;
+  if (s.color_mask != 0) p |= kPlaneColor;
+  if (s.depth_test || cov) p |= kPlaneDepth;
+  if (cov) p |= kPlaneCoverage;
+  if (s.peel_test && !cov) p |= kPlanePeel;
+  return p;
+}
+
+uint8_t planes_written(const RopState& s) {
+  uint8_t p = 0;
+  if (s.color_mask != 0) p |= kPlaneColor;
+  if (s.depth_test && s.depth_write) p |= kPlaneDepth;
+  if (is_coverage_pass(s)) p |= kPlaneCoverage;
+  return p;
+}
+
+uint64_t tile_beats(int w, int h, int beat) {
+  if (w <= 0 || h <= 0 || beat <= 0) return 0;
+  return uint64_t(h) * uint64_t((w + beat - 1) / beat);
+}
+
+uint64_t tile_io_cycles(uint64_t beats, const TileIo& io) {
+  return kRtlTileSetup + (io.load ? beats : 0) + (io.store ? beats : 0);
+}
+
+TileStates::TileStates(int width, int height, int tile, int depth_bits, Rgba8 clear_color)
+    : depth_bits_(depth_bits) {
+  if (width < 1 || height < 1 || tile < 1)
+    throw std::invalid_argument("tile states: empty frame or tile");
+  const size_t n = size_t((width + tile - 1) / tile) * size_t((height + tile - 1) / tile);
+  std::array<Plane, kTilePlanes> fresh;
+  fresh[0] = {true, pack(clear_color)};
+  fresh[1] = {true, depth_max(depth_bits)};
+  fresh[2] = {true, 0};
+  fresh[3] = {true, 0};
+  planes_.assign(n, fresh);
+}
+
+void TileStates::frame_op(const FrameOp& op) {
+  for (auto& t : planes_) switch (op.kind) {
+      case FrameOpKind::kClearColor: t[0] = {true, pack(op.value)}; break;
+      case FrameOpKind::kClearDepth: t[1] = {true, std::min(op.depth, depth_max(depth_bits_))}; break;
+      case FrameOpKind::kCopyDepthToPeel: t[3] = t[1]; break;
+      case FrameOpKind::kResolveUnder:
+        if (t[0].cleared) {  // a uniform colour resolves to a uniform colour
+          const Rgba8 c = unpack(t[0].value);
+          t[0].value = pack({resolve_under(c.r, op.value.r, c.a), resolve_under(c.g, op.value.g, c.a),
+                             resolve_under(c.b, op.value.b, c.a), resolve_under(c.a, op.value.a, c.a)});
+        }
+        break;
+    }
+}
+
+TileIo TileStates::plan(size_t tile, const RopState& s) const {
+  TileIo io;
+  const uint8_t needed = planes_read(s) | planes_written(s);
+  for (int p = 0; p < kTilePlanes; ++p) {
+    if (!(needed >> p & 1)) continue;
+    const Plane& pl = planes_.at(tile)[size_t(p)];
+    if (pl.cleared) {
+      io.clear |= uint8_t(1u << p);
+      io.clear_value[size_t(p)] = pl.value;
+    } else {
+      io.load |= uint8_t(1u << p);
+    }
+  }
+  io.store = planes_written(s);
+  return io;
+}
+
+void TileStates::stored(size_t tile, uint8_t planes) {
+  for (int p = 0; p < kTilePlanes; ++p)
+    if (planes >> p & 1) planes_.at(tile)[size_t(p)].cleared = false;
+}
+
+}  // namespace zb

@@ -1,0 +1,62 @@
+// zb_rop's tile port traffic (docs/rtl.md "Tile port"): which planes a pass fast-clears, loads
+// and stores for a tile, from the pass state and the tile's planes as the frame holds them,
+// and the port's cycles. The RTL driver, the SystemC driver and the cost model all take their
+// tile traffic from here.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "rop/fragment.h"
+
+namespace zb {
+
+// zb_pkg::planes_t: bit p selects plane p of the tile port.
+enum : uint8_t { kPlaneColor = 1, kPlaneDepth = 2, kPlaneCoverage = 4, kPlanePeel = 8 };
+constexpr int kTilePlanes = 4;
+
+// The planes a pass with state `s` may read, and may write (every pixel of a written plane is
+// stored, so it must be whole in the tile memory: loaded or fast-cleared).
+uint8_t planes_read(const RopState& s);
+uint8_t planes_written(const RopState& s);
+
+// One tile's traffic in one pass: plane masks, and per plane the fast clear's value (colour
+// packed r | g << 8 | b << 16 | a << 24, depth, coverage count, peel depth).
+struct TileIo {
+  uint8_t clear = 0, load = 0, store = 0;
+  std::array<uint32_t, kTilePlanes> clear_value{};
+};
+
+// Beats of a tile clipped to w x h pixels: a beat is `beat` neighbours of one row.
+uint64_t tile_beats(int w, int h, int beat);
+// The tile's cycles at the port, beside its streaming (IssueSchedule): one setup cycle (pass
+// state, counter clear and fast clear), then its load beats, later its store beats.
+constexpr uint64_t kRtlTileSetup = 1;
+uint64_t tile_io_cycles(uint64_t beats, const TileIo& io);
+
+// Each tile's planes as the frame holds them: cleared to one value (the tile memory takes the
+// value, not the words: fast clear) or words stored by a pass or made by a frame operation.
+class TileStates {
+ public:
+  TileStates() = default;
+  // A frame just begun: every plane cleared (colour `clear_color`, depth the far value,
+  // coverage 0, peel 0), as Framebuffer's constructor fills it.
+  TileStates(int width, int height, int tile, int depth_bits, Rgba8 clear_color);
+
+  void frame_op(const FrameOp& op);
+  TileIo plan(size_t tile, const RopState& s) const;
+  void stored(size_t tile, uint8_t planes);  // the pass stored these planes of the tile
+  size_t tiles() const { return planes_.size(); }
+
+ private:
+  struct Plane {
+    bool cleared = true;
+    uint32_t value = 0;
+  };
+  int depth_bits_ = 24;
+  std::vector<std::array<Plane, kTilePlanes>> planes_;
+};
+
+}  // namespace zb

@@ -1,0 +1,158 @@
+// zb_rop's tile port on the Verilated model: its beat counters (cnt_tile_loads_o,
+// cnt_tile_stores_o) show which tiles a pass loads and stores; fast-cleared planes read as the
+// clear value wherever the pass did not write, beside the pixels it did (checked against the
+// golden model, pixel for pixel).
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "rop/rop.h"
+#include "rtl_params.h"
+#include "rtl_rop.h"
+#include "tile_io.h"
+
+namespace zb {
+namespace {
+
+constexpr int kW = 2 * kRtlTileW, kH = kRtlTileH;  // two tiles side by side
+const uint64_t kBeats = uint64_t(kRtlTileW) * kRtlTileH / kRtlBeat;
+
+// One fragment every third pixel of tile 0's first rows: most beats are written in some pixels
+// and not in others.
+std::vector<Fragment> sparse_in_tile0(uint32_t z, Rgba8 c) {
+  std::vector<Fragment> f;
+  for (int y = 0; y < 3; ++y)
+    for (int x = y; x < kRtlTileW; x += 3) {
+      Fragment g;
+      g.x = uint16_t(x);
+      g.y = uint16_t(y);
+      g.z = z;
+      g.color = c;
+      f.push_back(g);
+    }
+  return f;
+}
+
+FrameOp op(FrameOpKind kind, Rgba8 value = {}, uint32_t depth = 0) {
+  FrameOp o;
+  o.kind = kind;
+  o.value = value;
+  o.depth = depth;
+  return o;
+}
+
+struct Both {
+  RtlRop rtl;
+  GoldenRop golden;
+  void begin_frame() {
+    rtl.begin_frame(kW, kH, kRtlDepthBits, Rgba8{10, 20, 30, 255}, kRtlCoverageSamples);
+    golden.begin_frame(kW, kH, kRtlDepthBits, Rgba8{10, 20, 30, 255}, kRtlCoverageSamples);
+  }
+  void pass(const RopState& s, const std::vector<Fragment>& f) {
+    for (Backend* b : {static_cast<Backend*>(&rtl), static_cast<Backend*>(&golden)}) {
+      b->begin_pass(s);
+      b->draw(f.data(), f.size());
+      b->end_pass();
+    }
+  }
+  void frame_op(const FrameOp& op) {
+    rtl.frame_op(op);
+    golden.frame_op(op);
+  }
+  void expect_same_frame() const {
+    const Framebuffer &r = rtl.framebuffer(), &g = golden.framebuffer();
+    EXPECT_EQ(r.color, g.color);
+    EXPECT_EQ(r.depth, g.depth);
+    EXPECT_EQ(r.coverage, g.coverage);
+  }
+  const TileRun& only_run() const {
+    EXPECT_EQ(rtl.tile_runs().size(), 1u) << "the pass ran another tile than tile 0";
+    return rtl.tile_runs().at(0);
+  }
+};
+
+TEST(TilePort, AfterAClearNothingLoadsAndAnUntouchedTileIsNotRun) {
+  Both m;
+  m.begin_frame();
+  const RopState opaque;  // depth test less, depth write, replace
+  m.pass(opaque, sparse_in_tile0(100, Rgba8{200, 0, 0, 255}));
+  const TileRun& first = m.only_run();
+  EXPECT_EQ(first.x0, 0);
+  EXPECT_EQ(first.load_beats, 0u) << "a new frame's tile loaded";
+  EXPECT_EQ(first.store_beats, kBeats);
+  EXPECT_EQ(first.io.clear, kPlaneColor | kPlaneDepth);
+  m.expect_same_frame();
+
+  // The stored tile loads in the next pass; tile 1 is still not run.
+  m.pass(opaque, sparse_in_tile0(50, Rgba8{0, 200, 0, 255}));
+  EXPECT_EQ(m.only_run().load_beats, kBeats);
+  EXPECT_EQ(m.only_run().io.clear, 0);
+  m.expect_same_frame();
+
+  // Cleared again: fast clear, no load.
+  m.frame_op(op(FrameOpKind::kClearColor, Rgba8{1, 2, 3, 4}));
+  m.frame_op(op(FrameOpKind::kClearDepth, {}, FrameOp::kFar));
+  m.pass(opaque, sparse_in_tile0(70, Rgba8{0, 0, 200, 255}));
+  EXPECT_EQ(m.only_run().load_beats, 0u);
+  EXPECT_EQ(m.only_run().io.clear_value[0], 0x04030201u);
+  m.expect_same_frame();
+}
+
+TEST(TilePort, APassThatWritesNothingStoresNothing) {
+  Both m;
+  m.begin_frame();
+  m.pass(RopState{}, sparse_in_tile0(100, Rgba8{200, 0, 0, 255}));
+  RopState test_only;
+  test_only.depth_write = false;
+  test_only.color_mask = 0;
+  m.pass(test_only, sparse_in_tile0(10, Rgba8{0, 0, 0, 255}));
+  EXPECT_EQ(m.only_run().store_beats, 0u);
+  EXPECT_EQ(m.only_run().load_beats, kBeats) << "the depth test reads the stored depth";
+  m.expect_same_frame();
+}
+
+// Peeling's frame operations on fast-cleared planes: a peel copied from a cleared depth is
+// itself cleared, and the resolve of a cleared colour is one colour.
+TEST(TilePort, CopiedAndResolvedPlanesStayCleared) {
+  Both m;
+  m.begin_frame();
+  m.frame_op(op(FrameOpKind::kCopyDepthToPeel));
+  m.frame_op(op(FrameOpKind::kResolveUnder, Rgba8{90, 80, 70, 255}));
+  RopState peel;
+  peel.peel_test = true;
+  peel.blend = BlendMode::kUnder;
+  m.pass(peel, sparse_in_tile0(200, Rgba8{100, 100, 100, 128}));
+  EXPECT_EQ(m.only_run().load_beats, 0u);
+  EXPECT_EQ(m.only_run().io.clear, kPlaneColor | kPlaneDepth | kPlanePeel);
+  m.expect_same_frame();
+}
+
+TEST(TileStates, PlanesFollowThePassState) {
+  RopState s;
+  EXPECT_EQ(planes_read(s), kPlaneColor | kPlaneDepth);
+  EXPECT_EQ(planes_written(s), kPlaneColor | kPlaneDepth);
+  s.depth_test = false;
+  s.color_mask = 0;
+  EXPECT_EQ(planes_read(s), 0);
+  EXPECT_EQ(planes_written(s), 0);
+  s.blend = BlendMode::kCoverage;  // coverage mode reads depth (nearer) whatever the test
+  EXPECT_EQ(planes_read(s), kPlaneDepth | kPlaneCoverage);
+  EXPECT_EQ(planes_written(s), kPlaneCoverage);
+  s = RopState{};
+  s.peel_test = true;
+  s.depth_write = false;
+  EXPECT_EQ(planes_read(s), kPlaneColor | kPlaneDepth | kPlanePeel);
+  EXPECT_EQ(planes_written(s), kPlaneColor);
+  // Beats: rows times beats a row, a partial beat counted whole.
+  EXPECT_EQ(tile_beats(64, 64, 8), 512u);
+  EXPECT_EQ(tile_beats(9, 2, 8), 4u);
+  EXPECT_EQ(tile_beats(0, 5, 8), 0u);
+  TileIo io;
+  EXPECT_EQ(tile_io_cycles(512, io), 1u);
+  io.load = kPlaneDepth;
+  io.store = kPlaneColor;
+  EXPECT_EQ(tile_io_cycles(512, io), 1025u);
+}
+
+}  // namespace
+}  // namespace zb
