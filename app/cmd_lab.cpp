@@ -269,10 +269,11 @@ void run_lab(const LabCommandOptions& o) {
     std::error_code ec;
     fs::create_directories(dir / "charts", ec);
     if (!run_program({tools.python, tools.script, (dir / "lab_summary.csv").string(),
-                      (dir / "charts").string()}, false))
+                      (dir / "charts").string(), std::to_string(kRtlBeat)}, false))
       throw std::runtime_error("scripts/lab_charts.py failed (its message above)");
   }
-  std::vector<std::string> candidates = {lab::main_chart_path(), lab::main_bytes_chart_path()};
+  std::vector<std::string> candidates = {lab::main_chart_path(), lab::main_bytes_chart_path(),
+                                         lab::tile_beat_chart_path()};
   for (const lab::ReportScene& s : in.scenes) candidates.push_back(lab::family_chart_path(s.family));
   for (const std::string& c : candidates) {
     std::error_code ec;
@@ -289,6 +290,7 @@ void run_lab(const LabCommandOptions& o) {
       if (e.path().extension() == ".png") in.sweep_images.push_back("sweeps/" + e.path().filename().string());
   std::sort(in.sweep_images.begin(), in.sweep_images.end());
 
+  if (!o.quiet) fmt::print(stderr, "zblend lab: {}\n", lab::tile_share_text(in.rows, kRtlBeat));
   write(dir / "report.md", lab::report_markdown(in));
   write(dir / "report.html", lab::report_html(in));
   if (!o.quiet)

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 #include <fmt/core.h>
@@ -13,6 +14,7 @@
 #include "pipeline/render.h"
 #include "rop/rop.h"
 #include "rtl_rop.h"
+#include "sizing_cost.h"
 
 namespace zb::lab {
 namespace {
@@ -104,6 +106,19 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
       row.bytes_read = bytes_read(row.golden, vp.depth_bits);
       row.bytes_written = bytes_written(row.golden, vp.depth_bits);
       image = std::move(r.framebuffer);
+      {
+        GoldenRop inner;
+        std::vector<std::unique_ptr<CostCounter>> counters;
+        Backend* outer = &inner;
+        for (const int beat : kLabBeats) {
+          counters.push_back(std::make_unique<CostCounter>(*outer, beat));
+          outer = counters.back().get();
+        }
+        render(rs, *plan, *outer);
+        for (size_t k = 0; k < kLabBeats.size(); ++k)
+          row.model_tile_cycles[k] = counters[k]->cost().at(kRtlTileW).tile_io_cycles;
+        row.model_stream_cycles = counters[0]->cost().at(kRtlTileW).stream_cycles;
+      }
       if (o.rtl) {
         RtlRop rtl;
         const RenderResult rr = render(rs, *plan, rtl);
@@ -136,7 +151,10 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
       "depth_reads,depth_writes,bytes_read,bytes_written,host_ms,rtl_cycles,rtl_stream_cycles,rtl_tile_cycles,"
       "rtl_mismatch_pixels,rmse,psnr_db,max_abs,share_over_2,share_over_16,delta_e_mean,"
       "delta_e_max,ss_rmse,ss_psnr_db,ss_max_abs,ss_share_over_2,ss_share_over_16,"
-      "ss_delta_e_mean,ss_delta_e_max,fair_reference,fair_delta_e_mean,fair_rmse\n";
+      "ss_delta_e_mean,ss_delta_e_max,fair_reference,fair_delta_e_mean,fair_rmse,"
+      "model_stream_cycles";
+  for (const int beat : kLabBeats) csv += fmt::format(",tile_cycles_beat{}", beat);
+  csv += "\n";
   for (const LabRow& r : rows) {
     const PassStats& s = r.golden;
     const std::string cost =
@@ -148,12 +166,41 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
         r.rtl_cycles ? fmt::format("{},{},{},{}", *r.rtl_cycles, r.rtl_stream_cycles,
                                    r.rtl_tile_cycles, r.rtl_mismatch_pixels)
                      : ",,,";
-    csv += fmt::format("{},{},{},{},{:.3f},{},{},{},{},{:.4f},{:.4f}\n", r.scene, r.family,
+    std::string model;
+    if (r.has_cost) {
+      model = fmt::format("{}", r.model_stream_cycles);
+      for (const uint64_t t : r.model_tile_cycles) model += fmt::format(",{}", t);
+    } else {
+      model = std::string(kLabBeats.size(), ',');
+    }
+    csv += fmt::format("{},{},{},{},{:.3f},{},{},{},{},{:.4f},{:.4f},{}\n", r.scene, r.family,
                        r.method, cost, r.host_ms, rtl, error_cells(r.error),
                        error_cells(r.error_ss), to_string(r.fair), r.fair_error().delta_e_mean,
-                       r.fair_error().rmse);
+                       r.fair_error().rmse, model);
   }
   return csv;
+}
+
+std::string tile_share_text(const std::vector<LabRow>& rows, int beat) {
+  uint64_t stream = 0, rtl_stream = 0, rtl_tile = 0;
+  std::array<uint64_t, kLabBeats.size()> tile{};
+  for (const LabRow& r : rows) {
+    if (!r.has_cost) continue;
+    stream += r.model_stream_cycles;
+    for (size_t k = 0; k < tile.size(); ++k) tile[k] += r.model_tile_cycles[k];
+    if (r.rtl_cycles) {
+      rtl_stream += r.rtl_stream_cycles;
+      rtl_tile += r.rtl_tile_cycles;
+    }
+  }
+  std::string out = "tile cycles per streaming cycle (cost model), by pixels a beat:";
+  for (size_t k = 0; k < tile.size(); ++k)
+    out += fmt::format(" {}{}: {:.1f}%", kLabBeats[k], kLabBeats[k] == beat ? " (zb_rop)" : "",
+                       stream ? 100.0 * double(tile[k]) / double(stream) : 0.0);
+  if (rtl_stream)
+    out += fmt::format("; RTL: {} tile / {} streaming cycles = {:.1f}%", rtl_tile, rtl_stream,
+                       100.0 * double(rtl_tile) / double(rtl_stream));
+  return out;
 }
 
 std::vector<size_t> pareto_front(const std::vector<double>& x, const std::vector<double>& y) {

@@ -1,6 +1,7 @@
 // The methods lab: every method on every scene of a suite, cost against error (docs/lab.md).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -42,6 +43,10 @@ FairReference fair_reference(const std::string& method);
 uint64_t bytes_read(const PassStats& s, int depth_bits);
 uint64_t bytes_written(const PassStats& s, int depth_bits);
 
+// Tile port widths (pixels a beat) the lab's cost model prices every method at, zb_rop's BEAT
+// among them: the width's effect on tile cycles (charts/tile-beat.png).
+inline constexpr std::array<int, 5> kLabBeats{2, 4, 8, 16, 32};
+
 // One method on one scene.
 struct LabRow {
   std::string scene;
@@ -57,6 +62,10 @@ struct LabRow {
   uint64_t rtl_stream_cycles = 0;      // of which streaming fragments (first offer to drain)
   uint64_t rtl_tile_cycles = 0;        // of which loading and storing tiles
   uint64_t rtl_mismatch_pixels = 0;    // pixels where the RTL's frame differs from the golden's
+  // The cost model (lab/sizing_cost.h) at the RTL's tile: streaming cycles, and tile cycles at
+  // each of kLabBeats (at zb_rop's BEAT they are the RTL's).
+  uint64_t model_stream_cycles = 0;
+  std::array<uint64_t, kLabBeats.size()> model_tile_cycles{};
   ImageError error;               // against the exact reference
   ImageError error_ss;            // against the supersampled reference
   FairReference fair = FairReference::kExact;
@@ -82,6 +91,9 @@ SceneRun run_scene(const LabScene& scene, const LabOptions& options);
 
 // lab.csv: a header line, then a line per row.
 std::string lab_csv(const std::vector<LabRow>& rows);
+// One line: tile cycles as a share of streaming cycles over `rows` at each of kLabBeats
+// (`beat` marked as zb_rop's), and the RTL's own share when the rows have RTL cycles.
+std::string tile_share_text(const std::vector<LabRow>& rows, int beat);
 
 // The non-dominated points when both coordinates are to be minimised: indices of the points
 // that no other point matches or beats in both and beats in one, in order of x, then y.

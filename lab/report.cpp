@@ -9,6 +9,7 @@
 
 #include "metrics/metrics.h"
 #include "pipeline/passes.h"
+#include "rtl_params.h"
 
 namespace zb::lab {
 namespace {
@@ -205,7 +206,8 @@ std::string body(const ReportInput& in, Format f) {
       "writes at the depth width in whole bytes (3 at 24 bits). Every number: {} and {}; definitions: docs/lab.md.",
       methods, in.scenes.size(), in.width, in.height, de, code(f, "exact"), in.supersample,
       in.supersample, code(f, "supersampled"),
-      in.rtl ? "the RTL's clock cycles streaming fragments (Verilated zb_rop)"
+      in.rtl ? "the RTL's clock cycles (Verilated zb_rop): streaming fragments plus loading and "
+               "storing tiles"
              : "fragments through the datapath (run without the RTL)",
       link(f, "lab.csv", "lab.csv"), link(f, "lab_summary.csv", "lab_summary.csv")));
 
@@ -219,6 +221,15 @@ std::string body(const ReportInput& in, Format f) {
       "reference (by {} or by bytes). The reference itself has no cost and is not listed.",
       in.rtl ? "RTL cycles" : "fragments"));
   out += table(f, summary_table(in, kAllFamilies, f));
+
+  if (has(in.charts, tile_beat_chart_path())) {
+    out += heading(f, 2, "Tile traffic against the tile port's width", "tile-beat");
+    out += para(f, image(f, tile_beat_chart_path(), "tile cycles against beat width", 800));
+    out += para(f, tile_share_text(in.rows, kRtlBeat) +
+                       ". Tile cycles: per touched tile a setup cycle, the beats of the planes "
+                       "the pass loads (a cleared plane is fast-cleared, not loaded) and of those "
+                       "it stores (docs/rtl.md \"Tile port\").");
+  }
 
   out += heading(f, 2, "Scene families");
   for (const std::string& family : families_of(in)) {
@@ -292,6 +303,7 @@ std::string reference_ss_path(const std::string& scene) {
 
 std::string main_chart_path() { return "charts/main.png"; }
 std::string main_bytes_chart_path() { return "charts/main-bytes.png"; }
+std::string tile_beat_chart_path() { return "charts/tile-beat.png"; }
 std::string family_chart_path(const std::string& family) {
   return "charts/family-" + path_name(family) + ".png";
 }

@@ -41,6 +41,7 @@ std::string reference_ss_path(const std::string& scene);
 // The charts scripts/lab_charts.py writes, relative to the output folder.
 std::string main_chart_path();        // delta E against cost, every scene
 std::string main_bytes_chart_path();  // delta E against bytes, every scene
+std::string tile_beat_chart_path();   // tile cycles against the tile port's width
 std::string family_chart_path(const std::string& family);
 
 // Markdown links and images whose target is a relative path get `dir` put in front, so that

@@ -1,10 +1,13 @@
 // zb_plane: one plane of the resident tile (colour, depth, coverage or peel), in BEAT banks so
 // the tile port moves BEAT pixels a clock. Pixel p lies in bank p % BEAT at beat p / BEAT: a
 // beat is BEAT neighbours in a row.
-// Fast clear: tile_clear_i marks every beat fresh and keeps the clear value. A fresh beat's RAM
-// words are stale; reads of it (pipeline and tile port) return the clear value. The first
-// pipeline write to a fresh beat writes every bank of it (the clear value beside the written
-// pixel), so one flag per beat is enough. A load beat clears its flag.
+// Fast clear: each word carries a generation bit beside its WIDTH bits, the plane an epoch. A
+// word whose bit is not the epoch is fresh: reads of it (pipeline and tile port) return the
+// clear value. Loads and pipeline writes store the epoch, so a fast clear only flips it; that
+// needs every word at the epoch, so a tile read (the store) writes each word back resolved.
+// The driver fast-clears a plane whole, loads it whole and stores every plane a pass writes;
+// FastClearWhole checks it. After reset the words are unknown: one read of every beat (the
+// driver's first sweep) puts them at the epoch before the first fast clear (FastClearAfterSweep).
 // The tile port takes both RAM ports while active; zb_rop uses it only while no fragment is in
 // flight, so the pipeline's and the port's accesses never meet and tile_req_i alone selects.
 module zb_plane #(
@@ -24,14 +27,12 @@ module zb_plane #(
   input  logic [$clog2(WORDS/BEAT)-1:0] tile_addr_i,
   input  logic [BEAT*WIDTH-1:0]    tile_wdata_i,
   output logic [BEAT*WIDTH-1:0]    tile_rdata_o,    // the beat read at the last edge
-  // Pipeline: one pixel read, one pixel write a clock. pipe_wnext_i is the address of the
-  // stage before the writer: its fresh flag is looked up a clock ahead of its write.
+  // Pipeline: one pixel read, one pixel write a clock.
   input  logic                     pipe_re_i,
   input  logic [$clog2(WORDS)-1:0] pipe_raddr_i,
   input  logic                     pipe_we_i,
   input  logic [$clog2(WORDS)-1:0] pipe_waddr_i,
   input  logic [WIDTH-1:0]         pipe_wdata_i,
-  input  logic [$clog2(WORDS)-1:0] pipe_wnext_i,
   output logic [WIDTH-1:0]         rdata_o          // the pixel read at the last pipeline read
 );
 
@@ -46,44 +47,46 @@ module zb_plane #(
   end
 `endif
 
-  logic [BeatAW-1:0] rbeat, wbeat, nbeat;
+  logic [BeatAW-1:0] rbeat, wbeat;
   logic [BankW-1:0]  rbank, wbank;
   assign rbeat = pipe_raddr_i[AddrW-1:BankW];
   assign rbank = pipe_raddr_i[BankW-1:0];
   assign wbeat = pipe_waddr_i[AddrW-1:BankW];
   assign wbank = pipe_waddr_i[BankW-1:0];
-  assign nbeat = pipe_wnext_i[AddrW-1:BankW];
-  logic unused_wnext_bank;  // the lookup is per beat
-  assign unused_wnext_bank = ^pipe_wnext_i[BankW-1:0];
 
   logic tile_load, tile_read, tile_clear;
   assign tile_load  = tile_req_i & tile_we_i & tile_en_i;
   assign tile_read  = tile_req_i & ~tile_we_i;
   assign tile_clear = tile_clear_i & tile_en_i;
 
-  // Fresh flags, the clear value, and the lookups a clock ahead of their use: the read's (of
-  // the pipeline or the port) for the mux after the RAM; the writer's for its write enables.
-  logic [Beats-1:0] fresh_d, fresh_q;
+  // Epoch and clear value. all_fresh_q: no word written since the fast clear, so a second fast
+  // clear keeps the epoch (flipping it would make those words current). wback_q: the beat read
+  // last edge is written back this edge, resolved, at the epoch.
+  logic             epoch_d, epoch_q, all_fresh_d, all_fresh_q, wback_q;
   logic [WIDTH-1:0] clear_q;
-  logic             rfresh_q, tfresh_q, wfresh_q;
+  logic [BeatAW-1:0] wback_addr_q;
   logic [BankW-1:0] rbank_q;
 
   always_comb begin
-    fresh_d = fresh_q;
+    epoch_d     = epoch_q;
+    all_fresh_d = all_fresh_q;
     if (tile_clear) begin
-      fresh_d = '1;
-    end else if (tile_load) begin
-      fresh_d[tile_addr_i] = 1'b0;
-    end else if (pipe_we_i) begin
-      fresh_d[wbeat] = 1'b0;
+      epoch_d     = all_fresh_q ? epoch_q : ~epoch_q;
+      all_fresh_d = 1'b1;
+    end else if (tile_load || pipe_we_i || wback_q) begin
+      all_fresh_d = 1'b0;
     end
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      fresh_q <= '0;
+      epoch_q     <= 1'b0;
+      all_fresh_q <= 1'b0;
+      wback_q     <= 1'b0;
     end else begin
-      fresh_q <= fresh_d;
+      epoch_q     <= epoch_d;
+      all_fresh_q <= all_fresh_d;
+      wback_q     <= tile_read;
     end
   end
 
@@ -92,43 +95,40 @@ module zb_plane #(
       clear_q <= tile_wdata_i[WIDTH-1:0];
     end
     if (pipe_re_i) begin
-      rfresh_q <= fresh_q[rbeat];
-      rbank_q  <= rbank;
+      rbank_q <= rbank;
     end
-    if (tile_read) begin
-      tfresh_q <= fresh_q[tile_addr_i];
-    end
-    // The write at this edge clears the flag the next write would see.
-    wfresh_q <= fresh_q[nbeat] & ~(pipe_we_i && wbeat == nbeat);
+    wback_addr_q <= tile_addr_i;
   end
 
-  // The banks.
-  logic [BEAT*WIDTH-1:0] bank_rdata;
+  // The banks: words of {generation, value}.
+  logic [BEAT*WIDTH-1:0] lane;  // each bank's last read word, resolved
   for (genvar b = 0; b < BEAT; b++) begin : g_bank
-    logic              we;
-    logic [WIDTH-1:0]  wdata;
-    logic              own;
-    assign own   = wbank == BankW'(b);
-    assign we    = tile_load | (pipe_we_i & (own | wfresh_q));
-    assign wdata = tile_req_i ? tile_wdata_i[b*WIDTH +: WIDTH] : (own ? pipe_wdata_i : clear_q);
+    logic             we;
+    logic [BeatAW-1:0] waddr;
+    logic [WIDTH:0]   wdata, rdata;
+    assign we    = tile_load | wback_q | (pipe_we_i & wbank == BankW'(b));
+    assign waddr = tile_load ? tile_addr_i : (wback_q ? wback_addr_q : wbeat);
+    assign wdata = {epoch_q, tile_load ? tile_wdata_i[b*WIDTH +: WIDTH]
+                                       : (wback_q ? lane[b*WIDTH +: WIDTH] : pipe_wdata_i)};
 
     zb_tile_mem #(
-      .WIDTH(WIDTH),
+      .WIDTH(WIDTH + 1),
       .WORDS(Beats)
     ) u_mem (
       .clk_i  (clk_i),
       .re_i   (pipe_re_i | tile_read),
       .raddr_i(tile_req_i ? tile_addr_i : rbeat),
-      .rdata_o(bank_rdata[b*WIDTH +: WIDTH]),
+      .rdata_o(rdata),
       .we_i   (we),
-      .waddr_i(tile_req_i ? tile_addr_i : wbeat),
+      .waddr_i(waddr),
       .wdata_i(wdata)
     );
 
-    assign tile_rdata_o[b*WIDTH +: WIDTH] = tfresh_q ? clear_q : bank_rdata[b*WIDTH +: WIDTH];
+    assign lane[b*WIDTH +: WIDTH] = rdata[WIDTH] == epoch_q ? rdata[WIDTH-1:0] : clear_q;
   end
 
-  assign rdata_o = rfresh_q ? clear_q : bank_rdata[rbank_q*WIDTH +: WIDTH];
+  assign tile_rdata_o = lane;
+  assign rdata_o      = lane[rbank_q*WIDTH +: WIDTH];
 
 `ifndef SYNTHESIS
   // The RAM's read-during-write result is undefined in hardware (no_rw_check): a pipeline read
@@ -136,16 +136,37 @@ module zb_plane #(
   // forwards the written word instead, nor does the tile port meet the pipeline.
   if (!FORWARDED) begin : g_no_collision
     NoReadWriteCollision: assert property (@(posedge clk_i) disable iff (!rst_ni)
-        !(pipe_re_i && pipe_we_i && rbeat == wbeat));
+        !(pipe_re_i && pipe_we_i && pipe_raddr_i == pipe_waddr_i));
   end
   PortsApart: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (tile_req_i || tile_clear_i) |-> !(pipe_re_i || pipe_we_i));
-  // The writer's flag, looked up a clock ahead, is the flag of its beat now.
-  WriteFreshExact: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      pipe_we_i |-> (wfresh_q == fresh_q[wbeat]));
-  // The first write to a fresh beat (fills its other pixels with the clear value).
-  FreshBeatWritten: cover property (@(posedge clk_i) disable iff (!rst_ni)
-      pipe_we_i && wfresh_q);
+      (tile_req_i || tile_clear_i || wback_q) |-> !(pipe_re_i || pipe_we_i));
+  // Written since a fast clear and not stored since: some words fresh, some current. A fast
+  // clear then would make the fresh ones current (the driver stores every plane a pass writes).
+  logic mixed_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      mixed_q <= 1'b0;
+    end else if (tile_load || tile_read) begin
+      mixed_q <= 1'b0;
+    end else if (pipe_we_i && all_fresh_q) begin
+      mixed_q <= 1'b1;
+    end
+  end
+  FastClearWhole: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      tile_clear |-> !mixed_q);
+  logic swept_q;  // a tile read of the last beat since reset (the driver sweeps in order)
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      swept_q <= 1'b0;
+    end else if (tile_read && tile_addr_i == BeatAW'(Beats - 1)) begin
+      swept_q <= 1'b1;
+    end
+  end
+  FastClearAfterSweep: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      tile_clear |-> swept_q);
+  // A pixel read fresh: its clear value stands in for the word.
+  FreshWordRead: cover property (@(posedge clk_i) disable iff (!rst_ni)
+      $past(pipe_re_i) && g_bank[0].rdata[WIDTH] != epoch_q);
 `endif
 
 endmodule

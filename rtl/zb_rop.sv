@@ -222,8 +222,7 @@ module zb_rop
   localparam int unsigned Last = 11;
   logic [Last:1]         x_valid_q;
   logic [Last*AddrW-1:0] x_addr_q;          // Xk at [(k-1)*AddrW +: AddrW]
-  logic [AddrW-1:0]      x3_addr, x4_addr, x6_addr, x10_addr, x11_addr;
-  assign x3_addr  = x_addr_q[2*AddrW +: AddrW];
+  logic [AddrW-1:0]      x4_addr, x6_addr, x10_addr, x11_addr;
   assign x4_addr  = x_addr_q[3*AddrW +: AddrW];
   assign x6_addr  = x_addr_q[5*AddrW +: AddrW];
   assign x10_addr = x_addr_q[9*AddrW +: AddrW];
@@ -288,7 +287,6 @@ module zb_rop
     .pipe_we_i   (x4_dwe),
     .pipe_waddr_i(x4_addr),
     .pipe_wdata_i(x4_z_q),
-    .pipe_wnext_i(x3_addr),
     .rdata_o     (dmem_rdata)
   );
 
@@ -312,7 +310,6 @@ module zb_rop
     .pipe_we_i   (x4_vwe),
     .pipe_waddr_i(x4_addr),
     .pipe_wdata_i(x4_cov_new_q),
-    .pipe_wnext_i(x3_addr),
     .rdata_o     (vmem_rdata)
   );
 
@@ -336,7 +333,6 @@ module zb_rop
     .pipe_we_i   (1'b0),
     .pipe_waddr_i(m_addr_q),
     .pipe_wdata_i(m_z_q),
-    .pipe_wnext_i(m_addr_q),
     .rdata_o     (pmem_rdata)
   );
 
@@ -537,7 +533,6 @@ module zb_rop
     .pipe_we_i   (x11_cwe),
     .pipe_waddr_i(x11_addr),
     .pipe_wdata_i(x11_color),
-    .pipe_wnext_i(x10_addr),
     .rdata_o     (cmem_rdata)
   );
 

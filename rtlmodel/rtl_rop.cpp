@@ -147,6 +147,15 @@ struct Sim {
     tick();
     top->rst_ni = 1;
     tick();
+    // The tile memory's words are unknown after reset: one read of every beat puts them at the
+    // planes' epoch, as a fast clear needs (zb_plane).
+    top->tile_req_i = 1;
+    for (int a = 0; a < kRtlTileW * kRtlTileH / kRtlBeat; ++a) {
+      top->tile_addr_i = a;
+      tick();
+    }
+    top->tile_req_i = 0;
+    tick();
   }
   ~Sim() {
     // Verilator 5.006 erases a model's scopes through the thread's current context: make it

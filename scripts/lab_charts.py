@@ -1,12 +1,14 @@
 #!/usr/bin/env python3
 """Charts of the methods lab (docs/lab.md): error against cost, Pareto front marked.
 
-Usage: lab_charts.py LAB_SUMMARY_CSV OUT_DIR
+Usage: lab_charts.py LAB_SUMMARY_CSV OUT_DIR [BEAT]
 
 Reads the per-family means `zblend lab` writes (lab_summary.csv, Pareto flags included: the
 front is computed and tested in C++, lab/lab.cpp) and writes OUT_DIR/main.png (every scene,
 error against cycles or fragments), OUT_DIR/main-bytes.png (against memory bytes) and
-OUT_DIR/family-FAMILY.png for each family. Each PNG is written beside its target and renamed.
+OUT_DIR/family-FAMILY.png for each family. From lab.csv beside the summary, OUT_DIR/tile-beat.png:
+tile cycles as a share of streaming cycles against the tile port's width, over every scene, per
+method (BEAT, zb_rop's width, is marked). Each PNG is written beside its target and renamed.
 """
 import csv
 import os
@@ -106,8 +108,57 @@ def chart(rows, key, pareto_key, title, out_path):
     os.replace(tmp, out_path)
 
 
+TILE_TARGET = 0.15  # tile cycles at most this share of streaming cycles (docs/rtl.md)
+
+
+def save(fig, out_path):
+    tmp = out_path + ".tmp.png"
+    fig.savefig(tmp)
+    plt.close(fig)
+    os.replace(tmp, out_path)
+
+
+def tile_beat_chart(lab_csv, beat, out_path):
+    with open(lab_csv, newline="") as f:
+        rows = [r for r in csv.DictReader(f) if r.get("model_stream_cycles")]
+    if not rows:
+        return
+    beats = sorted(int(k[len("tile_cycles_beat"):]) for k in rows[0]
+                   if k.startswith("tile_cycles_beat"))
+    methods = []
+    for r in rows:
+        if r["method"] not in methods:
+            methods.append(r["method"])
+
+    def share(sel):
+        stream = sum(int(r["model_stream_cycles"]) for r in sel)
+        return [sum(int(r[f"tile_cycles_beat{b}"]) for r in sel) / stream for b in beats]
+
+    fig, ax = plt.subplots(figsize=(9, 5.5), dpi=110)
+    for m in methods:
+        ax.plot(beats, share([r for r in rows if r["method"] == m]), marker=".", lw=1,
+                alpha=0.7, label=m)
+    ax.plot(beats, share(rows), marker="o", lw=3, color="black", label="every method")
+    ax.axhline(TILE_TARGET, color="red", ls="--", lw=1, label=f"target {TILE_TARGET:.0%}")
+    if beat:
+        ax.axvline(beat, color="grey", ls=":", lw=1, label=f"zb_rop BEAT = {beat}")
+    ax.set_xscale("log", base=2)
+    ax.set_xticks(beats)
+    ax.set_xticklabels([str(b) for b in beats])
+    ax.set_yscale("log")
+    ax.yaxis.set_major_formatter(matplotlib.ticker.PercentFormatter(1.0))
+    ax.set_xlabel("tile port width (pixels a beat)")
+    ax.set_ylabel("tile cycles / streaming cycles")
+    scenes = len({r["scene"] for r in rows})
+    ax.set_title(f"Tile load and store against the port's width ({scenes} scenes, cost model)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(loc="upper right", fontsize=7, ncol=2)
+    fig.tight_layout()
+    save(fig, out_path)
+
+
 def main(argv):
-    if len(argv) != 3:
+    if len(argv) not in (3, 4):
         print(__doc__.strip().splitlines()[2], file=sys.stderr)
         return 2
     rows, families = read_summary(argv[1])
@@ -128,6 +179,10 @@ def main(argv):
                   f"Family '{family}' ({scenes} scene{'s' if scenes != 1 else ''}): "
                   "error against cost",
                   os.path.join(out_dir, f"family-{path_name(family)}.png"))
+    lab_csv = os.path.join(os.path.dirname(argv[1]), "lab.csv")
+    if os.path.exists(lab_csv):
+        tile_beat_chart(lab_csv, int(argv[3]) if len(argv) == 4 else 0,
+                        os.path.join(out_dir, "tile-beat.png"))
     return 0
 
 

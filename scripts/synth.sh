@@ -14,6 +14,8 @@ usage: scripts/synth.sh [options]
   --out DIR           output directory (default out/synth)
   --tile N            TILE_W = TILE_H = N (default 32: a 64x64 tile needs more than HX8K's
                       32 block RAMs)
+  --beat N            BEAT, tile port pixels a clock (default 4: at 32x32, 4 banks of 256
+                      words a plane fill 28 of HX8K's 32 block RAMs; 8 would need 56)
   --depth-bits N      DEPTH_BITS (default 24)
   --cov-samples N     COV_SAMPLES (default 16)
   --freq MHZ          nextpnr target clock (default 100)
@@ -31,6 +33,7 @@ EOF
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=out/synth
 tile=32
+beat=4
 depth_bits=24
 cov_samples=16
 freq=100
@@ -41,6 +44,7 @@ while [[ $# -gt 0 ]]; do
   case $1 in
     --out) out=${2:?}; shift 2 ;;
     --tile) tile=${2:?}; shift 2 ;;
+    --beat) beat=${2:?}; shift 2 ;;
     --depth-bits) depth_bits=${2:?}; shift 2 ;;
     --cov-samples) cov_samples=${2:?}; shift 2 ;;
     --freq) freq=${2:?}; shift 2 ;;
@@ -51,7 +55,7 @@ while [[ $# -gt 0 ]]; do
     *) echo "synth.sh: unknown option '$1'" >&2; usage >&2; exit 2 ;;
   esac
 done
-for v in "$tile" "$depth_bits" "$cov_samples" "$freq" ${require_mhz:+"$require_mhz"} $seeds; do
+for v in "$tile" "$beat" "$depth_bits" "$cov_samples" "$freq" ${require_mhz:+"$require_mhz"} $seeds; do
   [[ $v =~ ^[0-9]+$ ]] || { echo "synth.sh: '$v' is not a number" >&2; exit 2; }
 done
 
@@ -62,7 +66,7 @@ done
 cd "$root"
 mkdir -p "$out"
 rtl="rtl/zb_pkg.sv $(ls rtl/*.sv | grep -v '/zb_pkg.sv$' | tr '\n' ' ')"  # the package first
-params="-set TILE_W $tile -set TILE_H $tile -set DEPTH_BITS $depth_bits -set COV_SAMPLES $cov_samples"
+params="-set TILE_W $tile -set TILE_H $tile -set BEAT $beat -set DEPTH_BITS $depth_bits -set COV_SAMPLES $cov_samples"
 latch_types='t:$dlatch t:$adlatch t:$dlatchsr t:$_DLATCH_* t:$_DLATCHSR_*'
 t0=$SECONDS
 step() { printf 'synth: [%4ds] %s\n' $((SECONDS - t0)) "$*"; }
@@ -71,7 +75,7 @@ fail() { echo "synth: FAILED: $*" >&2; exit 1; }
 # Cell count of a `stat` type line ("     SB_LUT4    123"); 0 when absent. Last stat wins.
 count() { awk -v t="$2" '$1 == t { n = $2 } END { print n + 0 }' "$1"; }
 
-step "yosys: generic synthesis of zb_rop (TILE ${tile}x$tile, DEPTH_BITS $depth_bits, COV_SAMPLES $cov_samples)"
+step "yosys: generic synthesis of zb_rop (TILE ${tile}x$tile, BEAT $beat, DEPTH_BITS $depth_bits, COV_SAMPLES $cov_samples)"
 yosys -l "$out/yosys_generic.log" -q -p "read_verilog -sv $rtl; chparam $params zb_rop;
   synth -top zb_rop; check -assert; tee -o $out/latches_generic.txt select -list $latch_types;
   select -assert-none $latch_types; tee -o $out/stat_generic.txt stat" >/dev/null \
@@ -166,8 +170,8 @@ fi
 
 csv=$out/synth.csv
 {
-  echo "tile,depth_bits,cov_samples,generic_cells,sb_lut4,sb_carry,sb_ram40_4k,flip_flops,harness_lc,lc_total,ram_used,ram_total,target_mhz,fmax_mhz,seeds,fmax_per_seed"
-  echo "$tile,$depth_bits,$cov_samples,$cells,$luts,$carries,$rams,$ffs,$lc,$lc_total,$ram_used,$ram_total,$freq,$fmax,${seeds// /;},$(IFS=';'; echo "${fmax_list[*]}")"
+  echo "tile,beat,depth_bits,cov_samples,generic_cells,sb_lut4,sb_carry,sb_ram40_4k,flip_flops,harness_lc,lc_total,ram_used,ram_total,target_mhz,fmax_mhz,seeds,fmax_per_seed"
+  echo "$tile,$beat,$depth_bits,$cov_samples,$cells,$luts,$carries,$rams,$ffs,$lc,$lc_total,$ram_used,$ram_total,$freq,$fmax,${seeds// /;},$(IFS=';'; echo "${fmax_list[*]}")"
 } >"$csv"
 
 met="not run"
@@ -178,7 +182,7 @@ rep=$out/report.md
 {
   echo "# zb_rop synthesis report"
   echo
-  echo "Command: \`scripts/synth.sh --tile $tile --depth-bits $depth_bits --cov-samples $cov_samples --freq $freq --seeds \"$seeds\"\`"
+  echo "Command: \`scripts/synth.sh --tile $tile --beat $beat --depth-bits $depth_bits --cov-samples $cov_samples --freq $freq --seeds \"$seeds\"\`"
   echo "($(yosys -V | head -1); $(nextpnr-ice40 --version 2>&1 | head -1))."
   echo
   echo "| figure | value | source |"

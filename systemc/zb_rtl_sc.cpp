@@ -110,6 +110,15 @@ void ZbRtlSc::run() {
   for (int i = 0; i < 3; ++i) cycle();
   rst_n_.write(true);
   cycle();
+  // The tile memory's words are unknown after reset: one read of every beat puts them at the
+  // planes' epoch, as a fast clear needs (zb_plane).
+  tile_req_.write(true);
+  for (int a = 0; a < kRtlTileW * kRtlTileH / kRtlBeat; ++a) {
+    tile_addr_.write(uint32_t(a));
+    cycle();
+  }
+  tile_req_.write(false);
+  cycle();
   for (;;) {
     const PassCommand c = cmd_i.read();
     switch (c.kind) {

@@ -11,7 +11,8 @@ module zb_rop_harness #(
   parameter int unsigned TILE_W      = 32,
   parameter int unsigned TILE_H      = 32,
   parameter int unsigned CNT_W       = 32,
-  parameter int unsigned COV_SAMPLES = 16
+  parameter int unsigned COV_SAMPLES = 16,
+  parameter int unsigned BEAT        = 4    // 4 banks of 256 words a plane fit HX8K's 32 RAMs
 ) (
   input  logic clk_i,
   input  logic rst_ni,
@@ -19,16 +20,42 @@ module zb_rop_harness #(
   output logic sout_o
 );
 
-  localparam int unsigned AddrW = $clog2(TILE_W * TILE_H);
-  localparam int unsigned CovW  = $clog2(COV_SAMPLES + 1);
-  // state_we 1, state 13, tile_x0/y0 32, frag_valid 1, x/y 32, z, rgba 32, cov, stall 1,
-  // tile_req 1, tile_we 1, tile_addr, wcolor 32, wdepth, wcov, wpeel, cnt_clear 1.
-  localparam int unsigned InW  = 1 + 13 + 32 + 1 + 32 + DEPTH_BITS + 32 + CovW + 1 + 1 + 1 +
-                                 AddrW + 32 + DEPTH_BITS + CovW + DEPTH_BITS + 1;
-  // frag_ready 1, rcolor 32, rdepth, rcov, rpeel, busy 1, nine counters.
-  localparam int unsigned OutW = 1 + 32 + DEPTH_BITS + CovW + DEPTH_BITS + 1 + 9 * CNT_W;
-  localparam int unsigned Grp  = 16;                       // bits per first-level XOR
-  localparam int unsigned X1W  = (OutW + Grp - 1) / Grp;
+  localparam int unsigned CovW   = $clog2(COV_SAMPLES + 1);
+  localparam int unsigned BeatAW = $clog2(TILE_W * TILE_H / BEAT);
+  // The inputs in the shift register, each at its offset.
+  localparam int unsigned IStateWe = 0;
+  localparam int unsigned IState   = IStateWe + 1;
+  localparam int unsigned IX0      = IState + 13;
+  localparam int unsigned IY0      = IX0 + 16;
+  localparam int unsigned IValid   = IY0 + 16;
+  localparam int unsigned IX       = IValid + 1;
+  localparam int unsigned IY       = IX + 16;
+  localparam int unsigned IZ       = IY + 16;
+  localparam int unsigned IRgba    = IZ + DEPTH_BITS;
+  localparam int unsigned ICov     = IRgba + 32;
+  localparam int unsigned IStall   = ICov + CovW;
+  localparam int unsigned IReq     = IStall + 1;
+  localparam int unsigned IWe      = IReq + 1;
+  localparam int unsigned IClear   = IWe + 1;
+  localparam int unsigned IPlanes  = IClear + 1;
+  localparam int unsigned IAddr    = IPlanes + 4;
+  localparam int unsigned IWColor  = IAddr + BeatAW;
+  localparam int unsigned IWDepth  = IWColor + BEAT * 32;
+  localparam int unsigned IWCov    = IWDepth + BEAT * DEPTH_BITS;
+  localparam int unsigned IWPeel   = IWCov + BEAT * CovW;
+  localparam int unsigned ICntClr  = IWPeel + BEAT * DEPTH_BITS;
+  localparam int unsigned InW      = ICntClr + 1;
+  // The outputs: frag_ready, the read beat, busy, eleven counters.
+  localparam int unsigned OReady   = 0;
+  localparam int unsigned ORColor  = OReady + 1;
+  localparam int unsigned ORDepth  = ORColor + BEAT * 32;
+  localparam int unsigned ORCov    = ORDepth + BEAT * DEPTH_BITS;
+  localparam int unsigned ORPeel   = ORCov + BEAT * CovW;
+  localparam int unsigned OBusy    = ORPeel + BEAT * DEPTH_BITS;
+  localparam int unsigned OCnt     = OBusy + 1;
+  localparam int unsigned OutW     = OCnt + 11 * CNT_W;
+  localparam int unsigned Grp      = 16;                       // bits per first-level XOR
+  localparam int unsigned X1W      = (OutW + Grp - 1) / Grp;
 
   logic       rst_sync_q, rst_n_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -52,44 +79,49 @@ module zb_rop_harness #(
     .TILE_W     (TILE_W),
     .TILE_H     (TILE_H),
     .CNT_W      (CNT_W),
-    .COV_SAMPLES(COV_SAMPLES)
+    .COV_SAMPLES(COV_SAMPLES),
+    .BEAT       (BEAT)
   ) u_rop (
     .clk_i,
     .rst_ni            (rst_n_q),
-    .state_we_i        (in_q[0]),
-    .state_i           (in_q[1 +: 13]),
-    .tile_x0_i         (in_q[14 +: 16]),
-    .tile_y0_i         (in_q[30 +: 16]),
-    .frag_valid_i      (in_q[46]),
-    .frag_ready_o      (out_d[0]),
-    .frag_x_i          (in_q[47 +: 16]),
-    .frag_y_i          (in_q[63 +: 16]),
-    .frag_z_i          (in_q[79 +: DEPTH_BITS]),
-    .frag_rgba_i       (in_q[79 + DEPTH_BITS +: 32]),
-    .frag_cov_i        (in_q[111 + DEPTH_BITS +: CovW]),
-    .stall_i           (in_q[111 + DEPTH_BITS + CovW]),
-    .tile_req_i        (in_q[112 + DEPTH_BITS + CovW]),
-    .tile_we_i         (in_q[113 + DEPTH_BITS + CovW]),
-    .tile_addr_i       (in_q[114 + DEPTH_BITS + CovW +: AddrW]),
-    .tile_wcolor_i     (in_q[114 + DEPTH_BITS + CovW + AddrW +: 32]),
-    .tile_wdepth_i     (in_q[146 + DEPTH_BITS + CovW + AddrW +: DEPTH_BITS]),
-    .tile_wcov_i       (in_q[146 + 2 * DEPTH_BITS + CovW + AddrW +: CovW]),
-    .tile_wpeel_i      (in_q[146 + 2 * DEPTH_BITS + 2 * CovW + AddrW +: DEPTH_BITS]),
-    .tile_rcolor_o     (out_d[1 +: 32]),
-    .tile_rdepth_o     (out_d[33 +: DEPTH_BITS]),
-    .tile_rcov_o       (out_d[33 + DEPTH_BITS +: CovW]),
-    .tile_rpeel_o      (out_d[33 + DEPTH_BITS + CovW +: DEPTH_BITS]),
-    .busy_o            (out_d[33 + 2 * DEPTH_BITS + CovW]),
-    .cnt_clear_i       (in_q[InW-1]),
-    .cnt_frag_in_o     (out_d[OutW - 9 * CNT_W +: CNT_W]),
-    .cnt_frag_passed_o (out_d[OutW - 8 * CNT_W +: CNT_W]),
-    .cnt_frag_killed_o (out_d[OutW - 7 * CNT_W +: CNT_W]),
-    .cnt_depth_reads_o (out_d[OutW - 6 * CNT_W +: CNT_W]),
-    .cnt_depth_writes_o(out_d[OutW - 5 * CNT_W +: CNT_W]),
-    .cnt_color_reads_o (out_d[OutW - 4 * CNT_W +: CNT_W]),
-    .cnt_color_writes_o(out_d[OutW - 3 * CNT_W +: CNT_W]),
-    .cnt_stall_cycles_o(out_d[OutW - 2 * CNT_W +: CNT_W]),
-    .cnt_cycles_o      (out_d[OutW - 1 * CNT_W +: CNT_W])
+    .state_we_i        (in_q[IStateWe]),
+    .state_i           (in_q[IState +: 13]),
+    .tile_x0_i         (in_q[IX0 +: 16]),
+    .tile_y0_i         (in_q[IY0 +: 16]),
+    .frag_valid_i      (in_q[IValid]),
+    .frag_ready_o      (out_d[OReady]),
+    .frag_x_i          (in_q[IX +: 16]),
+    .frag_y_i          (in_q[IY +: 16]),
+    .frag_z_i          (in_q[IZ +: DEPTH_BITS]),
+    .frag_rgba_i       (in_q[IRgba +: 32]),
+    .frag_cov_i        (in_q[ICov +: CovW]),
+    .stall_i           (in_q[IStall]),
+    .tile_req_i        (in_q[IReq]),
+    .tile_we_i         (in_q[IWe]),
+    .tile_clear_i      (in_q[IClear]),
+    .tile_planes_i     (in_q[IPlanes +: 4]),
+    .tile_addr_i       (in_q[IAddr +: BeatAW]),
+    .tile_wcolor_i     (in_q[IWColor +: BEAT * 32]),
+    .tile_wdepth_i     (in_q[IWDepth +: BEAT * DEPTH_BITS]),
+    .tile_wcov_i       (in_q[IWCov +: BEAT * CovW]),
+    .tile_wpeel_i      (in_q[IWPeel +: BEAT * DEPTH_BITS]),
+    .tile_rcolor_o     (out_d[ORColor +: BEAT * 32]),
+    .tile_rdepth_o     (out_d[ORDepth +: BEAT * DEPTH_BITS]),
+    .tile_rcov_o       (out_d[ORCov +: BEAT * CovW]),
+    .tile_rpeel_o      (out_d[ORPeel +: BEAT * DEPTH_BITS]),
+    .busy_o            (out_d[OBusy]),
+    .cnt_clear_i       (in_q[ICntClr]),
+    .cnt_frag_in_o     (out_d[OCnt + 0 * CNT_W +: CNT_W]),
+    .cnt_frag_passed_o (out_d[OCnt + 1 * CNT_W +: CNT_W]),
+    .cnt_frag_killed_o (out_d[OCnt + 2 * CNT_W +: CNT_W]),
+    .cnt_depth_reads_o (out_d[OCnt + 3 * CNT_W +: CNT_W]),
+    .cnt_depth_writes_o(out_d[OCnt + 4 * CNT_W +: CNT_W]),
+    .cnt_color_reads_o (out_d[OCnt + 5 * CNT_W +: CNT_W]),
+    .cnt_color_writes_o(out_d[OCnt + 6 * CNT_W +: CNT_W]),
+    .cnt_stall_cycles_o(out_d[OCnt + 7 * CNT_W +: CNT_W]),
+    .cnt_cycles_o      (out_d[OCnt + 8 * CNT_W +: CNT_W]),
+    .cnt_tile_loads_o  (out_d[OCnt + 9 * CNT_W +: CNT_W]),
+    .cnt_tile_stores_o (out_d[OCnt + 10 * CNT_W +: CNT_W])
   );
 
   logic [OutW-1:0]     out_q;

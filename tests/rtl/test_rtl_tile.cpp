@@ -98,6 +98,23 @@ TEST(TilePort, AfterAClearNothingLoadsAndAnUntouchedTileIsNotRun) {
   m.expect_same_frame();
 }
 
+// A fast-cleared plane written in part, stored, then cleared again: the store put every word
+// back at the plane's epoch, so the second fast clear makes all of them fresh.
+TEST(TilePort, FastClearAfterAFastClearedPass) {
+  Both m;
+  m.begin_frame();
+  m.pass(RopState{}, sparse_in_tile0(100, Rgba8{200, 0, 0, 255}));
+  for (int k = 0; k < 3; ++k) {
+    m.frame_op(op(FrameOpKind::kClearColor, Rgba8{uint8_t(k), 7, 9, 255}));
+    m.frame_op(op(FrameOpKind::kClearDepth, {}, FrameOp::kFar));
+    std::vector<Fragment> f = sparse_in_tile0(uint32_t(60 + k), Rgba8{0, 0, 200, 255});
+    f.erase(f.begin(), f.begin() + k);  // other pixels each time
+    m.pass(RopState{}, f);
+    EXPECT_EQ(m.only_run().load_beats, 0u);
+    m.expect_same_frame();
+  }
+}
+
 TEST(TilePort, APassThatWritesNothingStoresNothing) {
   Both m;
   m.begin_frame();
