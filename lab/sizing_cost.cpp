@@ -81,8 +81,8 @@ void CostCounter::draw(const Fragment* fragments, size_t count) {
 }
 
 // The driver's run of a pass (rtlmodel/rtl_rop.cpp): per touched tile, the setup cycle and the
-// load beats of its planes (tile_io.h; clipped to the frame), stream through zb_rop's issue
-// window and drain (IssueSchedule), the store beats.
+// load beats of its planes (tile_io.h; the whole tile, also where the frame clips it), stream
+// through zb_rop's issue window and drain (IssueSchedule), the store beats.
 PassStats CostCounter::end_pass() {
   const PassStats s = inner_.end_pass();
   cost_.totals += s;
@@ -94,7 +94,7 @@ PassStats CostCounter::end_pass() {
       const int x0 = int(t % uint32_t(g.columns)) * g.size;
       const int y0 = int(t / uint32_t(g.columns)) * g.size;
       const int w = std::min(g.size, width_ - x0), h = std::min(g.size, height_ - y0);
-      const uint64_t beats = tile_beats(w, h, beat_), pixels = uint64_t(w) * uint64_t(h);
+      const uint64_t beats = tile_beats(g.size, g.size, beat_), pixels = uint64_t(w) * uint64_t(h);
       const TileIo io = g.states.plan(t, state_);
       g.states.stored(t, io.store);
       c.stream_cycles += schedule_.run(g.stream[t].data(), g.stream[t].size());

@@ -124,10 +124,10 @@ module zb_rop
   localparam int unsigned QW    = 8 + CovW;  // coverage blend addend w*s + N/2 (zb_blend)
   // A younger fragment to the same pixel issues at least Span cycles after the older one. At
   // Span its depth and coverage reads meet the older one's writes (E4) and take the written
-  // words from the forwarding registers; its colour read (E6 = the older one's E10) is one edge
-  // early and takes the older one's write data in X7, where the older one is in X11; at Span + 1
-  // its colour read meets the older colour write (fwd_color_q). Below 4 the older result would
-  // not exist yet when the younger fragment's X7 needs it.
+  // words from the forwarding registers. Its colour read (E5) comes before the older colour
+  // write: at Span that write is at the younger's E7, so X7 takes the older one's write data
+  // (bypass); at Span + 1 at E6, and at Span + 2 at the read edge E5: X6 catches either in
+  // fwd_color_q. Below 4 the older result would not exist yet when the younger's X7 needs it.
   localparam int unsigned Span  = 4;
 
   // ---------------------------------------------------------------------------------------
@@ -222,7 +222,8 @@ module zb_rop
   localparam int unsigned Last = 11;
   logic [Last:1]         x_valid_q;
   logic [Last*AddrW-1:0] x_addr_q;          // Xk at [(k-1)*AddrW +: AddrW]
-  logic [AddrW-1:0]      x4_addr, x6_addr, x10_addr, x11_addr;
+  logic [AddrW-1:0]      x4_addr, x5_addr, x6_addr, x10_addr, x11_addr;
+  assign x5_addr  = x_addr_q[4*AddrW +: AddrW];
   assign x4_addr  = x_addr_q[3*AddrW +: AddrW];
   assign x6_addr  = x_addr_q[5*AddrW +: AddrW];
   assign x10_addr = x_addr_q[9*AddrW +: AddrW];
@@ -495,20 +496,27 @@ module zb_rop
   end
 
   // ---------------------------------------------------------------------------------------
-  // Colour: read at E6 (X6's address), blend X7..X11, write at E11 when passed and masked in.
+  // Colour: read at E5 (X5's address), the word registered in X6 (the RAM's clock-to-out and
+  // the plane's resolve get a cycle of their own), blend X7..X11, write at E11 when passed and
+  // masked in.
   // ---------------------------------------------------------------------------------------
-  logic [31:0] cmem_rdata, x11_color, x7_dst;
+  logic [31:0] cmem_rdata, x7_mem_q, x11_color, x7_dst;
   logic        x11_cwe;
-  logic        fwd_hit_q;       // X7: X6's read met X11's write of its pixel at E6
-  logic [31:0] fwd_color_q;     // the word written at that edge
+  logic        fwd5_hit, fwd6_hit;    // X5's read meets X11's write at E5; X6 meets it at E6
+  logic        fwd6_hit_q;            // X6: X5's read met a write of its pixel at E5
+  logic [31:0] fwd6_color_q;          // the word written at that edge
+  logic        fwd_hit_q;             // X7: a write of its pixel at E5 or E6
+  logic [31:0] fwd_color_q;           // that word
   logic        byp_hit_q;       // X7: the fragment now in X11 writes X7's pixel at this edge
   logic        x10_cwe;
 
   // Forwarding: the RAM's word for a read at the edge of a write to it is undefined
-  // (no_rw_check), and the write is the one the reader must see. Bypass: X7's read came one
-  // edge before the colour write of the fragment now in X11, the newest word of the pixel;
-  // it takes precedence over an older one in fwd_color_q.
-  assign x7_dst  = byp_hit_q ? x11_color : (fwd_hit_q ? fwd_color_q : cmem_rdata);
+  // (no_rw_check), and a write at E5 or E6 is newer than the word read. Bypass: the fragment
+  // now in X11 writes X7's pixel at this edge, the newest word of the pixel; it takes
+  // precedence over fwd_color_q.
+  assign fwd5_hit = x_valid_q[5] & x11_cwe & (x5_addr == x11_addr);
+  assign fwd6_hit = x_valid_q[6] & x11_cwe & (x6_addr == x11_addr);
+  assign x7_dst  = byp_hit_q ? x11_color : (fwd_hit_q ? fwd_color_q : x7_mem_q);
   assign x10_cwe = x_valid_q[10] & x_pass_q[10] & (st_color_mask != 4'h0);
 
   assign x11_cwe = x_valid_q[11] & x_pass_q[11] & (st_color_mask != 4'h0);
@@ -528,8 +536,8 @@ module zb_rop
     .tile_addr_i (tile_addr_i),
     .tile_wdata_i(tile_wcolor_i),
     .tile_rdata_o(tile_rcolor_o),
-    .pipe_re_i   (x_valid_q[6]),
-    .pipe_raddr_i(x6_addr),
+    .pipe_re_i   (x_valid_q[5]),
+    .pipe_raddr_i(x5_addr),
     .pipe_we_i   (x11_cwe),
     .pipe_waddr_i(x11_addr),
     .pipe_wdata_i(x11_color),
@@ -638,9 +646,12 @@ module zb_rop
     dfwd_z_q    <= x4_z_q;
     vfwd_hit_q  <= x4_vwe & (m_addr_q == x4_addr);
     vfwd_cov_q  <= x4_cov_new_q;
-    fwd_hit_q   <= x_valid_q[6] & x11_cwe & (x6_addr == x11_addr);
-    fwd_color_q <= x11_color;
-    byp_hit_q   <= x_valid_q[6] & x10_cwe & (x6_addr == x10_addr);
+    x7_mem_q     <= cmem_rdata;
+    fwd6_hit_q   <= fwd5_hit;
+    fwd6_color_q <= x11_color;
+    fwd_hit_q    <= fwd6_hit | fwd6_hit_q;
+    fwd_color_q  <= fwd6_hit ? x11_color : fwd6_color_q;
+    byp_hit_q    <= x_valid_q[6] & x10_cwe & (x6_addr == x10_addr);
 
     x_pass_q[4] <= x3_pass;
     for (int unsigned k = 5; k <= Last; k++) begin
@@ -725,14 +736,14 @@ module zb_rop
       depth_older |= x_valid_q[k] && x_addr_q[(k-1)*AddrW +: AddrW] == m_addr_q;
     end
     color_older = 1'b0;
-    for (int unsigned k = 7; k < Last - 1; k++) begin
-      color_older |= x_valid_q[k] && x_addr_q[(k-1)*AddrW +: AddrW] == x6_addr;
+    for (int unsigned k = 6; k < Last - 2; k++) begin
+      color_older |= x_valid_q[k] && x_addr_q[(k-1)*AddrW +: AddrW] == x5_addr;
     end
   end
   DepthReadAfterWrite: assert property (@(posedge clk_i) disable iff (!rst_ni)
       issue |-> !depth_older);
   ColorReadAfterWrite: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      x_valid_q[6] |-> !color_older);
+      x_valid_q[5] |-> !color_older);
   // A read that meets a write of its pixel at one edge is forwarded; a colour read one edge
   // before the write, bypassed.
   DepthForwardCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
@@ -740,7 +751,11 @@ module zb_rop
   CovForwardCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
       (issue && x4_vwe && m_addr_q == x4_addr) |=> vfwd_hit_q);
   ColorForwardCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (x_valid_q[6] && x11_cwe && x6_addr == x11_addr) |=> fwd_hit_q);
+      fwd6_hit |=> fwd_hit_q);
+  ColorReadEdgeForwardCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      fwd5_hit |=> fwd6_hit_q);
+  ColorForwardHeld: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      fwd6_hit_q |=> fwd_hit_q);
   ColorBypassCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
       (x_valid_q[6] && x10_cwe && x6_addr == x10_addr) |=> (byp_hit_q && x11_cwe));
   // Every path a read can take to its pixel's newest word is reached (`make coverage` lists
@@ -749,8 +764,8 @@ module zb_rop
       issue && x4_dwe && m_addr_q == x4_addr);
   CovForwardPath: cover property (@(posedge clk_i) disable iff (!rst_ni)
       issue && x4_vwe && m_addr_q == x4_addr);
-  ColorForwardPath: cover property (@(posedge clk_i) disable iff (!rst_ni)
-      x_valid_q[6] && x11_cwe && x6_addr == x11_addr);
+  ColorForwardPath: cover property (@(posedge clk_i) disable iff (!rst_ni) fwd6_hit);
+  ColorReadEdgeForwardPath: cover property (@(posedge clk_i) disable iff (!rst_ni) fwd5_hit);
   ColorBypassPath: cover property (@(posedge clk_i) disable iff (!rst_ni)
       x_valid_q[6] && x10_cwe && x6_addr == x10_addr);
   // The skid register takes a fragment (I held by a full window).

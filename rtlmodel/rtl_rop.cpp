@@ -243,7 +243,7 @@ struct RtlRop::Impl {
                 uint64_t* accept_out, TileRun& run, PassStats& stats) const {
     VModel& t = *s.top;
     const int w = std::min(kRtlTileW, src.width - x0), h = std::min(kRtlTileH, src.height - y0);
-    const int beats_x = (w + kRtlBeat - 1) / kRtlBeat;
+    constexpr int beats_x = kRtlTileW / kRtlBeat;
     constexpr unsigned cw = 32, dw = kRtlDepthBits, vw = coverage_bits(kRtlCoverageSamples);
     run.x0 = x0;
     run.y0 = y0;
@@ -268,17 +268,17 @@ struct RtlRop::Impl {
       t.tile_req_i = 1;
       t.tile_we_i = 1;
       t.tile_planes_i = io.load;
-      for (int y = 0; y < h; ++y)
+      for (int y = 0; y < kRtlTileH; ++y)
         for (int bx = 0; bx < beats_x; ++bx) {
           t.tile_addr_i = (y * kRtlTileW + bx * kRtlBeat) / kRtlBeat;
           for (int b = 0; b < kRtlBeat; ++b) {
             const int x = bx * kRtlBeat + b;
-            if (x >= w) break;  // lanes past the frame's edge carry what they carried
-            const size_t i = src.index(x0 + x, y0 + y);
-            put_lane(t.tile_wcolor_i, unsigned(b), cw, pack_rgba(src.color[i]));
-            put_lane(t.tile_wdepth_i, unsigned(b), dw, src.depth[i]);
-            put_lane(t.tile_wcov_i, unsigned(b), vw, src.coverage[i]);
-            put_lane(t.tile_wpeel_i, unsigned(b), dw, src.peel[i]);
+            const bool in = x < w && y < h;  // beyond the frame's edge: zeros
+            const size_t i = in ? src.index(x0 + x, y0 + y) : 0;
+            put_lane(t.tile_wcolor_i, unsigned(b), cw, in ? pack_rgba(src.color[i]) : 0);
+            put_lane(t.tile_wdepth_i, unsigned(b), dw, in ? src.depth[i] : 0);
+            put_lane(t.tile_wcov_i, unsigned(b), vw, in ? src.coverage[i] : 0);
+            put_lane(t.tile_wpeel_i, unsigned(b), dw, in ? src.peel[i] : 0);
           }
           s.tick();
         }
@@ -350,11 +350,11 @@ struct RtlRop::Impl {
     if (io.store) {
       t.tile_req_i = 1;
       t.tile_we_i = 0;
-      for (int y = 0; y < h; ++y)
+      for (int y = 0; y < kRtlTileH; ++y)
         for (int bx = 0; bx < beats_x; ++bx) {
           t.tile_addr_i = (y * kRtlTileW + bx * kRtlBeat) / kRtlBeat;
           s.tick();
-          for (int b = 0; b < kRtlBeat; ++b) {
+          for (int b = 0; b < kRtlBeat && y < h; ++b) {
             const int x = bx * kRtlBeat + b;
             if (x >= w) break;
             const size_t i = dst.index(x0 + x, y0 + y);
@@ -367,7 +367,7 @@ struct RtlRop::Impl {
     }
     run.load_beats = t.cnt_tile_loads_o;
     run.store_beats = t.cnt_tile_stores_o;
-    const uint64_t beats = tile_beats(w, h, kRtlBeat);
+    const uint64_t beats = tile_beats(kRtlTileW, kRtlTileH, kRtlBeat);
     if (run.load_beats != (io.load ? beats : 0) || run.store_beats != (io.store ? beats : 0))
       throw std::runtime_error("rtl: tile (" + std::to_string(x0) + "," + std::to_string(y0) +
                                ") counted " + std::to_string(run.load_beats) + " load and " +

@@ -29,7 +29,9 @@ struct TileIo {
   std::array<uint32_t, kTilePlanes> clear_value{};
 };
 
-// Beats of a tile clipped to w x h pixels: a beat is `beat` neighbours of one row.
+// Beats of a w x h tile: a beat is `beat` neighbours of one row. Loads and stores move the
+// whole tile also where the frame clips it: every word's fast-clear generation must follow
+// the plane's (zb_plane), so none may be left behind.
 uint64_t tile_beats(int w, int h, int beat);
 // The tile's cycles at the port, beside its streaming (IssueSchedule): one setup cycle (pass
 // state, counter clear and fast clear), then its load beats, later its store beats.

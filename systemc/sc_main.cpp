@@ -117,11 +117,17 @@ int run(const Options& o) {
                   static_cast<unsigned long long>(r.mismatches), gns, gns / kClockNs, rns,
                   rns / kClockNs, static_cast<unsigned long long>(r.rtl_stream_cycles), r.wall_ms,
                   r.fragments ? r.wall_ms * 1e6 / double(r.fragments) : 0.0);
-    // The golden module waits by zb_rop's issue rule: its cycles are the RTL's streaming ones.
-    if (r.mismatches == 0 && r.golden_stream_cycles != r.rtl_stream_cycles) {
-      std::fprintf(stderr, "zblend_systemc: FAILED: %s: golden timing %llu stream cycles, rtl %llu\n",
+    // The golden module waits by zb_rop's issue rule and the driver's tile traffic: its cycles
+    // are the RTL's, streaming and tile.
+    if (r.mismatches == 0 && (r.golden_stream_cycles != r.rtl_stream_cycles ||
+                              r.golden_tile_cycles != r.rtl_tile_cycles)) {
+      std::fprintf(stderr,
+                   "zblend_systemc: FAILED: %s: golden timing %llu stream + %llu tile cycles, "
+                   "rtl %llu + %llu\n",
                    r.name.c_str(), static_cast<unsigned long long>(r.golden_stream_cycles),
-                   static_cast<unsigned long long>(r.rtl_stream_cycles));
+                   static_cast<unsigned long long>(r.golden_tile_cycles),
+                   static_cast<unsigned long long>(r.rtl_stream_cycles),
+                   static_cast<unsigned long long>(r.rtl_tile_cycles));
       ok = false;
     }
     if (r.mismatches != 0) {

@@ -56,6 +56,7 @@ CosimResult ZbCosimSc::run_trace(const std::string& name, const Trace& t) {
   CosimResult r;
   r.name = name;
   const sc_core::sc_time golden0 = golden_.busy_time(), rtl0 = rtl_.busy_time();
+  const uint64_t gtile0 = golden_.tile_io_cycles(), rtile0 = rtl_.tile_io_cycles();
   send(PassCommand::begin_frame(t.width, t.height, t.depth_bits, t.clear_color,
                                 t.coverage_samples));
   for (size_t p = 0; p < t.passes.size(); ++p) {
@@ -91,6 +92,8 @@ CosimResult ZbCosimSc::run_trace(const std::string& name, const Trace& t) {
     wait(period_);  // both modules idle on their command fifo: one clock sees the ops applied
     compare(r, "final frame operations");
   }
+  r.golden_tile_cycles = golden_.tile_io_cycles() - gtile0;
+  r.rtl_tile_cycles = rtl_.tile_io_cycles() - rtile0;
   r.golden_time = golden_.busy_time() - golden0;
   r.rtl_time = rtl_.busy_time() - rtl0;
   r.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall0)

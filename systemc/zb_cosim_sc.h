@@ -25,6 +25,7 @@ struct CosimResult {
   std::string first_mismatch;     // the first differing pixel and both values, or a counter
   sc_core::sc_time golden_time, rtl_time;  // the modules' busy_time() over the run
   uint64_t golden_stream_cycles = 0, rtl_stream_cycles = 0;  // PassStats::cycles, summed
+  uint64_t golden_tile_cycles = 0, rtl_tile_cycles = 0;      // the modules' tile_io_cycles()
   double wall_ms = 0;
 };
 

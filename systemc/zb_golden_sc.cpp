@@ -23,21 +23,26 @@ void ZbGoldenSc::run() {
     switch (c.kind) {
       case PassCommand::Kind::kBeginFrame:
         rop_.begin_frame(c.width, c.height, c.depth_bits, c.clear, c.coverage_samples);
+        tiles_ = TileStates(c.width, c.height, kRtlTileW, c.depth_bits, c.clear);
         break;
       case PassCommand::Kind::kBeginPass:
         rop_.begin_pass(c.state);
+        state_ = c.state;
         frags_.resize(c.fragments);
         for (Fragment& f : frags_) f = frag_i.read();
         break;
       case PassCommand::Kind::kEndPass: stats_o.write(run_pass()); break;
-      case PassCommand::Kind::kFrameOp: rop_.frame_op(c.op); break;
+      case PassCommand::Kind::kFrameOp:
+        rop_.frame_op(c.op);
+        tiles_.frame_op(c.op);
+        break;
     }
   }
 }
 
-// The fragments of each tile in the order zb_rop issues them (rtlmodel/rtl_timing.h: the issue
-// window keeps pass order per pixel, so the result is render()'s), each at its issue cycle, then
-// the drain. Tile load and store are not timed.
+// Per touched tile: its setup and load beats, its fragments in the order zb_rop issues them
+// (rtlmodel/rtl_timing.h: the issue window keeps pass order per pixel, so the result is
+// render()'s), each at its issue cycle, the drain, its store beats (rtlmodel/tile_io.h).
 PassStats ZbGoldenSc::run_pass() {
   wait(clk_i.posedge_event());  // a pass starts on a clock edge, as zb_rop's would
   const sc_core::sc_time start = sc_core::sc_time_stamp();
@@ -47,6 +52,12 @@ PassStats ZbGoldenSc::run_pass() {
   for (size_t t = 0; t + 1 < bins_.first.size(); ++t) {
     const uint32_t b = bins_.first[t], e = bins_.first[t + 1];
     if (b == e) continue;
+    const uint64_t beats = tile_beats(kRtlTileW, kRtlTileH, kRtlBeat);
+    const TileIo io = tiles_.plan(t, state_);
+    tiles_.stored(t, io.store);
+    const uint64_t load = kRtlTileSetup + (io.load ? beats : 0), store = io.store ? beats : 0;
+    wait_cycles(load);
+    io_cycles_ += load + store;
     issue_.resize(e - b);
     const uint64_t cycles = schedule_.run_tile(bins_, t, frags_.data(), fb.width, issue_.data());
     order_.resize(e - b);
@@ -59,8 +70,9 @@ PassStats ZbGoldenSc::run_pass() {
       now = issue_[k];
       rop_.draw(&frags_[bins_.order[b + k]], 1);
     }
-    wait_cycles(cycles - now);
+    wait_cycles(cycles - now + store);
     stream_cycles += cycles;
+    busy_cycles_ += load + store;
   }
   PassStats s = rop_.end_pass();
   s.cycles = stream_cycles;

@@ -9,6 +9,7 @@
 #include "rop/rop.h"
 #include "rtl_timing.h"
 #include "tile_bins.h"
+#include "tile_io.h"
 #include "zb_sc_types.h"
 
 namespace zb::sc {
@@ -23,9 +24,11 @@ class ZbGoldenSc : public sc_core::sc_module {
   explicit ZbGoldenSc(sc_core::sc_module_name name);
 
   const Framebuffer& framebuffer() const { return rop_.framebuffer(); }
-  // Clock cycles spent in passes (stream cycles by zb_rop's issue rule; no tile I/O), and the
-  // simulated time they took: from the first rising edge of each pass to its PassStats.
+  // Clock cycles spent in passes (stream cycles by zb_rop's issue rule, tile cycles by the
+  // driver's tile traffic, rtlmodel/tile_io.h), and the simulated time they took: from the
+  // first rising edge of each pass to its PassStats.
   uint64_t busy_cycles() const { return busy_cycles_; }
+  uint64_t tile_io_cycles() const { return io_cycles_; }
   sc_core::sc_time busy_time() const { return busy_time_; }
   // The last pass's fragments, in the order they arrived (render()'s pass order).
   const std::vector<Fragment>& pass_fragments() const { return frags_; }
@@ -36,12 +39,14 @@ class ZbGoldenSc : public sc_core::sc_module {
   void wait_cycles(uint64_t n);
 
   GoldenRop rop_;
+  TileStates tiles_;
+  RopState state_;
   std::vector<Fragment> frags_;
   TileBins bins_;
   IssueSchedule schedule_;        // zb_rop's issue window
   std::vector<uint64_t> issue_;   // its issue cycles
   std::vector<uint32_t> order_;   // its fragments in issue order
-  uint64_t busy_cycles_ = 0;
+  uint64_t busy_cycles_ = 0, io_cycles_ = 0;
   sc_core::sc_time busy_time_;
 };
 

@@ -167,7 +167,7 @@ PassStats ZbRtlSc::run_pass() {
 // drain while busy_o, the counters, the store beats.
 void ZbRtlSc::run_tile(size_t tile, int x0, int y0, uint32_t b, uint32_t e, PassStats& stats) {
   const int w = std::min(kRtlTileW, fb_.width - x0), h = std::min(kRtlTileH, fb_.height - y0);
-  const int beats_x = (w + kRtlBeat - 1) / kRtlBeat;
+  constexpr int beats_x = kRtlTileW / kRtlBeat;
   const TileIo io = tiles_.plan(tile, state_value_);
   const uint64_t load_begin = cycles_;
   Bits<kRtlBeat * 32> color{};
@@ -196,14 +196,15 @@ void ZbRtlSc::run_tile(size_t tile, int x0, int y0, uint32_t b, uint32_t e, Pass
     tile_req_.write(true);
     tile_we_.write(true);
     tile_planes_.write(io.load);
-    for (int y = 0; y < h; ++y)
+    for (int y = 0; y < kRtlTileH; ++y)
       for (int bx = 0; bx < beats_x; ++bx) {
-        for (int l = 0; l < kRtlBeat && bx * kRtlBeat + l < w; ++l) {
-          const size_t i = fb_.index(x0 + bx * kRtlBeat + l, y0 + y);
-          put_lane(color, l, 32, pack_rgba(fb_.color[i]));
-          put_lane(depth, l, kRtlDepthBits, fb_.depth[i]);
-          put_lane(cov, l, kCovW, fb_.coverage[i]);
-          put_lane(peel, l, kRtlDepthBits, fb_.peel[i]);
+        for (int l = 0; l < kRtlBeat; ++l) {
+          const bool in = bx * kRtlBeat + l < w && y < h;  // beyond the frame's edge: zeros
+          const size_t i = in ? fb_.index(x0 + bx * kRtlBeat + l, y0 + y) : 0;
+          put_lane(color, l, 32, in ? pack_rgba(fb_.color[i]) : 0);
+          put_lane(depth, l, kRtlDepthBits, in ? fb_.depth[i] : 0);
+          put_lane(cov, l, kCovW, in ? fb_.coverage[i] : 0);
+          put_lane(peel, l, kRtlDepthBits, in ? fb_.peel[i] : 0);
         }
         tile_addr_.write(uint32_t((y * kRtlTileW + bx * kRtlBeat) / kRtlBeat));
         tile_wcolor_.write(color);
@@ -265,11 +266,11 @@ void ZbRtlSc::run_tile(size_t tile, int x0, int y0, uint32_t b, uint32_t e, Pass
 
   if (io.store) {
     tile_req_.write(true);
-    for (int y = 0; y < h; ++y)
+    for (int y = 0; y < kRtlTileH; ++y)
       for (int bx = 0; bx < beats_x; ++bx) {
         tile_addr_.write(uint32_t((y * kRtlTileW + bx * kRtlBeat) / kRtlBeat));
         cycle();
-        for (int l = 0; l < kRtlBeat && bx * kRtlBeat + l < w; ++l) {
+        for (int l = 0; l < kRtlBeat && bx * kRtlBeat + l < w && y < h; ++l) {
           const size_t i = fb_.index(x0 + bx * kRtlBeat + l, y0 + y);
           if (io.store & kPlaneColor) fb_.color[i] = unpack_rgba(get_lane(tile_rcolor_.read(), l, 32));
           if (io.store & kPlaneDepth) fb_.depth[i] = get_lane(tile_rdepth_.read(), l, kRtlDepthBits);

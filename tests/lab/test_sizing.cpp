@@ -155,16 +155,16 @@ TEST(CostModel, CountsTheDriversTileLoop) {
   EXPECT_EQ(c.best_tile(24, 16), 16);  // 6 * 33 I/O cycles against 513 at 64
 }
 
-TEST(CostModel, ClipsTilesToTheFrame) {
+TEST(CostModel, MovesWholeTilesAndCountsTheFramesBytes) {
   const RasterizedScene rs =
       rasterize_triangles(corner_rect(40, 20), Viewport{40, 20}, Rgba8{0, 0, 0, 255});
   GoldenRop golden;
   CostCounter counter(golden);
   render(rs, *find_plan("opaque"), counter);
-  // 20 rows of 40 pixels: 5 beats of 8 each, stored; at 16, the third column's tiles are 8
-  // wide (one beat a row) and the second row's 4 high.
-  EXPECT_EQ(counter.cost().at(64).tile_io_cycles, 1u + 20u * 5u);
-  EXPECT_EQ(counter.cost().at(16).tile_beats, 20u * (2u + 2u + 1u));
+  // The port moves whole tiles (64 rows of 8 beats), though the frame is 40 x 20; at 16, six
+  // tiles of 16 rows of 2 beats. The memory traffic counts the frame's pixels only.
+  EXPECT_EQ(counter.cost().at(64).tile_io_cycles, 1u + 64u * 8u);
+  EXPECT_EQ(counter.cost().at(16).tile_beats, 6u * 16u * 2u);
   EXPECT_EQ(counter.cost().at(16).plane_pixels[0], 40u * 20u);  // colour stored once
 }
 
