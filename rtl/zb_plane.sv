@@ -4,8 +4,10 @@
 // Fast clear: each word carries a generation bit beside its WIDTH bits, the plane an epoch. A
 // word whose bit is not the epoch is fresh: reads of it (pipeline and tile port) return the
 // clear value. Loads and pipeline writes store the epoch, so a fast clear only flips it; that
-// needs every word at the epoch, so a tile read (the store) writes each word back resolved.
-// The driver fast-clears a plane whole, loads it whole and stores every plane a pass writes;
+// needs every word at the epoch, so a tile read (the store) writes each fresh word back.
+// A READ_ONLY plane's words are all loaded or all fresh: a flag for the plane replaces the
+// generation bits. The driver fast-clears a plane whole, loads it whole and stores every plane
+// a pass writes;
 // FastClearWhole checks it. After reset the words are unknown: one read of every beat (the
 // driver's first sweep) puts them at the epoch before the first fast clear (FastClearAfterSweep).
 // The tile port takes both RAM ports while active; zb_rop uses it only while no fragment is in
@@ -14,7 +16,8 @@ module zb_plane #(
   parameter int unsigned WIDTH = 32,
   parameter int unsigned WORDS = 1024,
   parameter int unsigned BEAT  = 8,         // pixels per tile-port beat: a power of two >= 2
-  parameter bit          FORWARDED = 1'b0   // the user replaces a read that meets a write
+  parameter bit          FORWARDED = 1'b0,  // the user replaces a read that meets a write
+  parameter bit          READ_ONLY = 1'b0   // no pipeline writes (peel): one fresh flag a plane
 ) (
   input  logic                     clk_i,
   input  logic                     rst_ni,
@@ -100,19 +103,31 @@ module zb_plane #(
     wback_addr_q <= tile_addr_i;
   end
 
-  // The banks: words of {generation, value}.
-  logic [BEAT*WIDTH-1:0] lane;  // each bank's last read word, resolved
+  // The banks: words of {generation, value}. The write-back rewrites only the fresh words (as
+  // the clear value); the others are at the epoch already.
+  localparam int unsigned GenW = READ_ONLY ? 0 : 1;
+  logic [BEAT*WIDTH-1:0] lane;       // each bank's last read word, resolved
+  logic [WIDTH-1:0]      wdata_one;  // a bank's write data but for a load
+  logic                  plane_fresh_q;
+  assign wdata_one = wback_q ? clear_q : pipe_wdata_i;
   for (genvar b = 0; b < BEAT; b++) begin : g_bank
-    logic             we;
-    logic [BeatAW-1:0] waddr;
-    logic [WIDTH:0]   wdata, rdata;
-    assign we    = tile_load | wback_q | (pipe_we_i & wbank == BankW'(b));
-    assign waddr = tile_load ? tile_addr_i : (wback_q ? wback_addr_q : wbeat);
-    assign wdata = {epoch_q, tile_load ? tile_wdata_i[b*WIDTH +: WIDTH]
-                                       : (wback_q ? lane[b*WIDTH +: WIDTH] : pipe_wdata_i)};
+    logic                  we, fresh;
+    logic [BeatAW-1:0]     waddr;
+    logic [WIDTH+GenW-1:0] wdata, rdata;
+    if (READ_ONLY) begin : g_ro
+      assign fresh = plane_fresh_q;
+      assign we    = tile_load;
+      assign waddr = tile_addr_i;
+      assign wdata = tile_wdata_i[b*WIDTH +: WIDTH];
+    end else begin : g_rw
+      assign fresh = rdata[WIDTH] != epoch_q;
+      assign we    = tile_load | (wback_q & fresh) | (pipe_we_i & wbank == BankW'(b));
+      assign waddr = tile_load ? tile_addr_i : (wback_q ? wback_addr_q : wbeat);
+      assign wdata = {epoch_q, tile_load ? tile_wdata_i[b*WIDTH +: WIDTH] : wdata_one};
+    end
 
     zb_tile_mem #(
-      .WIDTH(WIDTH + 1),
+      .WIDTH(WIDTH + GenW),
       .WORDS(Beats)
     ) u_mem (
       .clk_i  (clk_i),
@@ -124,7 +139,27 @@ module zb_plane #(
       .wdata_i(wdata)
     );
 
-    assign lane[b*WIDTH +: WIDTH] = rdata[WIDTH] == epoch_q ? rdata[WIDTH-1:0] : clear_q;
+    assign lane[b*WIDTH +: WIDTH] = fresh ? clear_q : rdata[WIDTH-1:0];
+  end
+
+  // Each form leaves the other's signals unread.
+  if (READ_ONLY) begin : g_unused_rw
+    logic unused_rw;
+    assign unused_rw = ^{wbeat, wbank, wback_addr_q, wdata_one};
+  end else begin : g_unused_ro
+    logic unused_ro;
+    assign unused_ro = plane_fresh_q;
+  end
+
+  // READ_ONLY: fresh from a fast clear to the next load.
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      plane_fresh_q <= 1'b0;
+    end else if (tile_clear) begin
+      plane_fresh_q <= 1'b1;
+    end else if (tile_load) begin
+      plane_fresh_q <= 1'b0;
+    end
   end
 
   assign tile_rdata_o = lane;
@@ -166,7 +201,10 @@ module zb_plane #(
       tile_clear |-> swept_q);
   // A pixel read fresh: its clear value stands in for the word.
   FreshWordRead: cover property (@(posedge clk_i) disable iff (!rst_ni)
-      $past(pipe_re_i) && g_bank[0].rdata[WIDTH] != epoch_q);
+      $past(pipe_re_i) && g_bank[0].fresh);
+  if (READ_ONLY) begin : g_read_only
+    PipeNeverWrites: assert property (@(posedge clk_i) disable iff (!rst_ni) !pipe_we_i);
+  end
 `endif
 
 endmodule

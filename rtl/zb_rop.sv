@@ -316,9 +316,10 @@ module zb_rop
 
   // Peel: written only by the tile port, so its word is constant during a pass.
   zb_plane #(
-    .WIDTH(DEPTH_BITS),
-    .WORDS(Words),
-    .BEAT (BEAT)
+    .WIDTH    (DEPTH_BITS),
+    .WORDS    (Words),
+    .BEAT     (BEAT),
+    .READ_ONLY(1'b1)
   ) u_peel_plane (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
@@ -662,7 +663,7 @@ module zb_rop
   // ---------------------------------------------------------------------------------------
   // Counters (docs/datapath.md "Counters"); fragment events are counted in X4.
   // ---------------------------------------------------------------------------------------
-  localparam int unsigned NumCnt = 11;
+  localparam int unsigned NumCnt = 9;
 
   logic                    x4_valid, x4_color_on, reads_dest;
   logic [NumCnt-1:0]       cnt_inc;
@@ -685,8 +686,6 @@ module zb_rop
     cnt_inc[6] = x4_color_on;                           // color_writes
     cnt_inc[7] = frag_valid_i & ~frag_ready_o;          // stall cycles
     cnt_inc[8] = 1'b1;                                  // cycles
-    cnt_inc[9] = tile_req_i & tile_we_i;                // tile beats loaded
-    cnt_inc[10] = tile_req_i & ~tile_we_i;              // tile beats read
   end
 
   zb_counters #(
@@ -709,8 +708,23 @@ module zb_rop
   assign cnt_color_writes_o = cnt_all[6*CNT_W +: CNT_W];
   assign cnt_stall_cycles_o = cnt_all[7*CNT_W +: CNT_W];
   assign cnt_cycles_o       = cnt_all[8*CNT_W +: CNT_W];
-  assign cnt_tile_loads_o   = cnt_all[9*CNT_W +: CNT_W];
-  assign cnt_tile_stores_o  = cnt_all[10*CNT_W +: CNT_W];
+
+  // Tile beats: a tile's run (cleared at its setup) loads and reads each beat at most once, so
+  // BeatAW + 1 bits hold them (the counters saturate beyond).
+  localparam int unsigned TileCntW = BeatAW + 1;
+  logic [2*TileCntW-1:0] tile_cnt;
+  zb_counters #(
+    .NUM  (2),
+    .CNT_W(TileCntW)
+  ) u_tile_counters (
+    .clk_i  (clk_i),
+    .rst_ni (rst_ni),
+    .clear_i(cnt_clear_i),
+    .inc_i  ({tile_req_i & ~tile_we_i, tile_req_i & tile_we_i}),
+    .cnt_o  (tile_cnt)
+  );
+  assign cnt_tile_loads_o  = CNT_W'(tile_cnt[0 +: TileCntW]);
+  assign cnt_tile_stores_o = CNT_W'(tile_cnt[TileCntW +: TileCntW]);
 
   // ---------------------------------------------------------------------------------------
   // Assertions

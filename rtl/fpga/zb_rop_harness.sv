@@ -1,10 +1,11 @@
 // zb_rop_harness: FPGA timing top for scripts/synth.sh, not part of the design (so not in rtl/).
 // zb_rop has far more I/O bits than an iCE40 has pins. Here every zb_rop input comes from a
 // flip-flop of one long shift register loaded from one pin (sin_i), and every output is
-// registered, then XOR-reduced over two registered levels to one pin (sout_o). Each input is an
-// independent flop and each output reaches the pin, so nothing of zb_rop can be optimised away,
-// and every timed path that touches zb_rop starts and ends on a flop: nextpnr's clock figure is
-// register to register inside zb_rop (or the 2-3 LUT levels of the harness itself).
+// registered (the counters are flops inside zb_rop already), then XOR-reduced over two
+// registered levels to one pin (sout_o). Each input is an independent flop and each output
+// reaches the pin, so nothing of zb_rop can be optimised away, and every timed path that touches
+// zb_rop starts and ends on a flop: nextpnr's clock figure is register to register inside zb_rop
+// (or the 2-3 LUT levels of the harness itself).
 // rst_ni: pin, asserted asynchronously, released through a two-flop synchroniser.
 module zb_rop_harness #(
   parameter int unsigned DEPTH_BITS  = 24,
@@ -124,15 +125,15 @@ module zb_rop_harness #(
     .cnt_tile_stores_o (out_d[OCnt + 10 * CNT_W +: CNT_W])
   );
 
-  logic [OutW-1:0]     out_q;
+  logic [OCnt-1:0]     out_q;
   logic [X1W*Grp-1:0]  out_pad;
   logic [X1W-1:0]      x1_q;
   logic                sout_q;
 
-  assign out_pad = {{(X1W * Grp - OutW){1'b0}}, out_q};
+  assign out_pad = {{(X1W * Grp - OutW){1'b0}}, out_d[OutW-1:OCnt], out_q};
 
   always_ff @(posedge clk_i) begin
-    out_q <= out_d;
+    out_q <= out_d[OCnt-1:0];
     for (int unsigned i = 0; i < X1W; i++) begin
       x1_q[i] <= ^out_pad[i*Grp +: Grp];
     end
