@@ -14,8 +14,8 @@ usage: scripts/synth.sh [options]
   --out DIR           output directory (default out/synth)
   --tile N            TILE_W = TILE_H = N (default 32: a 64x64 tile needs more than HX8K's
                       32 block RAMs)
-  --beat N            BEAT, tile port pixels a clock (default 4: at 32x32, 4 banks of 256
-                      words a plane fill 28 of HX8K's 32 block RAMs; 8 would need 56)
+  --beat N            BEAT, tile port pixels a clock (default 2: the widest whose harness fits
+                      HX8K's 7680 logic cells with this tile; 8 would need 56 block RAMs)
   --depth-bits N      DEPTH_BITS (default 24)
   --cov-samples N     COV_SAMPLES (default 16)
   --freq MHZ          nextpnr target clock (default 100)
@@ -33,7 +33,7 @@ EOF
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=out/synth
 tile=32
-beat=4
+beat=2
 depth_bits=24
 cov_samples=16
 freq=100

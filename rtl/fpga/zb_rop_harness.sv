@@ -13,7 +13,7 @@ module zb_rop_harness #(
   parameter int unsigned TILE_H      = 32,
   parameter int unsigned CNT_W       = 32,
   parameter int unsigned COV_SAMPLES = 16,
-  parameter int unsigned BEAT        = 4    // 4 banks of 256 words a plane fit HX8K's 32 RAMs
+  parameter int unsigned BEAT        = 2    // scripts/synth.sh --beat
 ) (
   input  logic clk_i,
   input  logic rst_ni,
