@@ -1,0 +1,253 @@
+// zb_depth: the depth, coverage and peel side of the pipeline (docs/rtl.md "Pipeline"), X1..X4.
+// The planes are read at the issue edge E0 (M's address) and depth and coverage written at E4.
+// A read that meets a write of its pixel at E4 takes the written word from a forwarding
+// register ("Same-pixel distance"); the issue window keeps fragments to one pixel that far
+// apart. X1 registers the read data, X2 compares, X3 decides (zb_depth_test,
+// zb_coverage_composite), X4 writes.
+module zb_depth #(
+  parameter int unsigned DEPTH_BITS  = 24,
+  parameter int unsigned WORDS       = 4096,
+  parameter int unsigned BEAT        = 8,
+  parameter int unsigned COV_SAMPLES = 16
+) (
+  input  logic                                clk_i,
+  input  logic                                rst_ni,
+  // Pass state.
+  input  logic                                depth_test_i,
+  input  zb_pkg::depth_func_e                 depth_func_i,
+  input  logic                                depth_write_i,
+  input  logic                                peel_test_i,
+  input  logic                                cov_mode_i,
+  // Tile port of the three planes (zb_plane).
+  input  logic                                tile_req_i,
+  input  logic                                tile_we_i,
+  input  logic                                tile_clear_i,
+  input  zb_pkg::planes_t                     tile_planes_i,
+  input  logic [$clog2(WORDS / BEAT)-1:0]     tile_addr_i,
+  input  logic [BEAT*DEPTH_BITS-1:0]          tile_wdepth_i,
+  input  logic [BEAT*$clog2(COV_SAMPLES+1)-1:0] tile_wcov_i,
+  input  logic [BEAT*DEPTH_BITS-1:0]          tile_wpeel_i,
+  output logic [BEAT*DEPTH_BITS-1:0]          tile_rdepth_o,
+  output logic [BEAT*$clog2(COV_SAMPLES+1)-1:0] tile_rcov_o,
+  output logic [BEAT*DEPTH_BITS-1:0]          tile_rpeel_o,
+  // M: the fragment issued at E0.
+  input  logic                                issue_i,
+  input  logic [$clog2(WORDS)-1:0]            m_addr_i,
+  input  logic [DEPTH_BITS-1:0]               m_z_i,
+  input  logic [$clog2(COV_SAMPLES+1)-1:0]    m_cov_i,
+  // The pipeline's valid bits X2..X4 and X4's address.
+  input  logic [4:2]                          x_valid_i,
+  input  logic [$clog2(WORDS)-1:0]            x4_addr_i,
+  // X4: the fragment's outcome.
+  output logic                                x3_pass_o,    // into X4 at E3
+  output logic                                x4_dwe_o,     // writes depth at E4
+  output logic [$clog2(COV_SAMPLES+1)-1:0]    x4_weight_o   // coverage blend weight w
+);
+
+  localparam int unsigned CovW = $clog2(COV_SAMPLES + 1);
+
+  logic unused_color;  // the colour plane is zb_color's
+  assign unused_color = tile_planes_i.color;
+
+  // ---------------------------------------------------------------------------------------
+  // The planes, read at E0, written at E4. Peel: written only by the tile port.
+  // ---------------------------------------------------------------------------------------
+  logic [DEPTH_BITS-1:0] dmem_rdata, pmem_rdata;
+  logic [CovW-1:0]       vmem_rdata;
+  logic                  x4_dwe, x4_vwe;
+  logic [DEPTH_BITS-1:0] x4_z_q;
+  logic [CovW-1:0]       x4_cov_new_q;
+
+  zb_plane #(
+    .WIDTH    (DEPTH_BITS),
+    .WORDS    (WORDS),
+    .BEAT     (BEAT),
+    .FORWARDED(1'b1)
+  ) u_depth_plane (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .tile_req_i  (tile_req_i),
+    .tile_we_i   (tile_we_i),
+    .tile_en_i   (tile_planes_i.depth),
+    .tile_clear_i(tile_clear_i),
+    .tile_addr_i (tile_addr_i),
+    .tile_wdata_i(tile_wdepth_i),
+    .tile_rdata_o(tile_rdepth_o),
+    .pipe_re_i   (issue_i),
+    .pipe_raddr_i(m_addr_i),
+    .pipe_we_i   (x4_dwe),
+    .pipe_waddr_i(x4_addr_i),
+    .pipe_wdata_i(x4_z_q),
+    .rdata_o     (dmem_rdata)
+  );
+
+  zb_plane #(
+    .WIDTH    (CovW),
+    .WORDS    (WORDS),
+    .BEAT     (BEAT),
+    .FORWARDED(1'b1)
+  ) u_cov_plane (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .tile_req_i  (tile_req_i),
+    .tile_we_i   (tile_we_i),
+    .tile_en_i   (tile_planes_i.coverage),
+    .tile_clear_i(tile_clear_i),
+    .tile_addr_i (tile_addr_i),
+    .tile_wdata_i(tile_wcov_i),
+    .tile_rdata_o(tile_rcov_o),
+    .pipe_re_i   (issue_i),
+    .pipe_raddr_i(m_addr_i),
+    .pipe_we_i   (x4_vwe),
+    .pipe_waddr_i(x4_addr_i),
+    .pipe_wdata_i(x4_cov_new_q),
+    .rdata_o     (vmem_rdata)
+  );
+
+  zb_plane #(
+    .WIDTH    (DEPTH_BITS),
+    .WORDS    (WORDS),
+    .BEAT     (BEAT),
+    .READ_ONLY(1'b1)
+  ) u_peel_plane (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .tile_req_i  (tile_req_i),
+    .tile_we_i   (tile_we_i),
+    .tile_en_i   (tile_planes_i.peel),
+    .tile_clear_i(tile_clear_i),
+    .tile_addr_i (tile_addr_i),
+    .tile_wdata_i(tile_wpeel_i),
+    .tile_rdata_o(tile_rpeel_o),
+    .pipe_re_i   (issue_i),
+    .pipe_raddr_i(m_addr_i),
+    .pipe_we_i   (1'b0),
+    .pipe_waddr_i(m_addr_i),
+    .pipe_wdata_i(m_z_i),
+    .rdata_o     (pmem_rdata)
+  );
+
+  // ---------------------------------------------------------------------------------------
+  // Forwarding: a fragment issued at an older one's E4 with its address reads the word that
+  // edge writes; the written word replaces the RAM's in X1.
+  // ---------------------------------------------------------------------------------------
+  logic                  dfwd_hit_q, vfwd_hit_q;
+  logic [DEPTH_BITS-1:0] dfwd_z_q, x1_zs;
+  logic [CovW-1:0]       vfwd_cov_q, x1_cs;
+  assign x1_zs = dfwd_hit_q ? dfwd_z_q : dmem_rdata;
+  assign x1_cs = vfwd_hit_q ? vfwd_cov_q : vmem_rdata;
+
+  always_ff @(posedge clk_i) begin
+    dfwd_hit_q <= x4_dwe & (m_addr_i == x4_addr_i);
+    dfwd_z_q   <= x4_z_q;
+    vfwd_hit_q <= x4_vwe & (m_addr_i == x4_addr_i);
+    vfwd_cov_q <= x4_cov_new_q;
+  end
+
+  // ---------------------------------------------------------------------------------------
+  // X1: read data arrives, registered with at most the forwarding mux (the RAM's clock-to-out
+  // is long on iCE40).
+  // ---------------------------------------------------------------------------------------
+  logic [DEPTH_BITS-1:0] x1_z_q, x2_z_q, x2_zs_q, x2_peel_q;
+  logic [CovW-1:0]       x1_cov_q, x2_cov_q, x2_cs_q;
+
+  always_ff @(posedge clk_i) begin
+    x1_z_q    <= m_z_i;
+    x1_cov_q  <= m_cov_i;
+    x2_z_q    <= x1_z_q;
+    x2_cov_q  <= x1_cov_q;
+    x2_zs_q   <= x1_zs;
+    x2_peel_q <= pmem_rdata;
+    x2_cs_q   <= x1_cs;
+  end
+
+  // ---------------------------------------------------------------------------------------
+  // X2: compares.
+  // ---------------------------------------------------------------------------------------
+  logic [DEPTH_BITS-1:0] x3_z_q;
+  logic [CovW-1:0]       x3_cov_q, x3_cs_q;
+  logic                  x3_lt_q, x3_eq_q, x3_behind_q;
+
+  always_ff @(posedge clk_i) begin
+    x3_z_q      <= x2_z_q;
+    x3_cov_q    <= x2_cov_q;
+    x3_cs_q     <= x2_cs_q;
+    x3_lt_q     <= x2_z_q < x2_zs_q;
+    x3_eq_q     <= x2_z_q == x2_zs_q;
+    x3_behind_q <= x2_z_q > x2_peel_q;
+  end
+
+  // ---------------------------------------------------------------------------------------
+  // X3: decisions.
+  // ---------------------------------------------------------------------------------------
+  logic            x3_cmp, x3_pass, x3_nearer, x3_dwe;
+  logic [CovW-1:0] x3_weight, x3_cov_new;
+  logic            x4_dwe_q;
+  logic [CovW-1:0] x4_weight_q;
+
+  zb_depth_test u_depth_test (
+    .func_i(depth_func_i),
+    .lt_i  (x3_lt_q),
+    .eq_i  (x3_eq_q),
+    .pass_o(x3_cmp)
+  );
+
+  zb_coverage_composite #(
+    .COV_SAMPLES(COV_SAMPLES)
+  ) u_coverage (
+    .lt_i        (x3_lt_q),
+    .eq_i        (x3_eq_q),
+    .cov_i       (x3_cov_q),
+    .stored_cov_i(x3_cs_q),
+    .nearer_o    (x3_nearer),
+    .weight_o    (x3_weight),
+    .cov_o       (x3_cov_new)
+  );
+
+  // Test off: every fragment passes the depth test and depth is never written. Peel test on:
+  // a fragment must also lie strictly behind the peel plane. Coverage mode: every fragment
+  // passes to the compositing (the peel test is not used); depth is written only when nearer.
+  assign x3_pass = cov_mode_i | ((~depth_test_i | x3_cmp) & (~peel_test_i | x3_behind_q));
+  assign x3_dwe  = x3_pass & depth_test_i & depth_write_i & (~cov_mode_i | x3_nearer);
+
+  always_ff @(posedge clk_i) begin
+    x4_z_q       <= x3_z_q;
+    x4_dwe_q     <= x3_dwe;
+    x4_weight_q  <= x3_weight;
+    x4_cov_new_q <= x3_cov_new;
+  end
+
+  // ---------------------------------------------------------------------------------------
+  // X4: depth and coverage writes (edge E4).
+  // ---------------------------------------------------------------------------------------
+  assign x4_dwe = x_valid_i[4] & x4_dwe_q;
+  assign x4_vwe = x_valid_i[4] & cov_mode_i;
+
+  assign x3_pass_o   = x3_pass;
+  assign x4_dwe_o    = x4_dwe;
+  assign x4_weight_o = x4_weight_q;
+
+`ifndef SYNTHESIS
+  // A read that meets a write of its pixel at one edge takes the forwarded word.
+  DepthForwardCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (issue_i && x4_dwe && m_addr_i == x4_addr_i) |=> dfwd_hit_q);
+  CovForwardCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (issue_i && x4_vwe && m_addr_i == x4_addr_i) |=> vfwd_hit_q);
+  DepthForwardPath: cover property (@(posedge clk_i) disable iff (!rst_ni)
+      issue_i && x4_dwe && m_addr_i == x4_addr_i);
+  CovForwardPath: cover property (@(posedge clk_i) disable iff (!rst_ni)
+      issue_i && x4_vwe && m_addr_i == x4_addr_i);
+  // The coverage plane holds counts 0..N: a coverage-mode fragment never reads more.
+  StoredCoverageInRange: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (x_valid_i[2] && cov_mode_i) |-> (x2_cs_q <= CovW'(COV_SAMPLES)));
+  // Coverage mode: the depth never moves farther, and the pixel's coverage never shrinks.
+  CovDepthNeverFarther: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (x_valid_i[3] && cov_mode_i && x3_dwe) |-> x3_lt_q);
+  CovNeverShrinks: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (x_valid_i[3] && cov_mode_i) |-> (x3_cov_new >= x3_cs_q));
+  // A fragment that passes with the peel test on lies strictly behind the peel plane.
+  PeelPassBehind: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (x_valid_i[3] && x3_pass && peel_test_i && !cov_mode_i) |-> x3_behind_q);
+`endif
+
+endmodule
