@@ -84,8 +84,9 @@ cells=$(awk '/Number of cells:/ { n = $4 } END { print n + 0 }' "$out/stat_gener
 step "  $cells cells, check -assert clean, no latch"
 
 step "yosys: synth_ice40 of zb_rop"
+# hierarchy derives the parametrised top under a $paramod name: rename -top gives it its own.
 yosys -l "$out/yosys_ice40.log" -q -p "read_verilog -sv $rtl; chparam $params zb_rop;
-  hierarchy -top zb_rop; proc; select -assert-none $latch_types;
+  hierarchy -top zb_rop; rename -top zb_rop; proc; select -assert-none $latch_types;
   synth_ice40 -top zb_rop; check -assert; tee -o $out/stat_ice40.txt stat" >/dev/null \
   || fail "synth_ice40 of zb_rop (see $out/yosys_ice40.log)"
 s=$out/stat_ice40.txt
