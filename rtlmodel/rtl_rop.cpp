@@ -67,13 +67,6 @@ struct XorShift {
   }
 };
 
-uint32_t pack_rgba(Rgba8 c) {
-  return uint32_t{c.r} | uint32_t{c.g} << 8 | uint32_t{c.b} << 16 | uint32_t{c.a} << 24;
-}
-Rgba8 unpack_rgba(uint32_t v) {
-  return {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
-}
-
 // Lane `lane` (`width` bits) of a tile port: a Verilated integer up to 64 bits, VlWide beyond.
 template <class Port>
 void put_lane(Port& port, unsigned lane, unsigned width, uint32_t v) {

@@ -8,15 +8,6 @@
 
 namespace zb {
 
-namespace {
-uint32_t pack(Rgba8 c) {
-  return uint32_t{c.r} | uint32_t{c.g} << 8 | uint32_t{c.b} << 16 | uint32_t{c.a} << 24;
-}
-Rgba8 unpack(uint32_t v) {
-  return {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
-}
-}  // namespace
-
 // As zb_rop: coverage mode reads depth (nearer) and the coverage plane; the peel test is not
 // used there. Colour is read only by a pass that writes it.
 uint8_t planes_read(const RopState& s) {
@@ -52,7 +43,7 @@ TileStates::TileStates(int width, int height, int tile, int depth_bits, Rgba8 cl
     throw std::invalid_argument("tile states: empty frame or tile");
   const size_t n = size_t((width + tile - 1) / tile) * size_t((height + tile - 1) / tile);
   std::array<Plane, kTilePlanes> fresh;
-  fresh[0] = {true, pack(clear_color)};
+  fresh[0] = {true, pack_rgba(clear_color)};
   fresh[1] = {true, depth_max(depth_bits)};
   fresh[2] = {true, 0};
   fresh[3] = {true, 0};
@@ -61,13 +52,13 @@ TileStates::TileStates(int width, int height, int tile, int depth_bits, Rgba8 cl
 
 void TileStates::frame_op(const FrameOp& op) {
   for (auto& t : planes_) switch (op.kind) {
-      case FrameOpKind::kClearColor: t[0] = {true, pack(op.value)}; break;
+      case FrameOpKind::kClearColor: t[0] = {true, pack_rgba(op.value)}; break;
       case FrameOpKind::kClearDepth: t[1] = {true, std::min(op.depth, depth_max(depth_bits_))}; break;
       case FrameOpKind::kCopyDepthToPeel: t[3] = t[1]; break;
       case FrameOpKind::kResolveUnder:
         if (t[0].cleared) {  // a uniform colour resolves to a uniform colour
-          const Rgba8 c = unpack(t[0].value);
-          t[0].value = pack({resolve_under(c.r, op.value.r, c.a), resolve_under(c.g, op.value.g, c.a),
+          const Rgba8 c = unpack_rgba(t[0].value);
+          t[0].value = pack_rgba({resolve_under(c.r, op.value.r, c.a), resolve_under(c.g, op.value.g, c.a),
                              resolve_under(c.b, op.value.b, c.a), resolve_under(c.a, op.value.a, c.a)});
         }
         break;

@@ -13,6 +13,14 @@
 
 namespace zb {
 
+// A colour as zb_rop's ports carry it: r | g << 8 | b << 16 | a << 24.
+constexpr uint32_t pack_rgba(Rgba8 c) {
+  return uint32_t{c.r} | uint32_t{c.g} << 8 | uint32_t{c.b} << 16 | uint32_t{c.a} << 24;
+}
+constexpr Rgba8 unpack_rgba(uint32_t v) {
+  return {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
+}
+
 // zb_pkg::planes_t: bit p selects plane p of the tile port.
 enum : uint8_t { kPlaneColor = 1, kPlaneDepth = 2, kPlaneCoverage = 4, kPlanePeel = 8 };
 constexpr int kTilePlanes = 4;
@@ -23,7 +31,7 @@ uint8_t planes_read(const RopState& s);
 uint8_t planes_written(const RopState& s);
 
 // One tile's traffic in one pass: plane masks, and per plane the fast clear's value (colour
-// packed r | g << 8 | b << 16 | a << 24, depth, coverage count, peel depth).
+// pack_rgba, depth, coverage count, peel depth).
 struct TileIo {
   uint8_t clear = 0, load = 0, store = 0;
   std::array<uint32_t, kTilePlanes> clear_value{};
@@ -50,7 +58,6 @@ class TileStates {
   void frame_op(const FrameOp& op);
   TileIo plan(size_t tile, const RopState& s) const;
   void stored(size_t tile, uint8_t planes);  // the pass stored these planes of the tile
-  size_t tiles() const { return planes_.size(); }
 
  private:
   struct Plane {

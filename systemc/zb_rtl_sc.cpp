@@ -19,13 +19,6 @@ namespace {
 
 constexpr uint64_t kDrainLimit = 1000;  // as rtlmodel/rtl_rop.cpp: cycles busy_o may stay high
 
-uint32_t pack_rgba(Rgba8 c) {
-  return uint32_t{c.r} | uint32_t{c.g} << 8 | uint32_t{c.b} << 16 | uint32_t{c.a} << 24;
-}
-Rgba8 unpack_rgba(uint32_t v) {
-  return {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
-}
-
 // Lane `lane` of `width` bits in a tile port's value: an integer up to 64 bits, sc_bv beyond.
 template <class T>
 void put_lane(T& v, int lane, int width, uint32_t x) {
