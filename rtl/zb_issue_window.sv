@@ -13,9 +13,9 @@
 // Every decision comes from flops: per slot, hit_q (which of K, M, X1..X(SPAN-3) has its pixel,
 // shifted as the pipeline moves), same_q (which slots hold an older fragment to its pixel: the
 // pick among them enters M) and older_q (which slots are older). Addresses are compared only
-// when a fragment enters, against the slots and the pipeline. The pick and the slot mux into M
-// are a cycle apart (K), so neither path holds the other. A picked slot keeps its fragment
-// through K: it is refilled at the earliest at K's edge.
+// when a fragment enters, against the slots and the pipeline. The slots' data sit in a memory
+// read at the pick (K is its read register), so the window holds addresses and relations in
+// flops, not its fragments. A picked slot is refilled at the earliest at K's edge.
 // A slot freed by a pick is reused from the next cycle: in_ready_o depends on flops only.
 module zb_issue_window #(
   parameter int unsigned WINDOW = 8,    // slots, 2..16 (one slot would take only every other cycle)
@@ -56,7 +56,6 @@ module zb_issue_window #(
   // pixel; older[i][j]: slot j is older than slot i.
   logic [WINDOW-1:0]             valid_d, valid_q;
   logic [WINDOW*ADDR_W-1:0]      addr_d, addr_q;
-  logic [WINDOW*DATA_W-1:0]      data_d, data_q;
   logic [WINDOW*HitW-1:0]        hit_d, hit_q;
   logic [WINDOW*WINDOW-1:0]      same_d, same_q;
   logic [WINDOW*WINDOW-1:0]      older_d, older_q;
@@ -88,10 +87,8 @@ module zb_issue_window #(
   // K: the slot picked last cycle, still holding its fragment.
   always_comb begin
     pick_addr_o = '0;
-    pick_data_o = '0;
     for (int unsigned i = 0; i < WINDOW; i++) begin
       pick_addr_o |= pick_q[i] ? addr_q[i*ADDR_W +: ADDR_W] : '0;
-      pick_data_o |= pick_q[i] ? data_q[i*DATA_W +: DATA_W] : '0;
     end
   end
   assign pick_valid_o = |pick_q;
@@ -121,7 +118,6 @@ module zb_issue_window #(
   always_comb begin
     valid_d = valid_q & ~pick;
     addr_d  = addr_q;
-    data_d  = data_q;
     for (int unsigned i = 0; i < WINDOW; i++) begin
       // The pipeline moves on: P_k's fragment is P_(k+1)'s next cycle; the pick enters P0.
       hit_d[i*HitW +: HitW]       = {hit_q[i*HitW +: HitW-1], |(pick & same_q[i*WINDOW +: WINDOW])};
@@ -130,7 +126,6 @@ module zb_issue_window #(
       if (take && ins[i]) begin
         valid_d[i]                  = 1'b1;
         addr_d[i*ADDR_W +: ADDR_W]  = in_addr_i;
-        data_d[i*DATA_W +: DATA_W]  = in_data_i;
         hit_d[i*HitW]               = |(pick & eq) & ~bug_early;   // the pick: K next
         hit_d[i*HitW + 1]           = |(pick_q & eq_k);            // K: M next
         for (int unsigned k = 2; k < HitW; k++) begin
@@ -162,8 +157,34 @@ module zb_issue_window #(
 
   always_ff @(posedge clk_i) begin
     addr_q <= addr_d;
-    data_q <= data_d;
   end
+
+  // The slots' fragments (all but the address) in a memory: written at the take, read at the
+  // pick, so K's fragment is the read register (a block RAM on an FPGA: no slot flops, no mux).
+  // It reads every cycle (an enable from the pick would lengthen the pick's path); M takes the
+  // word only after a pick, and a pick never reads the slot being written (taken slots are free).
+  localparam int unsigned SlotW = $clog2(WINDOW);
+  logic [SlotW-1:0] ins_slot, pick_slot;
+  always_comb begin
+    ins_slot  = '0;
+    pick_slot = '0;
+    for (int unsigned i = 0; i < WINDOW; i++) begin
+      ins_slot  |= ins[i] ? SlotW'(i) : '0;
+      pick_slot |= pick[i] ? SlotW'(i) : '0;
+    end
+  end
+  zb_tile_mem #(
+    .WIDTH(DATA_W),
+    .WORDS(WINDOW)
+  ) u_data (
+    .clk_i  (clk_i),
+    .re_i   (1'b1),
+    .raddr_i(pick_slot),
+    .rdata_o(pick_data_o),
+    .we_i   (take),
+    .waddr_i(ins_slot),
+    .wdata_i(in_data_i)
+  );
 
 `ifndef SYNTHESIS
   // The relations the pick trusts, stated on addresses: hit_q and same_q are exact for every

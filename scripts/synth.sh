@@ -14,8 +14,8 @@ usage: scripts/synth.sh [options]
   --out DIR           output directory (default out/synth)
   --tile N            TILE_W = TILE_H = N (default 32: a 64x64 tile needs more than HX8K's
                       32 block RAMs)
-  --beat N            BEAT, tile port pixels a clock (default 2: the widest whose harness fits
-                      HX8K's 7680 logic cells with this tile; 8 would need 56 block RAMs)
+  --beat N            BEAT, tile port pixels a clock (default 2: the widest whose block RAMs
+                      fit HX8K's 32 with this tile; 4 would need 37)
   --depth-bits N      DEPTH_BITS (default 24)
   --cov-samples N     COV_SAMPLES (default 16)
   --freq MHZ          nextpnr target clock (default 100)
