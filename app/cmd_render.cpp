@@ -60,16 +60,17 @@ struct RenderOptions {
   double backpressure = 0;
   int64_t seed = 1;
   std::string waves;
+  bool assertions = true;
   std::string background;
-  int threads = default_threads();  // golden: render_frame's workers
-  std::vector<std::string> given;   // the options given that only one kind of backend uses
+  int threads = default_threads();  // golden: render_frame's workers; RTL: models side by side
+  bool threads_given = false;
+  std::vector<std::string> given;   // the RTL-only options given
   bool no_error = false;            // skip the reference and the error columns
   bool quiet = false;
 };
 
-// The options that only the RTL backends, or only the golden one, use.
-constexpr const char* kRtlOnly[] = {"--backpressure", "--seed", "--waves"};
-constexpr const char* kGoldenOnly[] = {"--threads"};
+// The options that only the RTL backends use.
+constexpr const char* kRtlOnly[] = {"--backpressure", "--seed", "--waves", "--no-assertions"};
 
 double ms_since(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
@@ -84,13 +85,9 @@ std::vector<OutputPath> outputs(const RenderOptions& o) {
 
 // An option given for a backend the run does not use would do nothing: refused.
 void check_backend_options(const RenderOptions& o) {
-  const bool golden = o.backend == BackendKind::kGolden;
-  for (const std::string& name : o.given) {
-    const bool for_rtl =
-        std::find(std::begin(kRtlOnly), std::end(kRtlOnly), name) != std::end(kRtlOnly);
-    if (golden && for_rtl) throw UsageError(fmt::format("{}: needs --backend rtl or both", name));
-    if (!golden && !for_rtl) throw UsageError(fmt::format("{}: needs --backend golden", name));
-  }
+  if (o.backend != BackendKind::kGolden) return;
+  for (const std::string& name : o.given)
+    throw UsageError(fmt::format("{}: needs --backend rtl or both", name));
 }
 
 // Everything that can be checked before the scene is read; changes nothing on disk.
@@ -104,6 +101,9 @@ void check_options(const RenderOptions& o, size_t method_count) {
                                  kRtlDepthBits, o.frame.depth_bits));
   check_backend_options(o);
   check_threads(o.threads);
+  if (!o.waves.empty() && o.threads_given && o.threads > 1)
+    throw UsageError(fmt::format("--waves: one waveform needs one RTL model; --threads {} asks "
+                                 "for {} (drop --threads or give --threads 1)", o.threads, o.threads));
   if (!(o.backpressure >= 0 && o.backpressure < 1))
     throw UsageError(fmt::format("--backpressure: {} is out of range (0 to below 1)", o.backpressure));
   if (o.seed < 0) throw UsageError(fmt::format("--seed: {} is out of range (0 or more)", o.seed));
@@ -123,6 +123,8 @@ RtlBackend make_rtl_backend(const RenderOptions& o, const PassPlan& plan) {
   rtl.backpressure = o.backpressure;
   rtl.seed = static_cast<uint64_t>(o.seed);
   rtl.trace_path = o.waves;
+  rtl.threads = o.threads;
+  rtl.assertions = o.assertions;
   RtlBackend b;
   if (o.backend == BackendKind::kRtl) {
     auto r = std::make_unique<RtlRop>(rtl);
@@ -344,8 +346,13 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--seed", o->seed, "RTL: seed of the back-pressure pattern")
       ->capture_default_str();
   cmd->add_option("--waves", o->waves, "RTL: FST waveform of the whole run");
+  cmd->add_flag("!--no-assertions", o->assertions,
+                "RTL: the model's assertions off (a third faster; the comparison with the golden "
+                "model, --backend both, stays)");
   add_background_option(cmd, o->background);
-  add_threads_option(cmd, o->threads, "Golden model: threads rendering the frame's bands");
+  add_threads_option(cmd, o->threads,
+                     "Threads: the golden model's frame bands, the RTL's models running a "
+                     "pass's tiles side by side (one with --waves)");
   cmd->add_flag("--no-error", o->no_error,
                 "Skip the exact reference and the error columns (its fragments are stored for "
                 "the whole frame): the golden model's own time and memory");
@@ -354,8 +361,7 @@ void add_render_command(CLI::App& app) {
     o->backend = parse_backend(o->backend_text);
     for (const char* name : kRtlOnly)
       if (cmd->count(name)) o->given.emplace_back(name);
-    for (const char* name : kGoldenOnly)
-      if (cmd->count(name)) o->given.emplace_back(name);
+    o->threads_given = cmd->count("--threads") != 0;
     run_render(*o);
   });
 }

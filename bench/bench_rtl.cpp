@@ -77,15 +77,19 @@ void BM_CadThreePassGolden(benchmark::State& state) {
 }
 BENCHMARK(BM_CadThreePassGolden)->Args({640, 480})->Unit(benchmark::kMillisecond);
 
-// The same frame on the RTL; also times the golden model on it (mean of a few renders) for
+// The same frame on the RTL, with range(2) models side by side and assertions on (range(3)
+// = 1) or off; also times the golden model on it (one thread, mean of a few renders) for
 // rtl_over_golden, the ratio of the wall times.
 void BM_CadThreePassRtl(benchmark::State& state) {
   const CadFrame cad(int(state.range(0)), int(state.range(1)));
+  zb::RtlOptions options;
+  options.threads = int(state.range(2));
+  options.assertions = state.range(3) != 0;
   double rtl_sec = 0;
   uint64_t stream_cycles = 0, all_cycles = 0, fragments = 0;
   for (auto _ : state) {
     const auto t0 = Clock::now();
-    zb::RtlRop rop;
+    zb::RtlRop rop(options);
     const zb::RenderResult r = zb::render(cad.rs, *cad.plan, rop);
     rtl_sec += seconds_since(t0);
     benchmark::DoNotOptimize(r);
@@ -112,8 +116,16 @@ void BM_CadThreePassRtl(benchmark::State& state) {
   state.counters["all_cycles"] = double(all_cycles);        // per frame, with tile load/store
   // Streaming cycles include each tile's drain: a real frame's rate, interlock stalls and all.
   state.counters["fragments_per_clock"] = stream_cycles ? double(fragments) / double(stream_cycles) : 0;
+  state.counters["fragments_per_second"] = double(fragments) / rtl_per_frame;
 }
-BENCHMARK(BM_CadThreePassRtl)->Args({640, 480})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CadThreePassRtl)
+    ->ArgNames({"w", "h", "models", "assertions"})
+    ->Args({640, 480, 1, 1})
+    ->Args({640, 480, 2, 1})
+    ->Args({640, 480, 1, 0})
+    ->Args({640, 480, 2, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 

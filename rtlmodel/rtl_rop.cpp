@@ -1,5 +1,6 @@
 #include "rtl_rop.h"
 
+#include <atomic>
 #include <filesystem>
 #include <limits>
 #include <type_traits>
@@ -15,6 +16,7 @@
 #include "code_coverage.h"
 #endif
 
+#include "parallel/parallel.h"
 #include "tile_bins.h"
 
 #ifdef ZB_RTL_BUG
@@ -207,6 +209,7 @@ struct Sim {
 struct RtlRop::Impl {
   RtlOptions opt;
   Sim sim;
+  std::vector<std::unique_ptr<Sim>> helpers;  // the other models of a tile-parallel run
   Framebuffer fb;
   RopState state;
   std::vector<Fragment> frags;      // the current (or last ended) pass
@@ -218,9 +221,12 @@ struct RtlRop::Impl {
   uint64_t pass_no = 0;
   bool in_pass = false;
   uint64_t io_cycles = 0, stalls = 0;
+  uint64_t cycles = 0;              // one model's cycles since reset: reset, sweep, every tile
 
   explicit Impl(RtlOptions o)
-      : opt(std::move(o)), sim(opt.trace_path, opt, opt.coverage) {}
+      : opt(std::move(o)), sim(opt.trace_path, opt, opt.coverage), cycles(sim.cycle) {}
+
+  int models() const { return opt.trace_path.empty() ? std::max(1, opt.threads) : 1; }
 
   int tiles_x() const { return (fb.width + kRtlTileW - 1) / kRtlTileW; }
 
@@ -431,21 +437,61 @@ PassStats RtlRop::end_pass() {
   m.in_pass = false;
   m.bin();
   m.accepted.assign(m.frags.size(), 0);
-  m.runs.clear();
-  PassStats stats;
-  const int tx = m.tiles_x();
+  std::vector<size_t> touched;  // tiles with fragments, in tile order
+  std::vector<TileIo> ios;
   for (size_t tile = 0; tile + 1 < m.tile_first.size(); ++tile) {
+    if (m.tile_first[tile] == m.tile_first[tile + 1]) continue;
+    touched.push_back(tile);
+    ios.push_back(m.tiles.plan(tile, m.state));
+  }
+  m.runs.assign(touched.size(), TileRun{});
+  std::vector<PassStats> tile_stats(touched.size());
+  const int tx = m.tiles_x();
+  auto run = [&](Sim& s, size_t j) {
+    const size_t tile = touched[j];
     const uint32_t b = m.tile_first[tile], e = m.tile_first[tile + 1];
-    if (b == e) continue;
-    TileRun run;
-    const TileIo io = m.tiles.plan(tile, m.state);
-    m.run_tile(m.sim, m.fb, m.fb, int(tile % tx) * kRtlTileW, int(tile / tx) * kRtlTileH, io,
-               m.binned.data() + b, e - b, m.tile_seed(m.pass_no, tile), m.accepted.data(), run,
-               stats);
-    m.tiles.stored(tile, io.store);
-    m.io_cycles += (run.stream_begin - run.load_begin) + (run.store_end - run.stream_end);
-    m.stalls += run.stall_cycles;
-    m.runs.push_back(run);
+    m.run_tile(s, m.fb, m.fb, int(tile % tx) * kRtlTileW, int(tile / tx) * kRtlTileH, ios[j],
+               m.binned.data() + b, e - b, m.tile_seed(m.pass_no, tile), m.accepted.data(),
+               m.runs[j], tile_stats[j]);
+  };
+  const int n = int(std::min<size_t>(size_t(m.models()), touched.size()));
+  if (n <= 1) {
+    for (size_t j = 0; j < touched.size(); ++j) run(m.sim, j);
+  } else {
+    // Each model takes the next tile; the tiles touch disjoint pixels of fb and of accepted.
+    while (m.helpers.size() < size_t(n - 1))
+      m.helpers.push_back(std::make_unique<Sim>(std::string(), m.opt, m.opt.coverage));
+    std::atomic<size_t> next{0};
+    std::atomic<bool> failed{false};
+    run_workers(n, [&](int w) {
+      Sim& s = w == 0 ? m.sim : *m.helpers[size_t(w - 1)];
+      Verilated::threadContextp(s.ctx.get());
+      try {
+        for (size_t j; !failed && (j = next++) < touched.size();) run(s, j);
+      } catch (...) {
+        failed = true;
+        throw;
+      }
+    });
+    Verilated::threadContextp(m.sim.ctx.get());
+  }
+  // One model's cycles: the tiles back to back in tile order, from where the last pass ended.
+  PassStats stats;
+  for (size_t j = 0; j < touched.size(); ++j) {
+    TileRun& r = m.runs[j];
+    const uint64_t from = r.load_begin;
+    auto rebase = [&](uint64_t c) { return c - from + m.cycles; };
+    for (uint32_t k = m.tile_first[touched[j]]; k < m.tile_first[touched[j] + 1]; ++k)
+      m.accepted[m.binned[k].index] = rebase(m.accepted[m.binned[k].index]);
+    r.load_begin = rebase(r.load_begin);
+    r.stream_begin = rebase(r.stream_begin);
+    r.stream_end = rebase(r.stream_end);
+    r.store_end = rebase(r.store_end);
+    m.cycles = r.store_end;
+    stats += tile_stats[j];
+    m.tiles.stored(touched[j], ios[j].store);
+    m.io_cycles += (r.stream_begin - r.load_begin) + (r.store_end - r.stream_end);
+    m.stalls += r.stall_cycles;
   }
   ++m.pass_no;
   return stats;
@@ -462,7 +508,7 @@ void RtlRop::frame_op(const FrameOp& op) {
 
 const Framebuffer& RtlRop::framebuffer() const { return impl_->fb; }
 uint64_t RtlRop::tile_io_cycles() const { return impl_->io_cycles; }
-uint64_t RtlRop::total_cycles() const { return impl_->sim.cycle; }
+uint64_t RtlRop::total_cycles() const { return impl_->cycles; }
 uint64_t RtlRop::stall_cycles() const { return impl_->stalls; }
 const std::vector<Fragment>& RtlRop::pass_fragments() const { return impl_->frags; }
 const std::vector<uint64_t>& RtlRop::accept_cycles() const { return impl_->accepted; }

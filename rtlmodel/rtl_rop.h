@@ -24,6 +24,10 @@ struct RtlOptions {
   // window's defect instead of the blend's (docs/testbench.md "A checker that can fail").
   std::vector<std::string> plusargs;
   bool assertions = true;   // the RTL's assertions; off shows what the comparison alone catches
+  // Models run a pass's tiles side by side (tiles are independent: each starts drained, its
+  // planes loaded or cleared). Planes, counters and cycles are those of one model whatever the
+  // number. A trace needs one waveform: with trace_path set the run uses one model.
+  int threads = 1;
   // Coverage build only (ZBLEND_RTL_COVERAGE): the model's line and toggle counts are added
   // here when it closes. Not owned; ignored in other builds.
   CoverageTotals* coverage = nullptr;

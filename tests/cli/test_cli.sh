@@ -166,9 +166,11 @@ if "$tb" -q "${tiny[@]}" --trace "$tmp/new5/sub/x.fst" >/dev/null && [[ -s "$tmp
 # ---- options that would do nothing are refused ----------------------------------------------
 expect_zblend_error "backpressure on golden" "--backpressure: needs --backend rtl or both" render --backpressure 0.3 --out "$tmp/out/a.png"
 expect_zblend_error "seed on golden" "--seed: needs --backend rtl or both" render --seed 5 --out "$tmp/out/a.png"
+expect_zblend_error "no-assertions on golden" "--no-assertions: needs --backend rtl or both" render --no-assertions --out "$tmp/out/a.png"
 expect_zblend_error "negative seed" "--seed: -1 is out of range" render --backend rtl --seed -1 --out "$tmp/out/a.png"
 expect_zblend_error "threads above the maximum" "--threads: 1000 is out of range \(1 to 256\)" render --threads 1000 --out "$tmp/out/a.png"
-expect_zblend_error "threads on the RTL" "--threads: needs --backend golden" render --backend both --threads 2 --out "$tmp/out/a.png"
+expect_zblend_error "threads with waves" "--waves: one waveform needs one RTL model; --threads 2" render --backend rtl --threads 2 --waves "$tmp/out/w.fst" --out "$tmp/out/a.png"
+[[ ! -e "$tmp/out/w.fst" && ! -e "$tmp/out/a.png" ]] && ok || bad "threads with waves: nothing written"
 expect_error "tb iterations 0" "--iterations: 0 is out of range" "$tb" --suite random --iterations 0
 expect_error "tb fragments 0" "--fragments: 0 is out of range" "$tb" --suite random --iterations 1 --fragments 0
 
