@@ -12,6 +12,7 @@
 #include "rtl_rop.h"
 #include "scene/builtin_scenes.h"
 #include "suites.h"
+#include "Vceiling_counter.h"
 
 namespace {
 
@@ -56,6 +57,30 @@ void BM_RtlHazard(benchmark::State& state) {
       double(rtl.total_cycles() - cycles_before), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_RtlHazard)->Arg(1 << 20)->Unit(benchmark::kMillisecond);
+
+// Verilator's ceiling: a 32-bit counter clocked as RtlRop clocks zb_rop (inputs set, a rising
+// and a falling edge, one evaluation each). zb_rop's cycles_per_second over this one's is the
+// share of the simulation the design itself takes.
+void BM_VerilatorCeiling(benchmark::State& state) {
+  VerilatedContext ctx;
+  Vceiling_counter top(&ctx);
+  top.clk_i = 0;
+  top.eval();
+  uint64_t cycles = 0;
+  for (auto _ : state) {
+    for (int i = 0; i < 1 << 20; ++i) {
+      top.en_i = i & 1;
+      top.clk_i = 1;
+      top.eval();
+      top.clk_i = 0;
+      top.eval();
+    }
+    cycles += 1 << 20;
+  }
+  benchmark::DoNotOptimize(top.cnt_o);
+  state.counters["cycles_per_second"] = benchmark::Counter(double(cycles), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_VerilatorCeiling)->Unit(benchmark::kMillisecond);
 
 // `cad` with three-pass, rasterized once; each iteration renders it on a fresh backend.
 struct CadFrame {

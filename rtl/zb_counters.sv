@@ -16,29 +16,22 @@ module zb_counters #(
 
   localparam logic [CNT_W-1:0] CntMax = {CNT_W{1'b1}};
 
+  // The next value is written in the flop block itself: clear_i and inc_i come from ports, and
+  // a simulator evaluates logic on ports at every evaluation, flops only at the edge.
   for (genvar i = 0; i < NUM; i++) begin : g_cnt
-    logic [CNT_W-1:0] cnt_d, cnt_q;
-    logic             sat_d, sat_q;
-
-    always_comb begin
-      cnt_d = cnt_q;
-      sat_d = sat_q;
-      if (clear_i) begin
-        cnt_d = '0;
-        sat_d = 1'b0;
-      end else if (inc_i[i] && !sat_q) begin
-        cnt_d = cnt_q + {{(CNT_W-1){1'b0}}, 1'b1};
-        sat_d = cnt_q == CntMax - {{(CNT_W-1){1'b0}}, 1'b1};
-      end
-    end
+    logic [CNT_W-1:0] cnt_q;
+    logic             sat_q;
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         cnt_q <= '0;
         sat_q <= 1'b0;
-      end else begin
-        cnt_q <= cnt_d;
-        sat_q <= sat_d;
+      end else if (clear_i) begin
+        cnt_q <= '0;
+        sat_q <= 1'b0;
+      end else if (inc_i[i] && !sat_q) begin
+        cnt_q <= cnt_q + {{(CNT_W-1){1'b0}}, 1'b1};
+        sat_q <= cnt_q == CntMax - {{(CNT_W-1){1'b0}}, 1'b1};
       end
     end
 

@@ -159,12 +159,40 @@ def rtl(b, reps):
             # Runs on 1-4 pixels: each waits for the interlock (docs/rtl.md), by design.
             b.add("RTL cycles per fragment, hazard stream", 1 / r["fragments_per_clock"],
                   "cycles", "", cmd)
+        elif name.startswith("BM_VerilatorCeiling"):
+            b.add("Verilator's ceiling: a 32-bit counter clocked as zb_rop is",
+                  r["cycles_per_second"] / 1e6, "M cycles/s", "", cmd)
         elif name.startswith("BM_CadThreePassRtl"):
-            b.add("RTL simulation time / golden time, cad three-pass 640x480",
+            # .../models:N/assertions:A
+            args = dict(p.split(":") for p in name.split("/")[1:] if ":" in p)
+            how = (f"{args['models']} model{'s' if args['models'] != '1' else ''}, "
+                   f"assertions {'on' if args['assertions'] == '1' else 'off'}")
+            b.add(f"RTL simulation time / golden time (one thread), cad three-pass 640x480, {how}",
                   r["rtl_over_golden"], "x", "", cmd)
-            if "fragments_per_clock" in r:
+            b.add(f"RTL simulation, cad three-pass 640x480, {how}",
+                  r["fragments_per_second"] / 1e6, "M fragments/s", "", cmd)
+            if "fragments_per_clock" in r and args["models"] == "1" and args["assertions"] == "1":
                 b.add("RTL cycles per fragment, cad three-pass 640x480",
                       1 / r["fragments_per_clock"], "cycles", "1", cmd)
+
+
+def render_rtl(b, reps):
+    """`zblend render --backend rtl`, cad three-pass 640x480, end to end (scene, raster, RTL,
+    PNG): fragments per wall-clock second, median of reps, by --threads."""
+    stats = os.path.join(b.out, "rtl-render-stats.json")
+    for threads in (1, os.cpu_count() or 1):
+        cmd = [b.exe("zblend"), "render", "--scene", "cad", "-m", METHOD, "--backend", "rtl",
+               "--no-error", "-q", "--threads", str(threads), "--stats", stats,
+               "--out", os.path.join(b.out, "rtl-render.png")]
+        times = []
+        for _ in range(reps):
+            t0 = time.perf_counter()
+            b.run(cmd)
+            times.append(time.perf_counter() - t0)
+        with open(stats) as f:
+            frags = json.load(f)["methods"][0]["total"]["fragments_in"]
+        b.add(f"zblend render --backend rtl, cad {METHOD} 640x480, end to end, --threads {threads}",
+              frags / statistics.median(times) / 1e6, "M fragments/s", "", cmd)
 
 
 def cosim(b):
@@ -295,6 +323,7 @@ def main():
     memory(b, scene)
     step(4, "RTL simulation")
     rtl(b, reps)
+    render_rtl(b, reps)
     cosim(b)
     step(5, "cost growth")
     growth(b, scene, reps, a.quick)
