@@ -241,9 +241,16 @@ struct RtlRop::Impl {
                 const TileIo& io, const Streamed* f, size_t n, uint64_t seed,
                 uint64_t* accept_out, TileRun& run, PassStats& stats) const {
     VModel& t = *s.top;
-    const int w = std::min(kRtlTileW, src.width - x0), h = std::min(kRtlTileH, src.height - y0);
-    constexpr int beats_x = kRtlTileW / kRtlBeat;
+    const TileSweep sweep(src.width, src.height, x0, y0);
     constexpr unsigned cw = 32, dw = kRtlDepthBits, vw = coverage_bits(kRtlCoverageSamples);
+    auto put_beat = [&t](const BeatWords& w) {
+      for (unsigned l = 0; l < unsigned(kRtlBeat); ++l) {
+        put_lane(t.tile_wcolor_i, l, cw, w[0][l]);
+        put_lane(t.tile_wdepth_i, l, dw, w[1][l]);
+        put_lane(t.tile_wcov_i, l, vw, w[2][l]);
+        put_lane(t.tile_wpeel_i, l, dw, w[3][l]);
+      }
+    };
     run.x0 = x0;
     run.y0 = y0;
     run.io = io;
@@ -255,10 +262,7 @@ struct RtlRop::Impl {
     t.cnt_clear_i = 1;
     t.tile_clear_i = io.clear != 0;
     t.tile_planes_i = io.clear;
-    put_lane(t.tile_wcolor_i, 0, cw, io.clear_value[0]);
-    put_lane(t.tile_wdepth_i, 0, dw, io.clear_value[1]);
-    put_lane(t.tile_wcov_i, 0, vw, io.clear_value[2]);
-    put_lane(t.tile_wpeel_i, 0, dw, io.clear_value[3]);
+    put_beat(clear_beat(io));
     s.tick();
     t.state_we_i = 0;
     t.cnt_clear_i = 0;
@@ -267,20 +271,11 @@ struct RtlRop::Impl {
       t.tile_req_i = 1;
       t.tile_we_i = 1;
       t.tile_planes_i = io.load;
-      for (int y = 0; y < kRtlTileH; ++y)
-        for (int bx = 0; bx < beats_x; ++bx) {
-          t.tile_addr_i = (y * kRtlTileW + bx * kRtlBeat) / kRtlBeat;
-          for (int b = 0; b < kRtlBeat; ++b) {
-            const int x = bx * kRtlBeat + b;
-            const bool in = x < w && y < h;  // beyond the frame's edge: zeros
-            const size_t i = in ? src.index(x0 + x, y0 + y) : 0;
-            put_lane(t.tile_wcolor_i, unsigned(b), cw, in ? pack_rgba(src.color[i]) : 0);
-            put_lane(t.tile_wdepth_i, unsigned(b), dw, in ? src.depth[i] : 0);
-            put_lane(t.tile_wcov_i, unsigned(b), vw, in ? src.coverage[i] : 0);
-            put_lane(t.tile_wpeel_i, unsigned(b), dw, in ? src.peel[i] : 0);
-          }
-          s.tick();
-        }
+      for (int k = 0; k < sweep.beats(); ++k) {
+        t.tile_addr_i = k;
+        put_beat(sweep.load(src, k));
+        s.tick();
+      }
       t.tile_req_i = 0;
       t.tile_we_i = 0;
     }
@@ -349,19 +344,17 @@ struct RtlRop::Impl {
     if (io.store) {
       t.tile_req_i = 1;
       t.tile_we_i = 0;
-      for (int y = 0; y < kRtlTileH; ++y)
-        for (int bx = 0; bx < beats_x; ++bx) {
-          t.tile_addr_i = (y * kRtlTileW + bx * kRtlBeat) / kRtlBeat;
-          s.tick();
-          for (int b = 0; b < kRtlBeat && y < h; ++b) {
-            const int x = bx * kRtlBeat + b;
-            if (x >= w) break;
-            const size_t i = dst.index(x0 + x, y0 + y);
-            if (io.store & kPlaneColor) dst.color[i] = unpack_rgba(get_lane(t.tile_rcolor_o, unsigned(b), cw));
-            if (io.store & kPlaneDepth) dst.depth[i] = get_lane(t.tile_rdepth_o, unsigned(b), dw);
-            if (io.store & kPlaneCoverage) dst.coverage[i] = uint8_t(get_lane(t.tile_rcov_o, unsigned(b), vw));
-          }
+      for (int k = 0; k < sweep.beats(); ++k) {
+        t.tile_addr_i = k;
+        s.tick();
+        BeatWords w{};
+        for (unsigned l = 0; l < unsigned(kRtlBeat); ++l) {
+          w[0][l] = get_lane(t.tile_rcolor_o, l, cw);
+          w[1][l] = get_lane(t.tile_rdepth_o, l, dw);
+          w[2][l] = get_lane(t.tile_rcov_o, l, vw);
         }
+        sweep.store(w, io.store, dst, k);
+      }
       t.tile_req_i = 0;
     }
     run.load_beats = t.cnt_tile_loads_o;

@@ -28,6 +28,45 @@ uint8_t planes_written(const RopState& s) {
   return p;
 }
 
+BeatWords clear_beat(const TileIo& io) {
+  BeatWords w{};
+  for (size_t p = 0; p < kTilePlanes; ++p) w[p][0] = io.clear_value[p];
+  return w;
+}
+
+TileSweep::TileSweep(int frame_w, int frame_h, int x0, int y0)
+    : x0_(x0), y0_(y0), w_(std::min(kRtlTileW, frame_w - x0)), h_(std::min(kRtlTileH, frame_h - y0)) {}
+
+int64_t TileSweep::pixel(const Framebuffer& fb, int k, int l) const {
+  constexpr int per_row = kRtlTileW / kRtlBeat;
+  const int x = k % per_row * kRtlBeat + l, y = k / per_row;
+  if (x >= w_ || y >= h_) return -1;
+  return int64_t(fb.index(x0_ + x, y0_ + y));
+}
+
+BeatWords TileSweep::load(const Framebuffer& fb, int k) const {
+  BeatWords w{};
+  for (int l = 0; l < kRtlBeat; ++l) {
+    const int64_t i = pixel(fb, k, l);
+    if (i < 0) continue;
+    w[0][size_t(l)] = pack_rgba(fb.color[size_t(i)]);
+    w[1][size_t(l)] = fb.depth[size_t(i)];
+    w[2][size_t(l)] = fb.coverage[size_t(i)];
+    w[3][size_t(l)] = fb.peel[size_t(i)];
+  }
+  return w;
+}
+
+void TileSweep::store(const BeatWords& w, uint8_t planes, Framebuffer& fb, int k) const {
+  for (int l = 0; l < kRtlBeat; ++l) {
+    const int64_t i = pixel(fb, k, l);
+    if (i < 0) continue;
+    if (planes & kPlaneColor) fb.color[size_t(i)] = unpack_rgba(w[0][size_t(l)]);
+    if (planes & kPlaneDepth) fb.depth[size_t(i)] = w[1][size_t(l)];
+    if (planes & kPlaneCoverage) fb.coverage[size_t(i)] = uint8_t(w[2][size_t(l)]);
+  }
+}
+
 uint64_t tile_beats(int w, int h, int beat) {
   if (w <= 0 || h <= 0 || beat <= 0) return 0;
   return uint64_t(h) * uint64_t((w + beat - 1) / beat);

@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "rop/fragment.h"
+#include "rop/framebuffer.h"
+#include "rtl_params.h"
 
 namespace zb {
 
@@ -45,6 +47,31 @@ uint64_t tile_beats(int w, int h, int beat);
 // state, counter clear and fast clear), then its load beats, later its store beats.
 constexpr uint64_t kRtlTileSetup = 1;
 uint64_t tile_io_cycles(uint64_t beats, const TileIo& io);
+
+// One beat at the built model's port: per plane (kPlane* bit order) and lane, the word (colour
+// pack_rgba, depth, coverage count, peel depth).
+using BeatWords = std::array<std::array<uint32_t, kRtlBeat>, kTilePlanes>;
+
+// The fast clear's beat: each plane's clear value in lane 0.
+BeatWords clear_beat(const TileIo& io);
+
+// The port's sweep of one kRtlTileW x kRtlTileH tile of a frame: beat k at address k, lane l
+// the pixel (x0 + (k % beats per row) * kRtlBeat + l, y0 + k / beats per row). The RTL and
+// SystemC drivers move every beat through their ports; this holds the pixels and the edge.
+class TileSweep {
+ public:
+  TileSweep(int frame_w, int frame_h, int x0, int y0);
+  int beats() const { return kRtlTileW / kRtlBeat * kRtlTileH; }
+  // Beat k's words from `fb`: lanes beyond the frame's edge 0.
+  BeatWords load(const Framebuffer& fb, int k) const;
+  // Beat k's words of `planes` (colour, depth, coverage) into `fb`, lanes within the frame.
+  void store(const BeatWords& words, uint8_t planes, Framebuffer& fb, int k) const;
+
+ private:
+  // Beat k's lane l in the frame, or -1 beyond its edge.
+  int64_t pixel(const Framebuffer& fb, int k, int l) const;
+  int x0_, y0_, w_, h_;
+};
 
 // Each tile's planes as the frame holds them: cleared to one value (the tile memory takes the
 // value, not the words: fast clear) or words stored by a pass or made by a frame operation.

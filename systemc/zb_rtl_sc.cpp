@@ -159,21 +159,25 @@ PassStats ZbRtlSc::run_pass() {
 // clear), the load beats, a fragment offered every clock (held while frag_ready_o is low), the
 // drain while busy_o, the counters, the store beats.
 void ZbRtlSc::run_tile(size_t tile, int x0, int y0, uint32_t b, uint32_t e, PassStats& stats) {
-  const int w = std::min(kRtlTileW, fb_.width - x0), h = std::min(kRtlTileH, fb_.height - y0);
-  constexpr int beats_x = kRtlTileW / kRtlBeat;
+  const TileSweep sweep(fb_.width, fb_.height, x0, y0);
   const TileIo io = tiles_.plan(tile, state_value_);
   const uint64_t load_begin = cycles_;
-  Bits<kRtlBeat * 32> color{};
-  Bits<kRtlBeat * kRtlDepthBits> depth{}, peel{};
-  Bits<kRtlBeat * kCovW> cov{};
-  put_lane(color, 0, 32, io.clear_value[0]);
-  put_lane(depth, 0, kRtlDepthBits, io.clear_value[1]);
-  put_lane(cov, 0, kCovW, io.clear_value[2]);
-  put_lane(peel, 0, kRtlDepthBits, io.clear_value[3]);
-  tile_wcolor_.write(color);
-  tile_wdepth_.write(depth);
-  tile_wcov_.write(cov);
-  tile_wpeel_.write(peel);
+  auto put_beat = [this](const BeatWords& w) {
+    Bits<kRtlBeat * 32> color{};
+    Bits<kRtlBeat * kRtlDepthBits> depth{}, peel{};
+    Bits<kRtlBeat * kCovW> cov{};
+    for (int l = 0; l < kRtlBeat; ++l) {
+      put_lane(color, l, 32, w[0][size_t(l)]);
+      put_lane(depth, l, kRtlDepthBits, w[1][size_t(l)]);
+      put_lane(cov, l, kCovW, w[2][size_t(l)]);
+      put_lane(peel, l, kRtlDepthBits, w[3][size_t(l)]);
+    }
+    tile_wcolor_.write(color);
+    tile_wdepth_.write(depth);
+    tile_wcov_.write(cov);
+    tile_wpeel_.write(peel);
+  };
+  put_beat(clear_beat(io));
   tile_clear_.write(io.clear != 0);
   tile_planes_.write(io.clear);
   tile_x0_.write(uint32_t(x0));
@@ -189,23 +193,11 @@ void ZbRtlSc::run_tile(size_t tile, int x0, int y0, uint32_t b, uint32_t e, Pass
     tile_req_.write(true);
     tile_we_.write(true);
     tile_planes_.write(io.load);
-    for (int y = 0; y < kRtlTileH; ++y)
-      for (int bx = 0; bx < beats_x; ++bx) {
-        for (int l = 0; l < kRtlBeat; ++l) {
-          const bool in = bx * kRtlBeat + l < w && y < h;  // beyond the frame's edge: zeros
-          const size_t i = in ? fb_.index(x0 + bx * kRtlBeat + l, y0 + y) : 0;
-          put_lane(color, l, 32, in ? pack_rgba(fb_.color[i]) : 0);
-          put_lane(depth, l, kRtlDepthBits, in ? fb_.depth[i] : 0);
-          put_lane(cov, l, kCovW, in ? fb_.coverage[i] : 0);
-          put_lane(peel, l, kRtlDepthBits, in ? fb_.peel[i] : 0);
-        }
-        tile_addr_.write(uint32_t((y * kRtlTileW + bx * kRtlBeat) / kRtlBeat));
-        tile_wcolor_.write(color);
-        tile_wdepth_.write(depth);
-        tile_wcov_.write(cov);
-        tile_wpeel_.write(peel);
-        cycle();
-      }
+    for (int k = 0; k < sweep.beats(); ++k) {
+      tile_addr_.write(uint32_t(k));
+      put_beat(sweep.load(fb_, k));
+      cycle();
+    }
     tile_req_.write(false);
     tile_we_.write(false);
   }
@@ -259,17 +251,17 @@ void ZbRtlSc::run_tile(size_t tile, int x0, int y0, uint32_t b, uint32_t e, Pass
 
   if (io.store) {
     tile_req_.write(true);
-    for (int y = 0; y < kRtlTileH; ++y)
-      for (int bx = 0; bx < beats_x; ++bx) {
-        tile_addr_.write(uint32_t((y * kRtlTileW + bx * kRtlBeat) / kRtlBeat));
-        cycle();
-        for (int l = 0; l < kRtlBeat && bx * kRtlBeat + l < w && y < h; ++l) {
-          const size_t i = fb_.index(x0 + bx * kRtlBeat + l, y0 + y);
-          if (io.store & kPlaneColor) fb_.color[i] = unpack_rgba(get_lane(tile_rcolor_.read(), l, 32));
-          if (io.store & kPlaneDepth) fb_.depth[i] = get_lane(tile_rdepth_.read(), l, kRtlDepthBits);
-          if (io.store & kPlaneCoverage) fb_.coverage[i] = uint8_t(get_lane(tile_rcov_.read(), l, kCovW));
-        }
+    for (int k = 0; k < sweep.beats(); ++k) {
+      tile_addr_.write(uint32_t(k));
+      cycle();
+      BeatWords w{};
+      for (int l = 0; l < kRtlBeat; ++l) {
+        w[0][size_t(l)] = get_lane(tile_rcolor_.read(), l, 32);
+        w[1][size_t(l)] = get_lane(tile_rdepth_.read(), l, kRtlDepthBits);
+        w[2][size_t(l)] = get_lane(tile_rcov_.read(), l, kCovW);
       }
+      sweep.store(w, io.store, fb_, k);
+    }
     tile_req_.write(false);
   }
   tiles_.stored(tile, io.store);
