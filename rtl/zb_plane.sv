@@ -4,7 +4,11 @@
 // Fast clear: each word carries a generation bit beside its WIDTH bits, the plane an epoch. A
 // word whose bit is not the epoch is fresh: reads of it (pipeline and tile port) return the
 // clear value. Loads and pipeline writes store the epoch, so a fast clear only flips it; that
-// needs every word at the epoch, so a tile read (the store) writes each fresh word back.
+// needs every word at the epoch, so a tile read (the store) writes each fresh word back, two
+// cycles after the read (W1 notes which words were fresh, W2 writes them: the RAM's read data
+// reaches no write enable in the cycle it appears). A write-back carries the epoch of its read:
+// a fast clear in between makes it a fresh word, as the clear wants. A load at W2's edge takes
+// the port (it writes the whole plane).
 // A READ_ONLY plane's words are all loaded or all fresh: a flag for the plane replaces the
 // generation bits. The driver fast-clears a plane whole, loads it whole and stores every plane
 // a pass writes;
@@ -62,13 +66,16 @@ module zb_plane #(
   assign tile_read  = tile_req_i & ~tile_we_i;
   assign tile_clear = tile_clear_i & tile_en_i;
 
-  // Epoch and clear value. all_fresh_q: no word written since the fast clear, so a second fast
-  // clear keeps the epoch (flipping it would make those words current). wback_q: the beat read
-  // last edge is written back this edge, resolved, at the epoch.
-  logic             epoch_d, epoch_q, all_fresh_d, all_fresh_q, wback_q;
+  // Epoch and clear value. all_fresh_q: no word current since the fast clear, so a second fast
+  // clear keeps the epoch (flipping it would make fresh words current). wback_q (W1): the beat
+  // read last edge is in the read register; wb2_q (W2): its fresh words are written back this
+  // edge. all_fresh falls at W1 already, so a clear between W1 and W2 flips the epoch.
+  logic             epoch_d, epoch_q, all_fresh_d, all_fresh_q, wback_q, wb2_q, wb2_epoch_q;
+  logic             wb2_current;  // W2 writes at the plane's epoch (no clear since its read)
   logic [WIDTH-1:0] clear_q;
-  logic [BeatAW-1:0] wback_addr_q;
+  logic [BeatAW-1:0] wback_addr_q, wb2_addr_q;
   logic [BankW-1:0] rbank_q;
+  assign wb2_current = wb2_q & (wb2_epoch_q == epoch_q);
 
   always_comb begin
     epoch_d     = epoch_q;
@@ -76,7 +83,7 @@ module zb_plane #(
     if (tile_clear) begin
       epoch_d     = all_fresh_q ? epoch_q : ~epoch_q;
       all_fresh_d = 1'b1;
-    end else if (tile_load || pipe_we_i || wback_q) begin
+    end else if (tile_load || pipe_we_i || wback_q || wb2_current) begin
       all_fresh_d = 1'b0;
     end
   end
@@ -86,10 +93,12 @@ module zb_plane #(
       epoch_q     <= 1'b0;
       all_fresh_q <= 1'b0;
       wback_q     <= 1'b0;
+      wb2_q       <= 1'b0;
     end else begin
       epoch_q     <= epoch_d;
       all_fresh_q <= all_fresh_d;
       wback_q     <= tile_read;
+      wb2_q       <= wback_q;
     end
   end
 
@@ -101,6 +110,8 @@ module zb_plane #(
       rbank_q <= rbank;
     end
     wback_addr_q <= tile_addr_i;
+    wb2_addr_q   <= wback_addr_q;
+    wb2_epoch_q  <= epoch_q;
   end
 
   // The banks: words of {generation, value}. The write-back rewrites only the fresh words (as
@@ -109,7 +120,7 @@ module zb_plane #(
   logic [BEAT*WIDTH-1:0] lane;       // each bank's last read word, resolved
   logic [WIDTH-1:0]      wdata_one;  // a bank's write data but for a load
   logic                  plane_fresh_q;
-  assign wdata_one = wback_q ? clear_q : pipe_wdata_i;
+  assign wdata_one = wb2_q ? clear_q : pipe_wdata_i;
   for (genvar b = 0; b < BEAT; b++) begin : g_bank
     logic                  we, fresh;
     logic [BeatAW-1:0]     waddr;
@@ -120,10 +131,15 @@ module zb_plane #(
       assign waddr = tile_addr_i;
       assign wdata = tile_wdata_i[b*WIDTH +: WIDTH];
     end else begin : g_rw
+      logic fresh2_q;  // W2: this bank's word was fresh at W1
       assign fresh = rdata[WIDTH] != epoch_q;
-      assign we    = tile_load | (wback_q & fresh) | (pipe_we_i & wbank == BankW'(b));
-      assign waddr = tile_load ? tile_addr_i : (wback_q ? wback_addr_q : wbeat);
-      assign wdata = {epoch_q, tile_load ? tile_wdata_i[b*WIDTH +: WIDTH] : wdata_one};
+      assign we    = tile_load | (wb2_q & fresh2_q) | (pipe_we_i & wbank == BankW'(b));
+      assign waddr = tile_load ? tile_addr_i : (wb2_q ? wb2_addr_q : wbeat);
+      assign wdata = {tile_load | ~wb2_q ? epoch_q : wb2_epoch_q,
+                      tile_load ? tile_wdata_i[b*WIDTH +: WIDTH] : wdata_one};
+      always_ff @(posedge clk_i) begin
+        fresh2_q <= fresh;
+      end
     end
 
     zb_tile_mem #(
@@ -145,7 +161,7 @@ module zb_plane #(
   // Each form leaves the other's signals unread.
   if (READ_ONLY) begin : g_unused_rw
     logic unused_rw;
-    assign unused_rw = ^{wbeat, wbank, wback_addr_q, wdata_one};
+    assign unused_rw = ^{wbeat, wbank, wb2_addr_q, wdata_one};
   end else begin : g_unused_ro
     logic unused_ro;
     assign unused_ro = plane_fresh_q;
@@ -174,7 +190,11 @@ module zb_plane #(
         !(pipe_re_i && pipe_we_i && pipe_raddr_i == pipe_waddr_i));
   end
   PortsApart: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (tile_req_i || tile_clear_i || wback_q) |-> !(pipe_re_i || pipe_we_i));
+      (tile_req_i || tile_clear_i || wback_q || wb2_q) |-> !(pipe_re_i || pipe_we_i));
+  // A write-back at the epoch meeting a fast clear that keeps the epoch would leave its word
+  // current with the old clear value: the driver never clears twice in a row (one setup cycle).
+  WriteBackBeforeClear: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (tile_clear && wb2_current) |-> !all_fresh_q);
   // Written since a fast clear and not stored since: some words fresh, some current. A fast
   // clear then would make the fresh ones current (the driver stores every plane a pass writes).
   logic mixed_q;
