@@ -6,7 +6,7 @@ ZBLEND     := $(BUILD)/zblend
 RUN_SIZE   ?= --width 640 --height 480
 
 .DEFAULT_GOAL := build
-.PHONY: help setup build run test test-asan bench bench-verilator synth systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
+.PHONY: help setup build run test test-asan bench bench-verilator profile-rtl synth systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
 
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | awk -F'\t' '{printf "%-16s %s\n", $$1, $$2}'
@@ -39,6 +39,10 @@ test-asan: setup ## The tests built with AddressSanitizer and UndefinedBehaviorS
 
 bench: build ## Benchmarks: datapath, golden vs llvmpipe, memory, RTL, cost growth: out/bench/
 	@/usr/bin/python3 scripts/bench.py --build $(BUILD) --out out/bench
+
+profile-rtl: ## Where the RTL simulation's time goes, per module (perf, --prof-cfuncs): out/profile/modules.csv
+	@scripts/setup.sh profile
+	@scripts/profile_rtl.sh -j $(JOBS)
 
 bench-verilator: setup ## Verilator option sets measured against each other: out/bench/verilator_options.csv
 	@scripts/verilator_options.sh -j $(JOBS)

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages zblend needs, only those missing. Quiet when all are present.
-# Usage: setup.sh [synth]   (synth: also Yosys and nextpnr-ice40, for `make synth`)
+# Usage: setup.sh [synth|profile]   (synth: also Yosys and nextpnr-ice40, for `make synth`;
+# profile: also perf, for `make profile-rtl`)
 set -euo pipefail
 
 packages=(
@@ -15,8 +16,10 @@ packages=(
 )
 if [[ ${1:-} == synth ]]; then
   packages+=(yosys nextpnr-ice40 fpga-icestorm)
+elif [[ ${1:-} == profile ]]; then
+  packages+=(linux-perf)
 elif [[ $# -gt 0 ]]; then
-  echo "setup: error: unknown group '$1' (the only one is 'synth')" >&2
+  echo "setup: error: unknown group '$1' (choose synth or profile)" >&2
   exit 2
 fi
 
