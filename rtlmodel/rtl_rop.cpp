@@ -189,17 +189,19 @@ struct Sim {
     top->cnt_clear_i = 0;
   }
 
-  // One clock: rising edge (inputs as set are sampled), then falling edge. Time 2c+1 is the
-  // rising edge of cycle c.
+  // One clock: falling edge with the inputs as set, then the rising edge that samples them.
+  // Time 2c is cycle c's falling edge, 2c+1 its rising edge. The inputs must be evaluated
+  // before the rising edge: Verilator's assertions read the values of the last evaluation,
+  // so inputs set after the falling edge's evaluation would reach them a cycle late.
   void tick() {
+    top->clk_i = 0;
+    ctx->time(2 * cycle);
+    top->eval();
+    if (fst && cycle - dump_from <= dump_to - dump_from) fst->dump(2 * cycle);
     top->clk_i = 1;
     ctx->time(2 * cycle + 1);
     top->eval();
     if (fst && cycle - dump_from <= dump_to - dump_from) fst->dump(2 * cycle + 1);
-    top->clk_i = 0;
-    ctx->time(2 * cycle + 2);
-    top->eval();
-    if (fst && cycle - dump_from <= dump_to - dump_from) fst->dump(2 * cycle + 2);
     ++cycle;
   }
 };
