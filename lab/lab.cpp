@@ -106,24 +106,27 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
       row.bytes_read = bytes_read(row.golden, vp.depth_bits);
       row.bytes_written = bytes_written(row.golden, vp.depth_bits);
       image = std::move(r.framebuffer);
-      {
-        GoldenRop inner;
-        std::vector<std::unique_ptr<CostCounter>> counters;
-        Backend* outer = &inner;
-        for (const int beat : kLabBeats) {
-          counters.push_back(std::make_unique<CostCounter>(*outer, beat));
-          outer = counters.back().get();
-        }
-        render(rs, *plan, *outer);
-        for (size_t k = 0; k < kLabBeats.size(); ++k)
-          row.model_tile_cycles[k] = counters[k]->cost().at(kRtlTileW).tile_io_cycles;
-        row.model_stream_cycles = counters[0]->cost().at(kRtlTileW).stream_cycles;
-      }
+      // The cost model watches the RTL's run (or, without it, a golden one): one render
+      // gives both, and the cost model's cycles stay its own (IssueSchedule, TileStates).
+      GoldenRop golden_inner;
+      std::unique_ptr<RtlRop> rtl;
+      Backend* outer = &golden_inner;
       if (o.rtl) {
-        RtlRop rtl;
-        const RenderResult rr = render(rs, *plan, rtl);
+        rtl = std::make_unique<RtlRop>();
+        outer = rtl.get();
+      }
+      std::vector<std::unique_ptr<CostCounter>> counters;
+      for (const int beat : kLabBeats) {
+        counters.push_back(std::make_unique<CostCounter>(*outer, beat));
+        outer = counters.back().get();
+      }
+      const RenderResult rr = render(rs, *plan, *outer);
+      for (size_t k = 0; k < kLabBeats.size(); ++k)
+        row.model_tile_cycles[k] = counters[k]->cost().at(kRtlTileW).tile_io_cycles;
+      row.model_stream_cycles = counters[0]->cost().at(kRtlTileW).stream_cycles;
+      if (rtl) {
         row.rtl_stream_cycles = sum_passes(rr).cycles;
-        row.rtl_tile_cycles = rtl.tile_io_cycles();
+        row.rtl_tile_cycles = rtl->tile_io_cycles();
         row.rtl_cycles = row.rtl_stream_cycles + row.rtl_tile_cycles;
         row.rtl_mismatch_pixels = differing_pixels(rr.framebuffer, image);
       }

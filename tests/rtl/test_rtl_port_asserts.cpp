@@ -17,9 +17,9 @@ namespace {
 class Port {
  public:
   Port() {
-    Verilated::threadContextp(&ctx_);  // where an assertion's failure is recorded
-    ctx_.fatalOnError(false);          // it marks the context and the run goes on
+    ctx_.fatalOnError(false);  // an assertion's failure marks the context; the run goes on
     top_ = std::make_unique<Vzb_rop>(&ctx_, "zb_rop");
+    Verilated::threadContextp(&ctx_);  // where a failure is recorded
     top_->clk_i = 1;
     top_->rst_ni = 0;
     top_->eval();
