@@ -361,7 +361,7 @@ struct RtlRop::Impl {
     }
     run.load_beats = t.cnt_tile_loads_o;
     run.store_beats = t.cnt_tile_stores_o;
-    const uint64_t beats = tile_beats(kRtlTileW, kRtlTileH, kRtlBeat);
+    const uint64_t beats = uint64_t(sweep.beats());
     if (run.load_beats != (io.load ? beats : 0) || run.store_beats != (io.store ? beats : 0))
       throw std::runtime_error("rtl: tile (" + std::to_string(x0) + "," + std::to_string(y0) +
                                ") counted " + std::to_string(run.load_beats) + " load and " +
@@ -449,27 +449,24 @@ PassStats RtlRop::end_pass() {
                m.binned.data() + b, e - b, m.tile_seed(m.pass_no, tile), m.accepted.data(),
                m.runs[j], tile_stats[j]);
   };
+  // Each model takes the next tile; the tiles touch disjoint pixels of fb and of accepted.
+  // One model runs on this thread, in tile order.
   const int n = int(std::min<size_t>(size_t(m.models()), touched.size()));
-  if (n <= 1) {
-    for (size_t j = 0; j < touched.size(); ++j) run(m.sim, j);
-  } else {
-    // Each model takes the next tile; the tiles touch disjoint pixels of fb and of accepted.
-    while (m.helpers.size() < size_t(n - 1))
-      m.helpers.push_back(std::make_unique<Sim>(std::string(), m.opt, m.opt.coverage));
-    std::atomic<size_t> next{0};
-    std::atomic<bool> failed{false};
-    run_workers(n, [&](int w) {
-      Sim& s = w == 0 ? m.sim : *m.helpers[size_t(w - 1)];
-      Verilated::threadContextp(s.ctx.get());
-      try {
-        for (size_t j; !failed && (j = next++) < touched.size();) run(s, j);
-      } catch (...) {
-        failed = true;
-        throw;
-      }
-    });
-    Verilated::threadContextp(m.sim.ctx.get());
-  }
+  while (m.helpers.size() + 1 < size_t(n))
+    m.helpers.push_back(std::make_unique<Sim>(std::string(), m.opt, m.opt.coverage));
+  std::atomic<size_t> next{0};
+  std::atomic<bool> failed{false};
+  run_workers(n, [&](int w) {
+    Sim& s = w == 0 ? m.sim : *m.helpers[size_t(w - 1)];
+    Verilated::threadContextp(s.ctx.get());
+    try {
+      for (size_t j; !failed && (j = next++) < touched.size();) run(s, j);
+    } catch (...) {
+      failed = true;
+      throw;
+    }
+  });
+  Verilated::threadContextp(m.sim.ctx.get());
   // One model's cycles: the tiles back to back in tile order, from where the last pass ended.
   PassStats stats;
   for (size_t j = 0; j < touched.size(); ++j) {

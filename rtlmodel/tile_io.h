@@ -61,7 +61,7 @@ BeatWords clear_beat(const TileIo& io);
 class TileSweep {
  public:
   TileSweep(int frame_w, int frame_h, int x0, int y0);
-  int beats() const { return kRtlTileW / kRtlBeat * kRtlTileH; }
+  int beats() const { return int(tile_beats(kRtlTileW, kRtlTileH, kRtlBeat)); }
   // Beat k's words from `fb`: lanes beyond the frame's edge 0.
   BeatWords load(const Framebuffer& fb, int k) const;
   // Beat k's words of `planes` (colour, depth, coverage) into `fb`, lanes within the frame.
