@@ -37,7 +37,10 @@ module zb_color #(
   input  logic [31:0]                       x7_k_i,
   input  logic [39:0]                       x7_k3_i,
   input  logic [31:0]                       x7_add_i,
-  input  logic [4*(8+$clog2(COV_SAMPLES+1))-1:0] x7_q_i
+  input  logic [4*(8+$clog2(COV_SAMPLES+1))-1:0] x7_q_i,
+  // X11's colour write as the plane takes it, for zb_rop's retire port.
+  output logic                              x11_cwe_o,
+  output logic [31:0]                       x11_wcolor_o
 );
 
   logic [31:0] cmem_rdata, x7_mem_q, x11_color, x7_dst;
@@ -90,6 +93,9 @@ module zb_color #(
     fwd_color_q  <= fwd6_hit ? x11_color : fwd6_color_q;
     byp_hit_q    <= x6_valid_i & x10_cwe & (x6_addr_i == x10_addr_i);
   end
+
+  assign x11_cwe_o    = x11_cwe;
+  assign x11_wcolor_o = x11_color;
 
   assign x7_dst = byp_hit_q ? x11_color : (fwd_hit_q ? fwd_color_q : x7_mem_q);
 

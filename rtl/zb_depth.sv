@@ -41,7 +41,11 @@ module zb_depth #(
   // X4: the fragment's outcome.
   output logic                                x3_pass_o,    // into X4 at E3
   output logic                                x4_dwe_o,     // writes depth at E4
-  output logic [$clog2(COV_SAMPLES+1)-1:0]    x4_weight_o   // coverage blend weight w
+  output logic [$clog2(COV_SAMPLES+1)-1:0]    x4_weight_o,  // coverage blend weight w
+  // X4's plane writes as the planes take them, for zb_rop's retire port.
+  output logic [DEPTH_BITS-1:0]               x4_wdepth_o,
+  output logic                                x4_vwe_o,
+  output logic [$clog2(COV_SAMPLES+1)-1:0]    x4_wcov_o
 );
 
   localparam int unsigned CovW = $clog2(COV_SAMPLES + 1);
@@ -226,6 +230,9 @@ module zb_depth #(
   assign x3_pass_o   = x3_pass;
   assign x4_dwe_o    = x4_dwe;
   assign x4_weight_o = x4_weight_q;
+  assign x4_wdepth_o = x4_z_q;
+  assign x4_vwe_o    = x4_vwe;
+  assign x4_wcov_o   = x4_cov_new_q;
 
 `ifndef SYNTHESIS
   // A read that meets a write of its pixel at one edge takes the forwarded word.

@@ -74,7 +74,20 @@ module zb_rop
   output logic [CNT_W-1:0]      cnt_stall_cycles_o,
   output logic [CNT_W-1:0]      cnt_cycles_o,
   output logic [CNT_W-1:0]      cnt_tile_loads_o,    // beats loaded
-  output logic [CNT_W-1:0]      cnt_tile_stores_o    // beats read
+  output logic [CNT_W-1:0]      cnt_tile_stores_o,   // beats read
+  // Retire port (docs/testbench.md "A mismatch"), for a testbench's monitor: the plane writes
+  // as the planes take them at this cycle's edge. X4 writes depth and coverage, X11 colour; a
+  // fragment's stage is valid whether or not it writes. Taps only: no logic of its own.
+  output logic                  mon_x4_valid_o,
+  output logic [AddrW-1:0]      mon_x4_addr_o,
+  output logic                  mon_dwe_o,
+  output logic [DEPTH_BITS-1:0] mon_wdepth_o,
+  output logic                  mon_vwe_o,
+  output logic [CovW-1:0]       mon_wcov_o,
+  output logic                  mon_x11_valid_o,
+  output logic [AddrW-1:0]      mon_x11_addr_o,
+  output logic                  mon_cwe_o,
+  output logic [31:0]           mon_wcolor_o
 );
 
   localparam int unsigned XW    = $clog2(TILE_W);
@@ -275,7 +288,10 @@ module zb_rop
     .x4_addr_i    (x_addr_q[4]),
     .x3_pass_o    (x3_pass),
     .x4_dwe_o     (x4_dwe),
-    .x4_weight_o  (x4_weight)
+    .x4_weight_o  (x4_weight),
+    .x4_wdepth_o  (mon_wdepth_o),
+    .x4_vwe_o     (mon_vwe_o),
+    .x4_wcov_o    (mon_wcov_o)
   );
 
   // ---------------------------------------------------------------------------------------
@@ -331,10 +347,18 @@ module zb_rop
     .x7_k_i       (x7_k),
     .x7_k3_i      (x7_k3),
     .x7_add_i     (x7_add),
-    .x7_q_i       (x7_q)
+    .x7_q_i       (x7_q),
+    .x11_cwe_o    (mon_cwe_o),
+    .x11_wcolor_o (mon_wcolor_o)
   );
 
   assign busy_o = i_busy | w_busy | m_valid_q | (|x_valid_q);
+
+  assign mon_x4_valid_o  = x_valid_q[4];
+  assign mon_x4_addr_o   = x_addr_q[4];
+  assign mon_dwe_o       = x4_dwe;
+  assign mon_x11_valid_o = x_valid_q[Last];
+  assign mon_x11_addr_o  = x_addr_q[Last];
 
   // ---------------------------------------------------------------------------------------
   // Counters (docs/datapath.md "Counters"); fragment events are counted in X4.

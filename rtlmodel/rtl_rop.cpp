@@ -114,11 +114,14 @@ struct Sim {
   std::unique_ptr<VModel> top;
   std::unique_ptr<VerilatedFstC> fst;
   CoverageTotals* coverage = nullptr;
+  std::unique_ptr<RetireMonitor> monitor;   // with RtlOptions::retire_sink
+  std::vector<uint32_t> tile_addr, tile_index;  // the monitor's view of the tile's stream
   uint64_t cycle = 0;
   uint64_t dump_from = 0, dump_to = std::numeric_limits<uint64_t>::max();
 
   Sim(const std::string& fst_path, const RtlOptions& o, CoverageTotals* totals = nullptr)
       : ctx(std::make_unique<VerilatedContext>()), coverage(totals) {
+    if (o.retire_sink) monitor = std::make_unique<RetireMonitor>(*o.retire_sink);
     std::vector<const char*> argv{"zb_rop"};
     for (const std::string& a : o.plusargs) argv.push_back(a.c_str());
     ctx->commandArgs(int(argv.size()), argv.data());
@@ -238,8 +241,9 @@ struct RtlRop::Impl {
 
   // Runs tile (x0, y0) of a pass: the setup cycle (pass state, counter clear, fast clear of the
   // planes `io` clears), the load beats of the planes it loads from `src`, `n` fragments, the
-  // drain, the store beats; the stored planes go to `dst`.
-  void run_tile(Sim& s, const Framebuffer& src, Framebuffer& dst, int x0, int y0,
+  // drain, the store beats; the stored planes go to `dst`. Returns false when the retire sink
+  // asked to stop.
+  bool run_tile(Sim& s, const Framebuffer& src, Framebuffer& dst, int x0, int y0,
                 const TileIo& io, const Streamed* f, size_t n, uint64_t seed,
                 uint64_t* accept_out, TileRun& run, PassStats& stats) const {
     VModel& t = *s.top;
@@ -257,6 +261,33 @@ struct RtlRop::Impl {
     run.y0 = y0;
     run.io = io;
     run.load_begin = s.cycle;
+    bool go = true;
+    size_t k = 0;  // fragments accepted
+    if (s.monitor) {
+      s.tile_addr.resize(n);
+      s.tile_index.resize(n);
+      for (size_t j = 0; j < n; ++j) {
+        s.tile_addr[j] = uint32_t(f[j].y - y0) * kRtlTileW + uint32_t(f[j].x - x0);
+        s.tile_index[j] = f[j].index;
+      }
+      s.monitor->begin_tile(x0, y0, s.tile_addr.data(), s.tile_index.data(), n);
+    }
+    // After each edge of the stream, drain and store: the retire port's writes at the next.
+    auto watch = [&] {
+      if (!s.monitor) return;
+      RetirePort p;
+      p.x4_valid = t.mon_x4_valid_o;
+      p.x4_addr = t.mon_x4_addr_o;
+      p.dwe = t.mon_dwe_o;
+      p.wdepth = t.mon_wdepth_o;
+      p.vwe = t.mon_vwe_o;
+      p.wcov = t.mon_wcov_o;
+      p.x11_valid = t.mon_x11_valid_o;
+      p.x11_addr = t.mon_x11_addr_o;
+      p.cwe = t.mon_cwe_o;
+      p.wcolor = t.mon_wcolor_o;
+      go = s.monitor->observe(p, s.cycle - run.load_begin, k) && go;
+    };
     t.tile_x0_i = x0;
     t.tile_y0_i = y0;
     t.state_i = pack_state(state);
@@ -291,7 +322,6 @@ struct RtlRop::Impl {
     // Offer fragment k every cycle (or, with back-pressure, a random valid gap and stall_i);
     // it is accepted at the edge of a cycle with frag_valid_i && frag_ready_o. frag_ready_o
     // also drops while the interlock holds fragments (zb_rop's skid register is full).
-    size_t k = 0;
     uint64_t refused = 0;  // consecutive offers (valid, no stall_i) not accepted
     while (k < n) {
       bool stall = false, valid = true;
@@ -319,6 +349,7 @@ struct RtlRop::Impl {
                                  std::to_string(y0) + ")");
       }
       s.tick();
+      watch();
     }
     t.frag_valid_i = 0;
     t.stall_i = 0;
@@ -329,8 +360,10 @@ struct RtlRop::Impl {
                                  " cycles after the last fragment (tile " +
                                  std::to_string(x0) + "," + std::to_string(y0) + ")");
       s.tick();
+      watch();
     }
     run.stream_end = s.cycle;
+    if (s.monitor) go = s.monitor->end_tile(s.cycle - run.load_begin) && go;
     stats.fragments_in += t.cnt_frag_in_o;
     stats.fragments_passed += t.cnt_frag_passed_o;
     stats.depth_reads += t.cnt_depth_reads_o;
@@ -346,16 +379,20 @@ struct RtlRop::Impl {
     if (io.store) {
       t.tile_req_i = 1;
       t.tile_we_i = 0;
-      for (int k = 0; k < sweep.beats(); ++k) {
-        t.tile_addr_i = k;
+      for (int b = 0; b < sweep.beats(); ++b) {
+        t.tile_addr_i = b;
         s.tick();
+        watch();
         BeatWords w{};
         for (unsigned l = 0; l < unsigned(kRtlBeat); ++l) {
           w[0][l] = get_lane(t.tile_rcolor_o, l, cw);
           w[1][l] = get_lane(t.tile_rdepth_o, l, dw);
           w[2][l] = get_lane(t.tile_rcov_o, l, vw);
         }
-        sweep.store(w, io.store, dst, k);
+        sweep.store(w, io.store, dst, b);
+        if (s.monitor)
+          go = s.monitor->store(StoreBeat{x0, y0, b, io.store, s.cycle - 1 - run.load_begin, &w}) &&
+               go;
       }
       t.tile_req_i = 0;
     }
@@ -369,6 +406,7 @@ struct RtlRop::Impl {
                                std::to_string(io.load ? beats : 0) + " and " +
                                std::to_string(io.store ? beats : 0));
     run.store_end = s.cycle;
+    return go;
   }
 
   // Bins `frags` into tiles, stably (tile_bins.h).
@@ -445,31 +483,35 @@ PassStats RtlRop::end_pass() {
   auto run = [&](Sim& s, size_t j) {
     const size_t tile = touched[j];
     const uint32_t b = m.tile_first[tile], e = m.tile_first[tile + 1];
-    m.run_tile(s, m.fb, m.fb, int(tile % tx) * kRtlTileW, int(tile / tx) * kRtlTileH, ios[j],
-               m.binned.data() + b, e - b, m.tile_seed(m.pass_no, tile), m.accepted.data(),
-               m.runs[j], tile_stats[j]);
+    return m.run_tile(s, m.fb, m.fb, int(tile % tx) * kRtlTileW, int(tile / tx) * kRtlTileH,
+                      ios[j], m.binned.data() + b, e - b, m.tile_seed(m.pass_no, tile),
+                      m.accepted.data(), m.runs[j], tile_stats[j]);
   };
   // Each model takes the next tile; the tiles touch disjoint pixels of fb and of accepted.
-  // One model runs on this thread, in tile order.
+  // One model runs on this thread, in tile order. A stop (the retire sink's) lets the running
+  // tiles finish, so the tiles that ran are the first `ran`, whole.
   const int n = int(std::min<size_t>(size_t(m.models()), touched.size()));
   while (m.helpers.size() + 1 < size_t(n))
     m.helpers.push_back(std::make_unique<Sim>(std::string(), m.opt, m.opt.coverage));
   std::atomic<size_t> next{0};
-  std::atomic<bool> failed{false};
+  std::atomic<bool> failed{false}, stopped{false};
   run_workers(n, [&](int w) {
     Sim& s = w == 0 ? m.sim : *m.helpers[size_t(w - 1)];
     Verilated::threadContextp(s.ctx.get());
     try {
-      for (size_t j; !failed && (j = next++) < touched.size();) run(s, j);
+      for (size_t j; !failed && !stopped && (j = next++) < touched.size();)
+        if (!run(s, j)) stopped = true;
     } catch (...) {
       failed = true;
       throw;
     }
   });
   Verilated::threadContextp(m.sim.ctx.get());
+  const size_t ran = std::min(next.load(), touched.size());
+  m.runs.resize(ran);
   // One model's cycles: the tiles back to back in tile order, from where the last pass ended.
   PassStats stats;
-  for (size_t j = 0; j < touched.size(); ++j) {
+  for (size_t j = 0; j < ran; ++j) {
     TileRun& r = m.runs[j];
     const uint64_t from = r.load_begin;
     auto rebase = [&](uint64_t c) { return c - from + m.cycles; };
@@ -484,6 +526,10 @@ PassStats RtlRop::end_pass() {
     m.tiles.stored(touched[j], ios[j].store);
     m.io_cycles += (r.stream_begin - r.load_begin) + (r.store_end - r.stream_end);
     m.stalls += r.stall_cycles;
+  }
+  if (stopped) {
+    ++m.pass_no;
+    throw RtlStopped();
   }
   ++m.pass_no;
   return stats;
@@ -521,7 +567,9 @@ Framebuffer RtlRop::replay_tile(const Framebuffer& before, int x0, int y0,
     VerilatedContext* ctx;
     ~RestoreContext() { Verilated::threadContextp(ctx); }
   } restore{m.sim.ctx.get()};
-  Sim sim(fst_path, m.opt);
+  RtlOptions quiet = m.opt;
+  quiet.retire_sink = nullptr;  // the run already judged these writes
+  Sim sim(fst_path, quiet);
   sim.dump_from = from;
   sim.dump_to = to;
   // Same cycle numbers as the original run, so the waveform's times match the report.

@@ -5,9 +5,11 @@
 
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "retire_monitor.h"
 #include "rop/backend.h"
 #include "rtl_params.h"
 #include "tile_io.h"
@@ -28,6 +30,9 @@ struct RtlOptions {
   // planes loaded or cleared). Planes, counters and cycles are those of one model whatever the
   // number. A trace needs one waveform: with trace_path set the run uses one model.
   int threads = 1;
+  // The lock-step monitor's sink (retire_monitor.h): every fragment's writes at their cycle and
+  // every stored beat. Not owned; none when null.
+  RetireSink* retire_sink = nullptr;
   // Coverage build only (ZBLEND_RTL_COVERAGE): the model's line and toggle counts are added
   // here when it closes. Not owned; ignored in other builds.
   CoverageTotals* coverage = nullptr;
@@ -45,6 +50,13 @@ struct TileRun {
   uint64_t rtl_cycles = 0;     // the RTL's cnt_cycles_o at the end of the drain
   uint64_t load_beats = 0;     // the RTL's cnt_tile_loads_o and cnt_tile_stores_o
   uint64_t store_beats = 0;
+};
+
+// Thrown by RtlRop::end_pass when the retire sink stopped the run. The tiles that ran are in
+// tile_runs(), their cycles rebased as in a whole pass.
+class RtlStopped : public std::runtime_error {
+ public:
+  RtlStopped() : std::runtime_error("rtl: the run was stopped by its retire sink") {}
 };
 
 class RtlRop final : public Backend {

@@ -66,10 +66,10 @@ class TileSweep {
   BeatWords load(const Framebuffer& fb, int k) const;
   // Beat k's words of `planes` (colour, depth, coverage) into `fb`, lanes within the frame.
   void store(const BeatWords& words, uint8_t planes, Framebuffer& fb, int k) const;
+  // Beat k's lane l in the frame (its index in `fb`'s planes), or -1 beyond its edge.
+  int64_t pixel(const Framebuffer& fb, int k, int l) const;
 
  private:
-  // Beat k's lane l in the frame, or -1 beyond its edge.
-  int64_t pixel(const Framebuffer& fb, int k, int l) const;
   int x0_, y0_, w_, h_;
 };
 

@@ -90,6 +90,16 @@ ZbRtlSc::ZbRtlSc(sc_core::sc_module_name name)
   r.cnt_cycles_o(cnt_cycles_);
   r.cnt_tile_loads_o(cnt_tile_loads_);
   r.cnt_tile_stores_o(cnt_tile_stores_);
+  r.mon_x4_valid_o(mon_x4_valid_);
+  r.mon_x4_addr_o(mon_x4_addr_);
+  r.mon_dwe_o(mon_dwe_);
+  r.mon_wdepth_o(mon_wdepth_);
+  r.mon_vwe_o(mon_vwe_);
+  r.mon_wcov_o(mon_wcov_);
+  r.mon_x11_valid_o(mon_x11_valid_);
+  r.mon_x11_addr_o(mon_x11_addr_);
+  r.mon_cwe_o(mon_cwe_);
+  r.mon_wcolor_o(mon_wcolor_);
   SC_HAS_PROCESS(ZbRtlSc);
   SC_THREAD(run);
 }

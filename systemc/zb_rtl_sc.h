@@ -62,6 +62,10 @@ class ZbRtlSc : public sc_core::sc_module {
   Sig<Bits<kRtlBeat * 32>> tile_wcolor_, tile_rcolor_;
   Sig<Bits<kRtlBeat * kRtlDepthBits>> tile_wdepth_, tile_rdepth_, tile_wpeel_, tile_rpeel_;
   Sig<Bits<kRtlBeat * kCovW>> tile_wcov_, tile_rcov_;
+  // The retire port: bound because SystemC needs every port bound; the lock-step monitor is the
+  // C++ testbench's (tb/).
+  Sig<bool> mon_x4_valid_, mon_dwe_, mon_vwe_, mon_x11_valid_, mon_cwe_;
+  Sig<uint32_t> mon_x4_addr_, mon_wdepth_, mon_wcov_, mon_x11_addr_, mon_wcolor_;
   std::unique_ptr<Vzb_rop_sc> rtl_;
 
   Framebuffer fb_;

@@ -1,6 +1,7 @@
 #include "cosim.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <sstream>
@@ -30,9 +31,15 @@ std::string state_text(const RopState& s) {
   return o.str();
 }
 
+CosimOptions with_sink(CosimOptions o, RetireSink* sink) {
+  if (o.lockstep) o.rtl.retire_sink = sink;
+  return o;
+}
+
 }  // namespace
 
-Cosim::Cosim(CosimOptions options) : opt_(std::move(options)), rtl_(opt_.rtl) {}
+Cosim::Cosim(CosimOptions options)
+    : opt_(with_sink(std::move(options), &scoreboard_)), rtl_(opt_.rtl) {}
 
 void Cosim::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
                         int coverage_samples) {
@@ -48,12 +55,17 @@ void Cosim::begin_pass(const RopState& state) {
   pass_name_ = std::move(next_pass_name_);
   next_pass_name_.clear();
   ++pass_in_frame_;
+  scoreboard_.begin_pass();
   golden_.begin_pass(state);
   rtl_.begin_pass(state);
 }
 
 void Cosim::draw(const Fragment* fragments, size_t count) {
-  golden_.draw(fragments, count);
+  if (opt_.lockstep) {
+    for (size_t i = 0; i < count; ++i) scoreboard_.expect(golden_.process(fragments[i]));
+  } else {
+    golden_.draw(fragments, count);
+  }
   rtl_.draw(fragments, count);
   fragments_ += count;
 }
@@ -66,7 +78,14 @@ std::string Cosim::pass_label() const {
 
 PassStats Cosim::end_pass() {
   const PassStats g = golden_.end_pass();
-  const PassStats r = rtl_.end_pass();
+  scoreboard_.arm(golden_.framebuffer());
+  PassStats r;
+  try {
+    r = rtl_.end_pass();
+  } catch (const RtlStopped&) {
+    ++passes_;
+    report_divergence(*scoreboard_.first());
+  }
   ++passes_;
   compare_frames();
   if (g.fragments_in != r.fragments_in || g.fragments_passed != r.fragments_passed ||
@@ -117,54 +136,22 @@ void Cosim::report_pixel(int x, int y, size_t differing) {
   o << "  before the pass: " << rgba(before_.color_at(x, y)) << " z=" << hex(before_.depth_at(x, y), zd)
     << " cov=" << before_.coverage_at(x, y) << "\n";
   o << "  state: " << state_text(state_) << "\n";
-  const std::vector<Fragment>& frags = rtl_.pass_fragments();
-  const std::vector<uint64_t>& acc = rtl_.accept_cycles();
   uint64_t lo = std::numeric_limits<uint64_t>::max(), hi = 0;
-  size_t touching = 0;
-  std::ostringstream list;
-  for (size_t i = 0; i < frags.size(); ++i) {
-    const Fragment& f = frags[i];
-    if (f.x != x || f.y != y) continue;
-    ++touching;
-    lo = std::min(lo, acc[i]);
-    hi = std::max(hi, acc[i]);
-    if (touching <= 64)
-      list << "    #" << i << " z=" << hex(f.z, zd) << " " << rgba(f.color)
-           << " cov=" << int(f.coverage) << " prim=" << f.prim
-           << " accepted at cycle " << acc[i] << "\n";
-  }
-  o << "  fragments of this pass at (" << x << "," << y << "): " << touching << "\n" << list.str();
-  if (touching > 64) o << "    ... " << (touching - 64) << " more\n";
-
-  // Waveform: replay the pixel's tile with tracing on only around the touching fragments.
-  const int x0 = x / kRtlTileW * kRtlTileW, y0 = y / kRtlTileH * kRtlTileH;
-  const TileRun* run = nullptr;
-  for (const TileRun& t : rtl_.tile_runs())
-    if (t.x0 == x0 && t.y0 == y0) run = &t;
+  o << pixel_history(x, y, lo, hi, 64);
+  const TileRun* run = tile_run(x, y);
   std::string fst;
   if (run && !opt_.mismatch_fst.empty()) {
     uint64_t from, to;
-    if (touching) {
+    if (lo <= hi) {
       from = lo > run->load_begin + opt_.window ? lo - opt_.window : run->load_begin;
       to = std::min(hi + opt_.window, run->store_end);
     } else {  // nothing streamed here: the tile load or store is suspect
       from = run->load_begin;
       to = run->store_end;
     }
-    try {
-      const Framebuffer replayed = rtl_.replay_tile(before_, x0, y0, opt_.mismatch_fst, from, to);
-      fst = opt_.mismatch_fst;
-      const bool same = replayed.color_at(x, y) == rf.color_at(x, y) &&
-                        replayed.depth_at(x, y) == rf.depth_at(x, y) &&
-                        replayed.coverage_at(x, y) == rf.coverage_at(x, y);
-      o << "  waveform: " << fst << " (cycles " << from << ".." << to << " of tile (" << x0 << ","
-        << y0 << "), time = 2*cycle+1 at the rising edge; replay "
-        << (same ? "reproduced the mismatch" : "did NOT reproduce the RTL value") << ")\n";
-    } catch (const std::exception& e) {
-      o << "  waveform: not written: " << e.what() << "\n";
-    }
+    o << waveform(x, y, from, to, fst);
   } else if (!run) {
-    o << "  waveform: the pass did not stream the tile at (" << x0 << "," << y0
+    o << "  waveform: the pass did not stream the tile of (" << x << "," << y
       << "): the pixel changed without a fragment\n";
   }
   throw MismatchError(o.str(), x, y, fst);
@@ -184,6 +171,113 @@ void Cosim::report_counters(const PassStats& r, const PassStats& g) {
   row("color_writes", r.color_writes, g.color_writes);
   o << "  state: " << state_text(state_) << "\n";
   throw MismatchError(o.str(), -1, -1, "");
+}
+
+const TileRun* Cosim::tile_run(int x, int y) const {
+  const int x0 = x / kRtlTileW * kRtlTileW, y0 = y / kRtlTileH * kRtlTileH;
+  for (const TileRun& t : rtl_.tile_runs())
+    if (t.x0 == x0 && t.y0 == y0) return &t;
+  return nullptr;
+}
+
+std::string Cosim::pixel_history(int x, int y, uint64_t& lo, uint64_t& hi, size_t limit,
+                                 size_t last) const {
+  const std::vector<Fragment>& frags = rtl_.pass_fragments();
+  const std::vector<uint64_t>& acc = rtl_.accept_cycles();
+  const bool logged = opt_.lockstep && scoreboard_.rtl().size() == frags.size();
+  const TileRun* run = tile_run(x, y);
+  const int zd = (golden_.framebuffer().depth_bits + 3) / 4;
+  size_t touching = 0, later = 0;
+  std::ostringstream list;
+  for (size_t i = 0; i < frags.size(); ++i) {
+    const Fragment& f = frags[i];
+    if (f.x != x || f.y != y) continue;
+    if (i > last) {
+      ++later;
+      continue;
+    }
+    ++touching;
+    lo = std::min(lo, acc[i]);
+    hi = std::max(hi, acc[i]);
+    if (touching > limit) continue;
+    list << "    #" << i << " z=" << hex(f.z, zd) << " " << rgba(f.color)
+         << " cov=" << int(f.coverage) << " prim=" << f.prim << " accepted at cycle " << acc[i]
+         << "\n";
+    if (!logged) continue;
+    const PixelWrites& g = scoreboard_.expected()[i];
+    const RtlRetired& r = scoreboard_.rtl()[i];
+    list << "      golden: " << describe_writes(RetireStage::kX4, g, kRtlDepthBits) << ", "
+         << describe_writes(RetireStage::kX11, g, kRtlDepthBits) << "\n      rtl:    ";
+    for (int s = 0; s < 2; ++s) {
+      const RetireStage st = s ? RetireStage::kX11 : RetireStage::kX4;
+      list << (s ? "; " : "") << to_string(st);
+      if (r.cycle[s] == RtlRetired::kNever || !run)
+        list << " not retired";
+      else
+        list << " at cycle " << run->load_begin + r.cycle[s] << ": "
+             << describe_writes(st, r.writes[s], kRtlDepthBits);
+    }
+    list << "\n";
+  }
+  std::ostringstream o;
+  o << "  fragments of this pass at (" << x << "," << y << "), oldest first: " << touching
+    << "\n" << list.str();
+  if (touching > limit) o << "    ... " << (touching - limit) << " more\n";
+  if (later) o << "    (" << later << " younger fragments of this pixel not shown)\n";
+  return o.str();
+}
+
+std::string Cosim::waveform(int x, int y, uint64_t from, uint64_t to, std::string& fst) const {
+  const int x0 = x / kRtlTileW * kRtlTileW, y0 = y / kRtlTileH * kRtlTileH;
+  const Framebuffer& rf = rtl_.framebuffer();
+  std::ostringstream o;
+  try {
+    const Framebuffer replayed = rtl_.replay_tile(before_, x0, y0, opt_.mismatch_fst, from, to);
+    fst = opt_.mismatch_fst;
+    const bool same = replayed.color_at(x, y) == rf.color_at(x, y) &&
+                      replayed.depth_at(x, y) == rf.depth_at(x, y) &&
+                      replayed.coverage_at(x, y) == rf.coverage_at(x, y);
+    o << "  waveform: " << fst << " (cycles " << from << ".." << to << " of tile (" << x0 << ","
+      << y0 << "), time = 2*cycle+1 at the rising edge; replay "
+      << (same ? "reproduced the RTL's pixel" : "did NOT reproduce the RTL's pixel") << ")\n";
+  } catch (const std::exception& e) {
+    o << "  waveform: not written: " << e.what() << "\n";
+  }
+  return o.str();
+}
+
+void Cosim::report_divergence(const Divergence& d) {
+  const Retire& r = d.retire;
+  const TileRun* run = tile_run(r.x, r.y);
+  const uint64_t cycle = (run ? run->load_begin : 0) + r.tile_cycle;
+  const int zd = (golden_.framebuffer().depth_bits + 3) / 4;
+  ++mismatches_;
+  std::ostringstream o;
+  o << "LOCKSTEP MISMATCH in " << pass_label() << ": the first wrong write, at cycle " << cycle
+    << " (its edge at time " << 2 * cycle + 1 << ")\n";
+  if (!d.store && r.fragment != Retire::kNoFragment) {
+    const Fragment& f = rtl_.pass_fragments().at(r.fragment);
+    o << "  fragment #" << r.fragment << " (primitive " << f.prim << ") at pixel (" << r.x << ","
+      << r.y << "), accepted at cycle " << rtl_.accept_cycles().at(r.fragment) << "\n";
+  } else {
+    o << "  pixel (" << r.x << "," << r.y << ")\n";
+  }
+  o << "  " << d.what << "\n";
+  o << "  state: " << state_text(state_) << "\n";
+  o << "  before the pass: " << rgba(before_.color_at(r.x, r.y))
+    << " z=" << hex(before_.depth_at(r.x, r.y), zd) << " cov=" << before_.coverage_at(r.x, r.y)
+    << "\n";
+  uint64_t lo = cycle, hi = cycle;
+  // A store divergence follows every retire of the tile: the whole history.
+  const size_t last = !d.store && r.fragment != Retire::kNoFragment ? r.fragment : SIZE_MAX;
+  o << pixel_history(r.x, r.y, lo, hi, 64, last);
+  std::string fst;
+  if (run && !opt_.mismatch_fst.empty()) {
+    const uint64_t from = std::max(run->load_begin, lo > opt_.window ? lo - opt_.window : 0);
+    const uint64_t to = std::min(cycle + opt_.window, run->store_end);
+    o << waveform(r.x, r.y, from, to, fst);
+  }
+  throw MismatchError(o.str(), r.x, r.y, fst);
 }
 
 std::string Cosim::nothing_checked_warning() const {

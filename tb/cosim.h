@@ -1,6 +1,8 @@
-// Co-simulation: the golden model and the RTL in lockstep on the same calls; after every pass
-// and frame operation every colour, depth, coverage and peel bit of the frame is compared, and the pass counters too. The first
-// mismatch stops the run with a report naming both sides and an FST of the cycles around it.
+// Co-simulation: the golden model and the RTL in lock-step on the same calls. Every write the
+// RTL makes is compared at its cycle with the golden model's write for that fragment
+// (scoreboard.h); after every pass and frame operation every colour, depth, coverage and peel
+// bit of the frame is compared too, and the pass counters. The first mismatch stops the run
+// with a report naming both sides and an FST of the cycles around it.
 #pragma once
 
 #include <cstdint>
@@ -11,6 +13,7 @@
 #include "rop/backend.h"
 #include "rop/rop.h"
 #include "rtl_rop.h"
+#include "scoreboard.h"
 
 namespace zb {
 
@@ -18,6 +21,7 @@ struct CosimOptions {
   RtlOptions rtl;
   std::string mismatch_fst = "out/mismatch.fst";  // waveform around the first mismatch
   uint64_t window = 24;                            // cycles before and after the touching fragments
+  bool lockstep = true;  // every write at its cycle (off: the end-of-pass comparison alone)
 };
 
 // Thrown at the first mismatch; what() is the whole multi-line report.
@@ -63,11 +67,20 @@ class Cosim final : public Backend {
 
  private:
   [[noreturn]] void report_pixel(int x, int y, size_t differing);
+  [[noreturn]] void report_divergence(const Divergence& d);
+  const TileRun* tile_run(int x, int y) const;  // the last pass's run of the tile of (x, y)
+  // The pass's fragments at (x, y) up to fragment `last`, oldest first, each with what both
+  // sides wrote; widens [lo, hi] to their accept cycles.
+  std::string pixel_history(int x, int y, uint64_t& lo, uint64_t& hi, size_t limit,
+                            size_t last = SIZE_MAX) const;
+  // Replays the tile of (x, y) with an FST of cycles [from, to]: the report's waveform line.
+  std::string waveform(int x, int y, uint64_t from, uint64_t to, std::string& fst) const;
   // Compares every plane of the two frames; throws MismatchError on the first difference.
   void compare_frames();
   [[noreturn]] void report_counters(const PassStats& rtl, const PassStats& golden);
   std::string pass_label() const;
 
+  Scoreboard scoreboard_;
   CosimOptions opt_;
   GoldenRop golden_;
   RtlRop rtl_;

@@ -22,6 +22,7 @@ CosimOptions cosim_options(const Config& c, uint64_t seed) {
   o.rtl.assertions = c.assertions;
   o.rtl.coverage = c.coverage;
   o.mismatch_fst = c.mismatch_fst;
+  o.lockstep = c.lockstep;
   return o;
 }
 

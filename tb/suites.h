@@ -24,6 +24,7 @@ struct Config {
   std::function<void(double)> progress;  // when set: the share of the suite done, 0 to 1
   std::vector<std::string> plusargs;     // given to every RTL model (RtlOptions::plusargs)
   bool assertions = true;                // the RTL's assertions (RtlOptions::assertions)
+  bool lockstep = true;                  // every write at its cycle (CosimOptions::lockstep)
 };
 
 // What a suite did: its counts, whether it failed, and a line of its own.

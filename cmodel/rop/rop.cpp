@@ -102,10 +102,11 @@ void GoldenRop::frame_op(const FrameOp& op) { apply_frame_op(fb_, op); }
 // Stages as in the RTL: fetch the stored depth, test, fetch the destination colour, blend,
 // mask, write. "If the depth test is disabled ... the depth buffer is not updated" (GL 4.6,
 // 14.9.4): a disabled test passes every fragment and never writes depth.
-void GoldenRop::process(const Fragment& f) {
+PixelWrites GoldenRop::process(const Fragment& f) {
   if (state_.blend == BlendMode::kCoverage) return process_coverage(f);
   const size_t i = fb_.index(f.x, f.y);
   ++stats_.fragments_in;
+  PixelWrites w;
 
   bool pass = true;
   if (state_.depth_test) {
@@ -114,26 +115,29 @@ void GoldenRop::process(const Fragment& f) {
   }
   // Peel test: the second compare, strictly behind the previous layer (z > peel).
   if (state_.peel_test && !(f.z > fb_.peel[i])) pass = false;
-  if (!pass) return;
+  if (!pass) return w;
   ++stats_.fragments_passed;
 
   if (state_.depth_test && state_.depth_write) {
-    fb_.depth[i] = f.z;
+    fb_.depth[i] = w.z = f.z;
+    w.depth = true;
     ++stats_.depth_writes;
   }
-  if (state_.color_mask == 0) return;
+  if (state_.color_mask == 0) return w;
 
   const bool reads_dest = state_.blend != BlendMode::kReplace || state_.color_mask != kMaskRgba;
   if (reads_dest) ++stats_.color_reads;
   const Rgba8 d = fb_.color[i];
-  fb_.color[i] = apply_color_mask(state_.color_mask, blend(state_.blend, f.color, d), d);
+  fb_.color[i] = w.rgba = apply_color_mask(state_.color_mask, blend(state_.blend, f.color, d), d);
+  w.color = true;
   ++stats_.color_writes;
+  return w;
 }
 
 // Coverage mode (datapath.md "Coverage blend"): the depth unit compares three ways instead of
 // testing, so every fragment passes and is composited; depth is written (when depth_test and
 // depth_write) only in the nearer case; coverage always; colour under the write mask.
-void GoldenRop::process_coverage(const Fragment& f) {
+PixelWrites GoldenRop::process_coverage(const Fragment& f) {
   if (f.coverage > fb_.coverage_samples)
     throw std::invalid_argument("golden: fragment coverage " + std::to_string(f.coverage) +
                                 " exceeds the " + std::to_string(fb_.coverage_samples) +
@@ -142,18 +146,23 @@ void GoldenRop::process_coverage(const Fragment& f) {
   ++stats_.fragments_in;
   ++stats_.fragments_passed;
   ++stats_.depth_reads;
+  PixelWrites w;
   const CoveragePixel c = composite_coverage(f.z, f.color, f.coverage, fb_.depth[i],
                                              fb_.color[i], fb_.coverage[i],
                                              fb_.coverage_samples);
   if (state_.depth_test && state_.depth_write && c.depth != fb_.depth[i]) {
-    fb_.depth[i] = c.depth;
+    fb_.depth[i] = w.z = c.depth;
+    w.depth = true;
     ++stats_.depth_writes;
   }
-  fb_.coverage[i] = c.coverage;
-  if (state_.color_mask == 0) return;
+  fb_.coverage[i] = w.cov = c.coverage;
+  w.coverage = true;
+  if (state_.color_mask == 0) return w;
   ++stats_.color_reads;
-  fb_.color[i] = apply_color_mask(state_.color_mask, c.color, fb_.color[i]);
+  fb_.color[i] = w.rgba = apply_color_mask(state_.color_mask, c.color, fb_.color[i]);
+  w.color = true;
   ++stats_.color_writes;
+  return w;
 }
 
 }  // namespace zb

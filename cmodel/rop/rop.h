@@ -49,6 +49,15 @@ CoveragePixel composite_coverage(uint32_t z, Rgba8 p, int k, uint32_t zs, Rgba8 
 // background by coverage (datapath.md "Resolve"). The coverage plane is not needed for display.
 Rgba8 resolve_coverage(Rgba8 stored, int coverage, int n);
 
+// The writes one fragment makes to its pixel: the golden model's write log, which the
+// lock-step scoreboard (tb/scoreboard.h) holds the RTL's retire port to.
+struct PixelWrites {
+  bool depth = false, coverage = false, color = false;
+  uint32_t z = 0;     // the depth written
+  uint8_t cov = 0;    // the coverage count written
+  Rgba8 rgba;         // the colour written, after the write mask
+};
+
 class GoldenRop final : public Backend {
  public:
   const char* name() const override { return "golden"; }
@@ -62,12 +71,12 @@ class GoldenRop final : public Backend {
   void frame_op(const FrameOp& op) override;
   const Framebuffer& framebuffer() const override { return fb_; }
 
-  // One fragment through the datapath. Throws std::invalid_argument when its coverage exceeds
-  // the frame's sample count.
-  void process(const Fragment& f);
+  // One fragment through the datapath; returns what it wrote. Throws std::invalid_argument
+  // when its coverage exceeds the frame's sample count.
+  PixelWrites process(const Fragment& f);
 
  private:
-  void process_coverage(const Fragment& f);
+  PixelWrites process_coverage(const Fragment& f);
 
   Framebuffer fb_;
   RopState state_;

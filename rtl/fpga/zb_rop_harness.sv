@@ -122,7 +122,18 @@ module zb_rop_harness #(
     .cnt_stall_cycles_o(out_d[OCnt + 7 * CNT_W +: CNT_W]),
     .cnt_cycles_o      (out_d[OCnt + 8 * CNT_W +: CNT_W]),
     .cnt_tile_loads_o  (out_d[OCnt + 9 * CNT_W +: CNT_W]),
-    .cnt_tile_stores_o (out_d[OCnt + 10 * CNT_W +: CNT_W])
+    .cnt_tile_stores_o (out_d[OCnt + 10 * CNT_W +: CNT_W]),
+    // The retire port taps registers timed above; a testbench's, not the FPGA's.
+    .mon_x4_valid_o    (),
+    .mon_x4_addr_o     (),
+    .mon_dwe_o         (),
+    .mon_wdepth_o      (),
+    .mon_vwe_o         (),
+    .mon_wcov_o        (),
+    .mon_x11_valid_o   (),
+    .mon_x11_addr_o    (),
+    .mon_cwe_o         (),
+    .mon_wcolor_o      ()
   );
 
   logic [OCnt-1:0]     out_q;

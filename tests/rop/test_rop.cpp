@@ -65,6 +65,43 @@ TEST(Rop, DepthWriteOnlyWhenTestEnabledAndPassed) {
   EXPECT_EQ(st.color_reads, 0u);  // replace with the full mask does not read
 }
 
+// The write log the lock-step scoreboard expects: exactly the planes and values written.
+TEST(Rop, ProcessReportsItsWrites) {
+  zb::GoldenRop rop;
+  rop.begin_frame(1, 1, 16, {9, 8, 7, 6});
+  zb::RopState s;
+  s.color_mask = zb::kMaskR | zb::kMaskB;
+  rop.begin_pass(s);
+  zb::PixelWrites w = rop.process(frag(0, 0, 5, {100, 110, 120, 130}));
+  EXPECT_TRUE(w.depth);
+  EXPECT_EQ(w.z, 5u);
+  EXPECT_FALSE(w.coverage);
+  EXPECT_TRUE(w.color);
+  EXPECT_EQ(w.rgba, (zb::Rgba8{100, 8, 120, 6}));  // after the mask: what the plane holds
+  w = rop.process(frag(0, 0, 7, {1, 1, 1, 1}));    // farther: killed, writes nothing
+  EXPECT_FALSE(w.depth || w.coverage || w.color);
+  s.depth_write = false;
+  s.color_mask = 0;
+  rop.begin_pass(s);
+  w = rop.process(frag(0, 0, 4, {1, 1, 1, 1}));  // passes, writes nothing
+  EXPECT_FALSE(w.depth || w.coverage || w.color);
+  s.blend = zb::BlendMode::kCoverage;
+  s.depth_write = true;
+  s.color_mask = zb::kMaskRgba;
+  rop.begin_pass(s);
+  zb::Fragment f = frag(0, 0, 3, {50, 60, 70, 255});
+  f.coverage = 4;
+  w = rop.process(f);  // nearer: depth, coverage and colour
+  EXPECT_TRUE(w.depth && w.coverage && w.color);
+  EXPECT_EQ(w.z, 3u);
+  EXPECT_EQ(w.cov, rop.framebuffer().coverage_at(0, 0));
+  EXPECT_EQ(w.rgba, rop.framebuffer().color_at(0, 0));
+  f.z = 9;
+  w = rop.process(f);  // farther: coverage and colour, no depth
+  EXPECT_FALSE(w.depth);
+  EXPECT_TRUE(w.coverage && w.color);
+}
+
 TEST(Rop, ColorMaskKeepsMaskedChannels) {
   zb::GoldenRop rop;
   rop.begin_frame(1, 1, 16, {9, 8, 7, 6});
