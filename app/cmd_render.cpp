@@ -61,6 +61,7 @@ struct RenderOptions {
   int64_t seed = 1;
   std::string waves;
   bool assertions = true;
+  bool lockstep = true;
   std::string background;
   int threads = default_threads();  // golden: render_frame's workers; RTL: models side by side
   bool threads_given = false;
@@ -85,6 +86,8 @@ std::vector<OutputPath> outputs(const RenderOptions& o) {
 
 // An option given for a backend the run does not use would do nothing: refused.
 void check_backend_options(const RenderOptions& o) {
+  if (!o.lockstep && o.backend != BackendKind::kBoth)
+    throw UsageError("--no-lockstep: needs --backend both (it turns off the per-write comparison)");
   if (o.backend != BackendKind::kGolden) return;
   for (const std::string& name : o.given)
     throw UsageError(fmt::format("{}: needs --backend rtl or both", name));
@@ -134,6 +137,7 @@ RtlBackend make_rtl_backend(const RenderOptions& o, const PassPlan& plan) {
   }
   CosimOptions cosim;
   cosim.rtl = rtl;
+  cosim.lockstep = o.lockstep;
   const fs::path dir = o.out_dir.empty() ? fs::path(o.out).parent_path() : fs::path(o.out_dir);
   cosim.mismatch_fst = (dir / ("mismatch-" + plan.name + ".fst")).string();
   auto c = std::make_unique<Cosim>(cosim);
@@ -337,8 +341,8 @@ void add_render_command(CLI::App& app) {
                   "Output directory: METHOD.png for each method and summary.csv");
   cmd->add_option("--stats", o->stats, "Statistics as JSON: passes, traffic, error, cycles");
   cmd->add_option("--backend,-b", o->backend_text,
-                  "golden (C++ model), rtl (Verilated RTL) or both (compared bit for bit after "
-                  "every pass)")
+                  "golden (C++ model), rtl (Verilated RTL) or both (compared bit for bit: every "
+                  "write at its cycle, every plane after every pass)")
       ->capture_default_str();
   cmd->add_option("--backpressure", o->backpressure,
                   "RTL: probability per cycle of a stall on the fragment input")
@@ -349,6 +353,9 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("!--no-assertions", o->assertions,
                 "RTL: the model's assertions off (a third faster; the comparison with the golden "
                 "model, --backend both, stays)");
+  cmd->add_flag("!--no-lockstep", o->lockstep,
+                "--backend both: compare the frames after each pass only, not every write at its "
+                "cycle");
   add_background_option(cmd, o->background);
   add_threads_option(cmd, o->threads,
                      "Threads: the golden model's frame bands, the RTL's models running a "

@@ -203,13 +203,19 @@ def cosim(b):
     b.add(f"co-simulation wall time per fragment, cad {METHOD} 640x480: SystemC modules",
           float(row[-1]), "ns", "", cmd)
     stats = os.path.join(b.out, "cosim-stats.json")
-    cmd = [b.exe("zblend"), "render", "--scene", "cad", "-m", METHOD, "--backend", "both",
-           "--no-error", "-q", "--stats", stats, "--out", os.path.join(b.out, "cosim.png")]
-    b.run(cmd)
-    with open(stats) as f:
-        m = json.load(f)["methods"][0]
-    b.add(f"co-simulation wall time per fragment, cad {METHOD} 640x480: plain C++ testbench",
-          m["host_ms"] * 1e6 / m["total"]["fragments_in"], "ns", "", cmd)
+    for lockstep in (True, False):
+        cmd = [b.exe("zblend"), "render", "--scene", "cad", "-m", METHOD, "--backend", "both",
+               "--no-error", "-q", "--threads", "1", "--stats", stats,
+               "--out", os.path.join(b.out, "cosim.png")] + ([] if lockstep else ["--no-lockstep"])
+        ns = []
+        for _ in range(3):
+            b.run(cmd)
+            with open(stats) as f:
+                m = json.load(f)["methods"][0]
+            ns.append(m["host_ms"] * 1e6 / m["total"]["fragments_in"])
+        what = "lock-step (every write) and end of pass" if lockstep else "end of pass only"
+        b.add(f"co-simulation wall time per fragment, cad {METHOD} 640x480: plain C++ testbench, "
+              f"one model, {what}, median of 3", statistics.median(ns), "ns", "", cmd)
 
 
 def host_ms(b, scene, w, h, reps, camera=None):
