@@ -6,7 +6,7 @@ ZBLEND     := $(BUILD)/zblend
 RUN_SIZE   ?= --width 640 --height 480
 
 .DEFAULT_GOAL := build
-.PHONY: help setup build run test test-asan bench bench-verilator profile-rtl synth systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
+.PHONY: help setup build run test test-asan mutate bench bench-verilator profile-rtl synth systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
 
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | awk -F'\t' '{printf "%-16s %s\n", $$1, $$2}'
@@ -60,6 +60,13 @@ SOAK_FRAGMENTS ?= 50000000
 soak: build ## Long RTL regression: 10^8 fragments of random and hazard streams
 	$(BUILD)/zblend_tb --suite random --seed 11 --fragments $(SOAK_FRAGMENTS) --backpressure 0.2
 	$(BUILD)/zblend_tb --suite hazard --seed 12 --fragments $(SOAK_FRAGMENTS)
+
+# The checker's mutation score (docs/mutation.md): every mutant of the netlist against the
+# smoke group, the survivors against the full group, then Yosys on what survives both.
+MUTATE_ARGS ?=
+
+mutate: build ## Mutation score: zb_rop's 1200 Yosys mutants against the smoke and full groups: out/mutate/
+	python3 scripts/mutate.py --build $(BUILD) --out out/mutate -j $(JOBS) $(MUTATE_ARGS)
 
 # Only zblend is built, its log shown only if the build fails; render makes out/waves/.
 waves: setup $(BUILD)/CMakeCache.txt ## Render `cad` on the RTL with a waveform: out/waves/cad.fst

@@ -43,13 +43,23 @@ set(ZBLEND_VERILATOR_OPT -O3 --x-assign fast --x-initial fast CACHE STRING
 set(ZBLEND_VERILATOR_THREADS 1 CACHE STRING "Verilator --threads of the RTL model")
 set(ZBLEND_VERILATOR_OPT_FAST "" CACHE STRING "C++ flags added to the model's hot code")
 
-# zblend_verilate(TARGET PREFIX P DIRECTORY D [SYSTEMC] [BUG] [COVERAGE] [TRACE]): a static
-# library TARGET holding zb_rop Verilated with the widths above. BUG adds the deliberate defects
-# the checkers must catch, each switched on by a plusarg (+zb_bug_blend, +zb_bug_window);
-# SYSTEMC builds it with --sc.
+# zblend_verilate(TARGET PREFIX P DIRECTORY D [SYSTEMC] [BUG] [COVERAGE] [TRACE]
+#                 [MUTANTS NETLIST]): a static library TARGET holding zb_rop Verilated with the
+# widths above. BUG adds the deliberate defects the checkers must catch, each switched on by a
+# plusarg (+zb_bug_blend, +zb_bug_window); SYSTEMC builds it with --sc. MUTANTS builds Yosys's
+# netlist of zb_rop's mutants (mutation/CMakeLists.txt) in its wrapper instead of rtl/: a
+# generated netlist, so no -Wall, and no assertions (Yosys drops them).
 function(zblend_verilate target)
-  cmake_parse_arguments(V "SYSTEMC;BUG;COVERAGE;TRACE" "PREFIX;DIRECTORY" "" ${ARGN})
+  cmake_parse_arguments(V "SYSTEMC;BUG;COVERAGE;TRACE" "PREFIX;DIRECTORY;MUTANTS" "" ${ARGN})
   set(args --assert ${ZBLEND_VERILATOR_OPT} -Wall ${ZBLEND_RTL_PARAMS})
+  set(sources ${PROJECT_SOURCE_DIR}/rtlmodel/zb_rop_public.vlt ${ZBLEND_RTL_WAIVERS} ${ZBLEND_RTL})
+  if(V_MUTANTS)
+    set(args ${ZBLEND_VERILATOR_OPT} -Wno-fatal -Wno-lint -Wno-style -Wno-UNOPTFLAT
+        ${ZBLEND_RTL_PARAMS})
+    set(sources ${PROJECT_SOURCE_DIR}/mutation/zb_rop_mutant.vlt
+        ${PROJECT_SOURCE_DIR}/rtl/zb_pkg.sv ${V_MUTANTS}
+        ${PROJECT_SOURCE_DIR}/mutation/zb_rop_mutant.sv)
+  endif()
   if(V_BUG)
     list(APPEND args +define+ZB_INJECT_BLEND_BUG +define+ZB_INJECT_WINDOW_BUG)
   endif()
@@ -66,7 +76,7 @@ function(zblend_verilate target)
   endif()
   add_library(${target} STATIC)
   verilate(${target} ${kind} ${extra}
-    SOURCES ${PROJECT_SOURCE_DIR}/rtlmodel/zb_rop_public.vlt ${ZBLEND_RTL_WAIVERS} ${ZBLEND_RTL}
+    SOURCES ${sources}
     TOP_MODULE zb_rop PREFIX ${V_PREFIX}
     THREADS ${ZBLEND_VERILATOR_THREADS} OPT_FAST ${ZBLEND_VERILATOR_OPT_FAST}
     DIRECTORY ${V_DIRECTORY}

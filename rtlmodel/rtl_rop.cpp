@@ -24,6 +24,11 @@
 #include "Vzb_rop_bug_zb_rop.h"
 using VModel = Vzb_rop_bug;
 using VParams = Vzb_rop_bug_zb_rop;
+#elif defined(ZB_RTL_MUT)
+#include "Vzb_rop_mut.h"
+#include "Vzb_rop_mut_zb_rop.h"
+using VModel = Vzb_rop_mut;
+using VParams = Vzb_rop_mut_zb_rop;
 #else
 #include "Vzb_rop.h"
 #include "Vzb_rop_zb_rop.h"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages zblend needs, only those missing. Quiet when all are present.
-# Usage: setup.sh [synth|profile]   (synth: also Yosys and nextpnr-ice40, for `make synth`;
-# profile: also perf, for `make profile-rtl`)
+# Usage: setup.sh [synth|profile]   (synth: also nextpnr-ice40 and IceStorm, for `make synth`;
+# profile: also perf, for `make profile-rtl`). Yosys, its yosys-smtbmc and z3 are always in:
+# `make test` runs the CI-sized `make formal`.
 set -euo pipefail
 
 packages=(
@@ -13,9 +14,10 @@ packages=(
   libtinyobjloader-dev libtinygltf-dev assimp-testmodels glmark2-data
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
   python3-matplotlib
+  yosys z3
 )
 if [[ ${1:-} == synth ]]; then
-  packages+=(yosys nextpnr-ice40 fpga-icestorm)
+  packages+=(nextpnr-ice40 fpga-icestorm)
 elif [[ ${1:-} == profile ]]; then
   packages+=(linux-perf)
 elif [[ $# -gt 0 ]]; then

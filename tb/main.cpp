@@ -31,6 +31,7 @@ struct Args {
   bool list = false;
   bool quiet = false;
   std::string defect = "blend";  // zblend_tb_bug: the injected defect
+  int mutant = 0;                // zblend_tb_mut: the live mutant, 0 for none
 };
 
 // Progress on stderr: a line as each suite starts, then one every kEvery with the share done.
@@ -161,6 +162,13 @@ void add_options(CLI::App& app, Config& c, Args& a) {
       ->check(CLI::IsMember({"blend", "window"}))
       ->capture_default_str();
 #endif
+#ifdef ZB_TB_MUT  // zblend_tb_mut: the RTL is Yosys's mutant netlist (docs/mutation.md)
+  app.add_option("--mutant", a.mutant,
+                 "the live mutant, 1 to the netlist's count (build/mutation/mutations.txt, line "
+                 "N); 0 runs the netlist unmutated")
+      ->check(CLI::Range(0, 2047))
+      ->capture_default_str();
+#endif
 #if defined(VM_COVERAGE) && VM_COVERAGE  // only the coverage build (ZBLEND_RTL_COVERAGE)
   app.add_option("--coverage-out", a.coverage_out,
                  "write the RTL line and toggle coverage of the run here at exit "
@@ -178,6 +186,7 @@ void check_args(const CLI::App& app, Config& c, const Args& a) {
   c.iterations = a.iterations;
   c.fragments = static_cast<uint64_t>(a.fragments);
   if (a.defect == "window") c.plusargs.push_back("+zb_bug_window");
+  if (a.mutant) c.plusargs.push_back(fmt::format("+zb_mutant={}", a.mutant));
   // The mismatch waveform's directory is made only if a mismatch writes it.
   app::check_outputs({{"--mismatch-fst", c.mismatch_fst, ".fst"}});
   app::create_output_dirs(
