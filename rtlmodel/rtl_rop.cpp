@@ -298,6 +298,7 @@ struct RtlRop::Impl {
     t.state_i = pack_state(state);
     t.state_we_i = 1;
     t.cnt_clear_i = 1;
+    const uint64_t cleared = s.cycle;  // the counters count from the next cycle on
     t.tile_clear_i = io.clear != 0;
     t.tile_planes_i = io.clear;
     put_beat(clear_beat(io));
@@ -328,6 +329,7 @@ struct RtlRop::Impl {
     // it is accepted at the edge of a cycle with frag_valid_i && frag_ready_o. frag_ready_o
     // also drops while the interlock holds fragments (zb_rop's skid register is full).
     uint64_t refused = 0;  // consecutive offers (valid, no stall_i) not accepted
+    uint64_t waits = 0;    // cycles offered and not accepted: cnt_stall_cycles_o's events
     while (k < n) {
       bool stall = false, valid = true;
       if (thr != 0) {
@@ -344,6 +346,7 @@ struct RtlRop::Impl {
       // frag_ready_o follows stall_i within the cycle, so a changed stall_i needs an eval;
       // without back-pressure only flops move it, and the last edge's eval already shows it.
       if (thr != 0 || k == 0) t.eval();
+      waits += valid && !t.frag_ready_o;
       if (valid && t.frag_ready_o) {
         accept_out[f[k].index] = s.cycle;
         ++k;
@@ -380,6 +383,13 @@ struct RtlRop::Impl {
     run.rtl_cycles = t.cnt_cycles_o;
     if (uint64_t{t.cnt_frag_killed_o} != uint64_t{t.cnt_frag_in_o} - t.cnt_frag_passed_o)
       throw std::runtime_error("rtl: cnt_frag_killed_o != cnt_frag_in_o - cnt_frag_passed_o");
+    // The driver saw every cycle and every refused offer: the counters must say the same.
+    if (run.rtl_cycles != s.cycle - cleared - 1 || run.stall_cycles != waits)
+      throw std::runtime_error(
+          "rtl: tile (" + std::to_string(x0) + "," + std::to_string(y0) + ") counted " +
+          std::to_string(run.rtl_cycles) + " cycles and " + std::to_string(run.stall_cycles) +
+          " stall cycles, the driver clocked " + std::to_string(s.cycle - cleared - 1) +
+          " and saw " + std::to_string(waits) + " offers refused");
 
     if (io.store) {
       t.tile_req_i = 1;
