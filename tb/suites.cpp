@@ -349,6 +349,58 @@ Tally suite_window(const Config& c) {
   return t;
 }
 
+// tiles: the tile planes' fast-clear bookkeeping. Passes from a menu that includes passes
+// writing nothing at all (so a plane is fast-cleared twice with no store between), clears and
+// peel copies between them, on one or two tiles, some passes touching one tile only.
+Tally suite_tiles(const Config& c) {
+  Tally t;
+  const int iters = c.iterations ? c.iterations : 12;
+  Progress progress(c, iters);
+  const uint32_t zmax = depth_max(24);
+  for (int it = 0; it < iters; ++it) {
+    const uint64_t seed = c.seed + it;
+    const bool ok = run_iteration("tiles", c, seed, t, [&](Cosim& cs) {
+      Rng r(seed ^ 0x5eed);
+      const int w = kRtlTileW * (1 + int(r.below(2))) - int(r.below(3));
+      const int h = 1 + int(r.below(uint32_t(std::min(kRtlTileH, 8))));
+      cs.begin_frame(w, h, 24, Rgba8{1, 2, 3, 4});
+      for (int p = 0; p < 8; ++p) {
+        if (r.chance(0.4)) cs.frame_op({FrameOpKind::kClearDepth, {}, r.chance(0.5) ? zmax : r.below(zmax), false});
+        if (r.chance(0.3)) cs.frame_op({FrameOpKind::kClearColor, {pick_channel(r), pick_channel(r), pick_channel(r), pick_alpha(r)}, 0, false});
+        if (r.chance(0.2)) cs.frame_op({FrameOpKind::kCopyDepthToPeel, {}, 0, false});
+        RopState st;
+        const uint32_t kind = r.below(6);
+        static const char* kNames[] = {"write-all", "write-none", "read-blend", "coverage",
+                                       "peel", "write-none-peel"};
+        st.depth_test = kind != 0;
+        st.depth_func = kind == 0 ? DepthFunc::kAlways : DepthFunc(1 + r.below(6));
+        st.depth_write = kind == 0 || kind == 3 || (kind == 4 && r.chance(0.5));
+        st.blend = kind == 0 ? BlendMode::kReplace : kind == 3 ? BlendMode::kCoverage
+                 : kind == 1 || kind == 5 ? BlendMode::kReplace : BlendMode::kAlpha;
+        st.color_mask = kind == 1 || kind == 5 ? 0 : kMaskRgba;
+        st.peel_test = kind >= 4;
+        const int xs = r.chance(0.3) ? std::min(w, kRtlTileW) : w;  // one tile only
+        std::vector<Fragment> f;
+        for (int y = 0; y < h; ++y)
+          for (int x = 0; x < xs; ++x) {
+            Fragment g;
+            g.x = uint16_t(x);
+            g.y = uint16_t(y);
+            g.z = r.chance(0.2) ? (r.chance(0.5) ? 0 : zmax) : r.below(zmax + 1u);
+            g.color = Rgba8{pick_channel(r), pick_channel(r), pick_channel(r), pick_alpha(r)};
+            g.coverage = uint8_t(r.below(kRtlCoverageSamples + 1));
+            g.prim = uint32_t(f.size() / 16);
+            f.push_back(g);
+          }
+        draw_pass(cs, std::string("tiles-") + kNames[kind], st, f);
+      }
+    });
+    if (!ok) break;
+    progress.add();
+  }
+  return t;
+}
+
 namespace {
 
 constexpr int kBlendW = kRtlTileW, kBlendH = kRtlTileH, kBlendPix = kBlendW * kBlendH;
@@ -517,6 +569,9 @@ const std::vector<Suite>& suites() {
       {"window",
        "directed issue-window streams: one pixel filling it, two alternating, rings, gaps",
        suite_window},
+      {"tiles",
+       "fast-clear bookkeeping: passes that write nothing between clears, one or two tiles",
+       suite_tiles},
       {"blend",
        "alpha and additive over all 2^24 (s, a, d), 2^16 (a, d) on A; coverage over all "
        "(k, s, d)",

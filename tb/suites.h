@@ -74,6 +74,7 @@ Tally suite_scenes(const Config& c);  // every built-in scene x every pass plan 
 Tally suite_random(const Config& c);  // constrained-random states and streams
 Tally suite_hazard(const Config& c);  // runs on 1-4 pixels; fragments per clock
 Tally suite_window(const Config& c);  // directed issue-window streams
+Tally suite_tiles(const Config& c);   // fast-clear bookkeeping across passes and tiles
 Tally suite_blend(const Config& c);   // the blend unit, exhaustively, through the pipeline
 
 struct Suite {
