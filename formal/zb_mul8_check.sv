@@ -1,0 +1,38 @@
+// Formal (docs/formal.md, group mul8): zb_mul8 equals k * v for every (k, v), two cycles later.
+// The caller's contract, k3_i = 3k, is made here; nothing else is assumed. Proven by k-induction:
+// the unit is a pipeline without feedback, so two steps determine its state.
+// ZB_FORMAL_DEFECT_MUL8 breaks the contract (k3 = 2k): the proof must fail.
+module zb_mul8_check (
+  input logic       clk_i,
+  input logic [7:0] k_i,
+  input logic [7:0] v_i
+);
+  logic [15:0] t, spec1_q, spec2_q;
+  logic [9:0]  k3;
+  logic [1:0]  filled_q = 2'd0;  // cycles since the start, up to the latency
+
+`ifdef ZB_FORMAL_DEFECT_MUL8
+  assign k3 = {1'b0, k_i, 1'b0};
+`else
+  assign k3 = 10'(3 * k_i);
+`endif
+
+  zb_mul8 dut (
+    .clk_i(clk_i),
+    .k_i  (k_i),
+    .k3_i (k3),
+    .v_i  (v_i),
+    .t_o  (t)
+  );
+
+  // The specification: the product, delayed by the latency.
+  always_ff @(posedge clk_i) begin
+    spec1_q <= 16'(k_i) * 16'(v_i);
+    spec2_q <= spec1_q;
+    if (filled_q != 2'd2) filled_q <= filled_q + 2'd1;
+  end
+
+  always_comb begin
+    if (filled_q == 2'd2) ProductIsKTimesV: assert (t == spec2_q);
+  end
+endmodule
