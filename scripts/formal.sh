@@ -73,6 +73,7 @@ jobs=(
   "blend_c3|induction|4|4|no|zb_blend_check|CHAN=3|smtbmc"
   "skid|induction|2|2|yes|zb_skid_check||sat"
   "stream|bmc|16|24|yes|zb_stream_check|$RopSmall WINDOW=2|sat"
+  "raw|bmc|22|28|yes|zb_raw_check|$RopSmall WINDOW=2|sat"
 )
 
 # The defects: name | job it must fail | how (define NAME: a harness define; force PATH=VALUE:
@@ -83,6 +84,9 @@ defects=(
   "blend_rounding|blend_c0|define ZB_FORMAL_DEFECT_BLEND|BlendIsSpec"
   "skid_drops|skid|force dut.s_valid_d=1'b0|"
   "stream_skid_drops|stream|force dut.u_input.s_valid_d=1'b0|"
+  "raw_depth_forward_off|raw|force dut.u_depth.dfwd_hit_q=1'b0|"
+  "raw_color_bypass_off|raw|force dut.u_color.byp_hit_q=1'b0|"
+  "raw_interlock_off|raw|force dut.u_window.hit_q=6'b0|"
 )
 
 field() { cut -d'|' -f$(( $2 + 1 )) <<<"$1"; }
