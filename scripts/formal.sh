@@ -74,6 +74,7 @@ jobs=(
   "skid|induction|2|2|yes|zb_skid_check||sat"
   "stream|bmc|16|24|yes|zb_stream_check|$RopSmall WINDOW=2|sat"
   "raw|bmc|22|28|yes|zb_raw_check|$RopSmall WINDOW=2|sat"
+  "covers|cover|20|20|yes|zb_paths_cover|$RopSmall WINDOW=2|sat"
 )
 
 # The defects: name | job it must fail | how (define NAME: a harness define; force PATH=VALUE:
@@ -171,14 +172,16 @@ else
 fi
 failures=0
 rows=()
-# Yosys's `sat` on the job's RTLIL model: sat_run LOG VCD ARGS...; prints PASSED, FAILED or
-# TIMEOUT (FAILED: a model was found, i.e. a counterexample or, for -prove of a cover, a trace).
+# Yosys's `sat` on the job's RTLIL model: sat_run LOG VCD ARGS...; prints PASSED, FAILED,
+# TIMEOUT or ERROR (FAILED: a model was found, i.e. a counterexample or, for -prove of a cover
+# wire, its trace).
 sat_run() {
   local log=$1 vcd=$2; shift 2
   local rc=0
   timeout "$timeout_s" yosys -q -l "$log" -p "read_rtlil $model; sat $* -dump_vcd $vcd -show-ports $top" \
     >/dev/null 2>&1 || rc=$?
   if (( rc == 124 )); then echo TIMEOUT
+  elif grep -q '^ERROR' "$log"; then echo ERROR
   elif grep -q 'Induction step proven: SUCCESS' "$log"; then echo PASSED
   elif grep -q 'model found: FAIL' "$log"; then echo FAILED
   elif grep -q 'no model found: SUCCESS' "$log" && ! grep -q -- '-tempinduct' <<<"$*"; then echo PASSED
@@ -203,7 +206,9 @@ for r in "${runs[@]}"; do
     force\ *) lhs=${dhow#force }; force="connect -set ${lhs%%=*} ${lhs#*=};" ;;
   esac
   taps=$(sed -n 's|^ *// formal-tap: *\([A-Za-z0-9_]*\) *\([A-Za-z0-9_.]*\) *$|connect -set \1 \2;|p' "$harness")
-  covers=$(sed -n 's|^ *// formal-cover: *\([A-Za-z0-9_]*\) *$|\1|p' "$harness")
+  # `// formal-cover: <wire> [length]` lines: the wires a cover job must reach (each within
+  # its own length, at most the job's depth).
+  covers=$(sed -n 's|^ *// formal-cover: *\([A-Za-z0-9_]*\) *\([0-9]*\) *$|\1:\2|p' "$harness")
   if [[ $engine == sat ]]; then
     model="$dir/model.il"
     backend="memory_map; opt -keepdc -fast; async2sync; chformal -cover -remove; chformal -assume -early;
@@ -246,8 +251,10 @@ for r in "${runs[@]}"; do
         else status=FAILED; note="$s: $dir/bmc.vcd"; fi ;;
       cover)
         unreached=""
-        for c in $covers; do
-          s=$(sat_run "$dir/cover_$c.log" "$dir/cover_$c.vcd" -seq "$depth" -set-assumes -prove "$c" 0)
+        for cl in $covers; do
+          c=${cl%%:*} len=${cl#*:}
+          [[ -n $len && $len -le $depth ]] || len=$depth
+          s=$(sat_run "$dir/$c.log" "$dir/$c.vcd" -seq "$len" -set-assumes -prove "$c" 0)
           # A model of `c != 0` is the cover's trace.
           [[ $s == FAILED ]] || unreached+="$c "
         done
