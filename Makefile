@@ -6,7 +6,7 @@ ZBLEND     := $(BUILD)/zblend
 RUN_SIZE   ?= --width 640 --height 480
 
 .DEFAULT_GOAL := build
-.PHONY: help setup build run test test-asan mutate bench bench-verilator profile-rtl synth systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
+.PHONY: help setup build run test test-asan mutate bench bench-verilator profile-rtl synth formal systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
 
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | awk -F'\t' '{printf "%-16s %s\n", $$1, $$2}'
@@ -54,6 +54,9 @@ systemc: setup $(BUILD)/CMakeCache.txt ## Golden model and RTL as SystemC module
 synth: ## Yosys and nextpnr-ice40 on the datapath: cells, LUTs, RAMs, FFs, max clock on HX8K: out/synth/
 	@scripts/setup.sh synth
 	@scripts/synth.sh
+
+formal: setup ## Formal proofs, full set (yosys, yosys-smtbmc + z3, yosys sat): out/formal/ (make test runs --ci)
+	@scripts/formal.sh --out out/formal
 
 SOAK_FRAGMENTS ?= 50000000
 
