@@ -75,6 +75,8 @@ jobs=(
   "stream|bmc|16|24|yes|zb_stream_check|$RopSmall WINDOW=2|sat"
   "raw|bmc|22|28|yes|zb_raw_check|$RopSmall WINDOW=2|sat"
   "covers|cover|20|20|yes|zb_paths_cover|$RopSmall WINDOW=2|sat"
+  "stream_w4|bmc|20|20|no|zb_stream_check|$RopSmall WINDOW=4|sat"
+  "raw_w4|bmc|24|24|no|zb_raw_check|$RopSmall WINDOW=4|sat"
 )
 
 # The defects: name | job it must fail | how (define NAME: a harness define; force PATH=VALUE:
@@ -266,8 +268,13 @@ for r in "${runs[@]}"; do
   else
     case $method in
       induction)
+        # A defect run wants a counterexample from reset: the base case one step deeper
+        # (where the assertions first act), and no inductive step.
+        (( defect )) && depth=$((depth + 1))
         s=$(run_smtbmc "$dir/base.log" "$dir/base.vcd" -t "$depth")
-        if [[ $s == PASSED ]]; then
+        if [[ $s == PASSED ]] && (( defect )); then
+          status=bounded
+        elif [[ $s == PASSED ]]; then
           s=$(run_smtbmc "$dir/induction.log" "$dir/induction.vcd" -i -t "$depth")
           if [[ $s == PASSED ]]; then status=proven
           else status=FAILED; note="induction did not close at depth $depth ($s): $dir/induction.vcd"; fi
