@@ -4,7 +4,7 @@
 #   1. yosys: read_verilog -formal -sv -DSYNTHESIS rtl/zb_pkg.sv rtl/*.sv formal/<harness>.sv
 #      (the RTL's concurrent SVA is beyond yosys 0.23's reader: the harnesses restate it); chparam;
 #      hierarchy; flatten; the harness's taps (`// formal-tap: <wire> <path>` lines become
-#      `connect -set`, so a harness reads DUT internals after flattening) and, for a defect run,
+#      `connect -nounset -set`, so a harness reads DUT internals after flattening) and, for a defect run,
 #      a forced signal; proc; prep; memory_nordff; async2sync; chformal -assume -early; opt -full
 #      (z3 4.8.12 spends minutes on some models' transition function without it); setundef
 #      -anyseq; dffunmap; write_smt2 -wires.
@@ -74,7 +74,9 @@ jobs=(
   "skid|induction|2|2|yes|zb_skid_check||sat"
   "stream|bmc|16|24|yes|zb_stream_check|$RopSmall WINDOW=2|sat"
   "raw|bmc|22|28|yes|zb_raw_check|$RopSmall WINDOW=2|sat"
+  "window|induction|4|4|yes|zb_window_check|WINDOW=2|sat"
   "covers|cover|20|20|yes|zb_paths_cover|$RopSmall WINDOW=2|sat"
+  "window_w4|induction|4|4|no|zb_window_check|WINDOW=4|sat"
   "stream_w4|bmc|20|20|no|zb_stream_check|$RopSmall WINDOW=4|sat"
   "raw_w4|bmc|24|24|no|zb_raw_check|$RopSmall WINDOW=4|sat"
 )
@@ -87,6 +89,7 @@ defects=(
   "blend_rounding|blend_c0|define ZB_FORMAL_DEFECT_BLEND|BlendIsSpec"
   "skid_drops|skid|force dut.s_valid_d=1'b0|"
   "stream_skid_drops|stream|force dut.u_input.s_valid_d=1'b0|"
+  "window_hits_lost|window|force dut.hit_q=6'b0|"
   "raw_depth_forward_off|raw|force dut.u_depth.dfwd_hit_q=1'b0|"
   "raw_color_bypass_off|raw|force dut.u_color.byp_hit_q=1'b0|"
   "raw_interlock_off|raw|force dut.u_window.hit_q=6'b0|"
@@ -207,7 +210,7 @@ for r in "${runs[@]}"; do
     define\ *) defines="-D${dhow#define }" ;;
     force\ *) lhs=${dhow#force }; force="connect -set ${lhs%%=*} ${lhs#*=};" ;;
   esac
-  taps=$(sed -n 's|^ *// formal-tap: *\([A-Za-z0-9_]*\) *\([A-Za-z0-9_.]*\) *$|connect -set \1 \2;|p' "$harness")
+  taps=$(sed -n 's|^ *// formal-tap: *\([A-Za-z0-9_]*\) *\([A-Za-z0-9_.]*\) *$|connect -nounset -set \1 \2;|p' "$harness")
   # `// formal-cover: <wire> [length]` lines: the wires a cover job must reach (each within
   # its own length, at most the job's depth).
   covers=$(sed -n 's|^ *// formal-cover: *\([A-Za-z0-9_]*\) *\([0-9]*\) *$|\1:\2|p' "$harness")
@@ -229,10 +232,15 @@ for r in "${runs[@]}"; do
       read_verilog -formal -sv -DSYNTHESIS $defines $rtl $harness;
       chparam $(chparams "$params") $top;
       hierarchy -check -top $top; proc; flatten; rename -top $top;
-      $taps $force
+      $force $taps
       prep -top $top; $backend" >/dev/null 2>&1; then
     status=FAILED
     note="yosys failed: $dir/yosys.log"
+    echo "formal: $job: $note" >&2
+  elif grep -q 'is used but has no driver' "$dir/yosys.log"; then
+    # setundef -anyseq would make such a wire a free input: the model is not the design.
+    status=FAILED
+    note="undriven wires in the model: $dir/yosys.log"
     echo "formal: $job: $note" >&2
   elif dead=$(awk '/cell \$assert /{a=$3} /connect \EN 1.0/{if (a) print a} /end/{a=""}' "$dir/model.il") &&
        [[ -n $dead ]]; then
@@ -242,11 +250,18 @@ for r in "${runs[@]}"; do
   elif [[ $engine == sat ]]; then
     case $method in
       induction)
+        if (( defect )); then
+          # A counterexample from reset: BMC past the induction depth (a few fragments deep).
+          depth=$((depth + 4))
+          s=$(sat_run "$dir/bmc.log" "$dir/bmc.vcd" -seq "$depth" -prove-asserts -set-assumes)
+          [[ $s == PASSED ]] && status=bounded || { status=FAILED; note="$s: $dir/bmc.vcd"; }
+        else
         s=$(sat_run "$dir/induction.log" "$dir/induction.vcd" -tempinduct -prove-asserts -set-assumes -maxsteps "$depth")
         if [[ $s == PASSED ]]; then status=proven
         elif grep -q 'model found: FAIL' "$dir/induction.log" && ! grep -q 'Trying induction' "$dir/induction.log"; then
           status=FAILED; note="base case $s: $dir/induction.vcd"
-        else status=FAILED; note="induction did not close at depth $depth ($s)"; fi ;;
+        else status=FAILED; note="induction did not close at depth $depth ($s)"; fi
+        fi ;;
       bmc)
         s=$(sat_run "$dir/bmc.log" "$dir/bmc.vcd" -seq "$depth" -prove-asserts -set-assumes)
         if [[ $s == PASSED ]]; then status=bounded
