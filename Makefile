@@ -60,9 +60,10 @@ formal: setup ## Formal proofs, full set (yosys, yosys-smtbmc + z3, yosys sat): 
 
 SOAK_FRAGMENTS ?= 50000000
 
-soak: build ## Long RTL regression: 10^8 fragments of random and hazard streams
+soak: build ## Long RTL regression: 10^8 fragments of random and hazard streams, the blend exhaustively
 	$(BUILD)/zblend_tb --suite random --seed 11 --fragments $(SOAK_FRAGMENTS) --backpressure 0.2
 	$(BUILD)/zblend_tb --suite hazard --seed 12 --fragments $(SOAK_FRAGMENTS)
+	$(BUILD)/zblend_tb --suite blend
 
 # The checker's mutation score (docs/mutation.md): every mutant of the netlist against the
 # smoke group, the survivors against the full group, then Yosys on what survives both.
