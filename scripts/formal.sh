@@ -72,13 +72,13 @@ jobs=(
   "blend_c2|induction|4|4|no|zb_blend_check|CHAN=2|smtbmc"
   "blend_c3|induction|4|4|no|zb_blend_check|CHAN=3|smtbmc"
   "skid|induction|2|2|yes|zb_skid_check||sat"
-  "stream|bmc|16|24|yes|zb_stream_check|$RopSmall WINDOW=2|sat"
-  "raw|bmc|22|28|yes|zb_raw_check|$RopSmall WINDOW=2|sat"
+  "stream|bmc|16|20|yes|zb_stream_check|$RopSmall WINDOW=2|sat"
+  "raw|bmc|22|26|yes|zb_raw_check|$RopSmall WINDOW=2|sat"
   "window|induction|4|4|yes|zb_window_check|WINDOW=2|sat"
   "covers|cover|20|20|yes|zb_paths_cover|$RopSmall WINDOW=2|sat"
   "window_w4|induction|4|4|no|zb_window_check|WINDOW=4|sat"
-  "stream_w4|bmc|20|20|no|zb_stream_check|$RopSmall WINDOW=4|sat"
-  "raw_w4|bmc|24|24|no|zb_raw_check|$RopSmall WINDOW=4|sat"
+  "stream_w4|bmc|16|16|no|zb_stream_check|$RopSmall WINDOW=4|sat"
+  "raw_w4|bmc|18|18|no|zb_raw_check|$RopSmall WINDOW=4|sat"
 )
 
 # The defects: name | job it must fail | how (define NAME: a harness define; force PATH=VALUE:
