@@ -17,7 +17,6 @@
 #endif
 
 #include "parallel/parallel.h"
-#include "rtl_timing.h"
 #include "tile_bins.h"
 
 #ifdef ZB_RTL_BUG
@@ -122,8 +121,6 @@ struct Sim {
   CoverageTotals* coverage = nullptr;
   std::unique_ptr<RetireMonitor> monitor;   // with RtlOptions::retire_sink
   std::vector<uint32_t> tile_addr, tile_index;  // the monitor's view of the tile's stream
-  IssueSchedule schedule{kRtlWindow, size_t(kRtlTileW) * kRtlTileH};  // the cycles' check
-  std::vector<uint32_t> pixels;                 // its view of the tile's stream
   uint64_t cycle = 0;
   uint64_t dump_from = 0, dump_to = std::numeric_limits<uint64_t>::max();
 
@@ -374,20 +371,6 @@ struct RtlRop::Impl {
       watch();
     }
     run.stream_end = s.cycle;
-    // Without back-pressure the stream's cycles are the issue schedule's, exactly (a slower
-    // or faster RTL is a defect too: the cost model says what it must take).
-    if (thr == 0 && n > 0) {
-      s.pixels.resize(n);
-      for (size_t j = 0; j < n; ++j)
-        s.pixels[j] = uint32_t(f[j].y - y0) * kRtlTileW + uint32_t(f[j].x - x0);
-      const uint64_t want = s.schedule.run(s.pixels.data(), n);
-      if (run.stream_end - run.stream_begin != want)
-        throw std::runtime_error("rtl: tile (" + std::to_string(x0) + "," + std::to_string(y0) +
-                                 ") streamed " + std::to_string(n) + " fragments in " +
-                                 std::to_string(run.stream_end - run.stream_begin) +
-                                 " cycles, the issue schedule (rtl_timing.h) says " +
-                                 std::to_string(want));
-    }
     if (s.monitor) go = s.monitor->end_tile(s.cycle - run.load_begin) && go;
     stats.fragments_in += t.cnt_frag_in_o;
     stats.fragments_passed += t.cnt_frag_passed_o;
