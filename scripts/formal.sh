@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # zblend formal proofs (make formal; docs/formal.md): the flow SymbiYosys would generate, written
 # out for Debian's yosys 0.23, yosys-smtbmc and z3. Per job:
-#   1. yosys: read_verilog -formal -sv -DSYNTHESIS rtl/zb_pkg.sv rtl/*.sv formal/<harness>.sv
+#   1. yosys: read_verilog -formal -sv -DSYNTHESIS -Iformal rtl/zb_pkg.sv rtl/*.sv formal/<harness>.sv
 #      (the RTL's concurrent SVA is beyond yosys 0.23's reader: the harnesses restate it); chparam;
 #      hierarchy; flatten; the harness's taps (`// formal-tap: <wire> <path>` lines become
 #      `connect -nounset -set`, so a harness reads DUT internals after flattening) and, for a defect run,
@@ -229,7 +229,7 @@ for r in "${runs[@]}"; do
   start=$SECONDS
   note=""
   if ! yosys -q -l "$dir/yosys.log" -p "
-      read_verilog -formal -sv -DSYNTHESIS $defines $rtl $harness;
+      read_verilog -formal -sv -DSYNTHESIS -Iformal $defines $rtl $harness;
       chparam $(chparams "$params") $top;
       hierarchy -check -top $top; proc; flatten; rename -top $top;
       $force $taps
