@@ -29,8 +29,7 @@ void RetireMonitor::begin_tile(int x0, int y0, const uint32_t* addr, const uint3
   }
 }
 
-bool RetireMonitor::take(RetireStage stage, uint32_t addr, uint64_t cycle, size_t accepted,
-                         const PixelWrites& w) {
+Retire RetireMonitor::at(RetireStage stage, uint32_t addr, uint64_t cycle) const {
   Retire r;
   r.stage = stage;
   r.x = x0_ + int(addr % kRtlTileW);
@@ -38,6 +37,12 @@ bool RetireMonitor::take(RetireStage stage, uint32_t addr, uint64_t cycle, size_
   r.tile_x0 = x0_;
   r.tile_y0 = y0_;
   r.tile_cycle = cycle;
+  return r;
+}
+
+bool RetireMonitor::take(RetireStage stage, uint32_t addr, uint64_t cycle, size_t accepted,
+                         const PixelWrites& w) {
+  Retire r = at(stage, addr, cycle);
   r.writes = w;
   uint32_t& head = head_[stage == RetireStage::kX11][addr];
   if (head == kNone || head >= accepted) {
@@ -49,23 +54,18 @@ bool RetireMonitor::take(RetireStage stage, uint32_t addr, uint64_t cycle, size_
   return sink_.retire(r);
 }
 
+// A stage's writes with no fragment in it (valid low) are extra: `accepted` 0 finds none.
 bool RetireMonitor::observe(const RetirePort& p, uint64_t tile_cycle, size_t accepted) {
   if (!go_) return false;
   constexpr uint32_t mask = uint32_t(kRtlTileW) * kRtlTileH - 1;
-  if (p.x4_valid) {
+  if (p.x4_valid || p.dwe || p.vwe) {
     PixelWrites w;
     w.depth = p.dwe;
     w.z = p.dwe ? p.wdepth : 0;
     w.coverage = p.vwe;
     w.cov = p.vwe ? uint8_t(p.wcov) : 0;
-    go_ = take(RetireStage::kX4, p.x4_addr & mask, tile_cycle, accepted, w) && go_;
-  } else if (p.dwe || p.vwe) {  // a write with no fragment in X4
-    PixelWrites w;
-    w.depth = p.dwe;
-    w.z = p.wdepth;
-    w.coverage = p.vwe;
-    w.cov = uint8_t(p.wcov);
-    go_ = take(RetireStage::kX4, p.x4_addr & mask, tile_cycle, 0, w) && go_;
+    go_ = take(RetireStage::kX4, p.x4_addr & mask, tile_cycle, p.x4_valid ? accepted : 0, w) &&
+          go_;
   }
   if (p.x11_valid || p.cwe) {
     PixelWrites w;
@@ -83,15 +83,9 @@ bool RetireMonitor::end_tile(uint64_t tile_cycle) {
     for (size_t k = 0; k < n_ && go_; ++k) {
       const uint32_t a = addr_[k];
       if (head_[s][a] != k) continue;
-      Retire r;
+      Retire r = at(s ? RetireStage::kX11 : RetireStage::kX4, a, tile_cycle);
       r.kind = Retire::Kind::kMissing;
-      r.stage = s ? RetireStage::kX11 : RetireStage::kX4;
       r.fragment = index_[k];
-      r.x = x0_ + int(a % kRtlTileW);
-      r.y = y0_ + int(a / kRtlTileW);
-      r.tile_x0 = x0_;
-      r.tile_y0 = y0_;
-      r.tile_cycle = tile_cycle;
       go_ = sink_.retire(r);
     }
   }

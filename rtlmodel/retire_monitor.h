@@ -76,6 +76,7 @@ class RetireMonitor {
 
  private:
   static constexpr uint32_t kNone = ~0u;
+  Retire at(RetireStage stage, uint32_t addr, uint64_t cycle) const;  // pixel, tile, cycle
   bool take(RetireStage stage, uint32_t addr, uint64_t cycle, size_t accepted,
             const PixelWrites& w);
 

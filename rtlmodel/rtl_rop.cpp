@@ -542,11 +542,8 @@ PassStats RtlRop::end_pass() {
     m.io_cycles += (r.stream_begin - r.load_begin) + (r.store_end - r.stream_end);
     m.stalls += r.stall_cycles;
   }
-  if (stopped) {
-    ++m.pass_no;
-    throw RtlStopped();
-  }
   ++m.pass_no;
+  if (stopped) throw RtlStopped();
   return stats;
 }
 

@@ -141,15 +141,7 @@ void Cosim::report_pixel(int x, int y, size_t differing) {
   const TileRun* run = tile_run(x, y);
   std::string fst;
   if (run && !opt_.mismatch_fst.empty()) {
-    uint64_t from, to;
-    if (lo <= hi) {
-      from = lo > run->load_begin + opt_.window ? lo - opt_.window : run->load_begin;
-      to = std::min(hi + opt_.window, run->store_end);
-    } else {  // nothing streamed here: the tile load or store is suspect
-      from = run->load_begin;
-      to = run->store_end;
-    }
-    o << waveform(x, y, from, to, fst);
+    o << waveform(x, y, *run, lo, hi, fst);
   } else if (!run) {
     o << "  waveform: the pass did not stream the tile of (" << x << "," << y
       << "): the pixel changed without a fragment\n";
@@ -227,8 +219,14 @@ std::string Cosim::pixel_history(int x, int y, uint64_t& lo, uint64_t& hi, size_
   return o.str();
 }
 
-std::string Cosim::waveform(int x, int y, uint64_t from, uint64_t to, std::string& fst) const {
-  const int x0 = x / kRtlTileW * kRtlTileW, y0 = y / kRtlTileH * kRtlTileH;
+std::string Cosim::waveform(int x, int y, const TileRun& run, uint64_t lo, uint64_t hi,
+                            std::string& fst) const {
+  uint64_t from = run.load_begin, to = run.store_end;  // nothing streamed: the whole tile
+  if (lo <= hi) {
+    from = std::max(run.load_begin, lo > opt_.window ? lo - opt_.window : 0);
+    to = std::min(hi + opt_.window, run.store_end);
+  }
+  const int x0 = run.x0, y0 = run.y0;
   const Framebuffer& rf = rtl_.framebuffer();
   std::ostringstream o;
   try {
@@ -272,11 +270,7 @@ void Cosim::report_divergence(const Divergence& d) {
   const size_t last = !d.store && r.fragment != Retire::kNoFragment ? r.fragment : SIZE_MAX;
   o << pixel_history(r.x, r.y, lo, hi, 64, last);
   std::string fst;
-  if (run && !opt_.mismatch_fst.empty()) {
-    const uint64_t from = std::max(run->load_begin, lo > opt_.window ? lo - opt_.window : 0);
-    const uint64_t to = std::min(cycle + opt_.window, run->store_end);
-    o << waveform(r.x, r.y, from, to, fst);
-  }
+  if (run && !opt_.mismatch_fst.empty()) o << waveform(r.x, r.y, *run, lo, hi, fst);
   throw MismatchError(o.str(), r.x, r.y, fst);
 }
 

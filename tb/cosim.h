@@ -73,8 +73,10 @@ class Cosim final : public Backend {
   // sides wrote; widens [lo, hi] to their accept cycles.
   std::string pixel_history(int x, int y, uint64_t& lo, uint64_t& hi, size_t limit,
                             size_t last = SIZE_MAX) const;
-  // Replays the tile of (x, y) with an FST of cycles [from, to]: the report's waveform line.
-  std::string waveform(int x, int y, uint64_t from, uint64_t to, std::string& fst) const;
+  // Replays `run`'s tile with an FST of the cycles [lo, hi] and opt_.window around them (the
+  // whole tile when lo > hi): the report's waveform line; `fst` names the file written.
+  std::string waveform(int x, int y, const TileRun& run, uint64_t lo, uint64_t hi,
+                       std::string& fst) const;
   // Compares every plane of the two frames; throws MismatchError on the first difference.
   void compare_frames();
   [[noreturn]] void report_counters(const PassStats& rtl, const PassStats& golden);
