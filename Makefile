@@ -69,7 +69,7 @@ soak: build ## Long RTL regression: 10^8 fragments of random and hazard streams,
 # smoke group, the survivors against the full group, then Yosys on what survives both.
 MUTATE_ARGS ?=
 
-mutate: build ## Mutation score: zb_rop's 1200 Yosys mutants against the smoke and full groups: out/mutate/
+mutate: build ## Mutation score: zb_rop's 1200 Yosys mutants, smoke group, equivalence proofs, full group: out/mutate/
 	python3 scripts/mutate.py --build $(BUILD) --out out/mutate -j $(JOBS) $(MUTATE_ARGS)
 
 # Only zblend is built, its log shown only if the build fails; render makes out/waves/.

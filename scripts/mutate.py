@@ -2,19 +2,22 @@
 """The checker's mutation score (make mutate, docs/mutation.md).
 
 Usage: mutate.py [--build DIR] [--out DIR] [-j N] [--sample N | --mutants LIST]
-                 [--group smoke|quick] [--no-full] [--min-smoke PCT] [--min-full PCT]
+                 [--group smoke|quick] [--no-equiv] [--no-full] [--resume]
+                 [--min-smoke PCT] [--min-full PCT]
 
 Runs zblend_tb_mut (zb_rop as Yosys's mutant netlist, build/mutation/) against the golden model:
   1. mutant 0 (the netlist unmutated) passes every test of both groups, or the run stops: a
      netlist that is not zb_rop scores nothing; its times set each test's time limit;
   2. each mutant runs the smoke group (tb/regressions.json: what make test runs) in order, and
      is killed at the first test that fails: a mismatch, an error, a crash or the time limit;
-  3. each smoke survivor runs the full group (smoke's tests, then full's).
-Score = killed / mutants, for smoke and for full: survivors are not yet sorted into equivalent
-mutants and gaps in the checker (docs/mutation.md). Writes OUT/mutants.csv
+  3. each smoke survivor goes to Yosys's equivalence flow (scripts/mutant_equiv.sh): one proven
+     equivalent to zb_rop can be killed by no test and leaves the score;
+  4. each survivor not proven equivalent runs the full group (smoke's tests, then full's).
+Score = killed / (mutants - proven equivalent), for smoke and for full. Writes OUT/mutants.csv
 (one row per mutant: its description, verdict, the test that killed it, the first report line),
-OUT/summary.json and OUT/report.md, with progress on stderr. Exit 1 when a score is below its
-minimum or mutant 0 fails; 2 on bad usage.
+OUT/summary.json and OUT/report.md, with progress on stderr. Each verdict is also appended to
+OUT/journal.jsonl as it comes, so --resume carries an interrupted run on. Exit 1 when a score
+is below its minimum or mutant 0 fails; 2 on bad usage.
 """
 import argparse
 import concurrent.futures
@@ -95,7 +98,7 @@ class Progress:
         self.what, self.n, self.done, self.t0 = what, n, 0, time.monotonic()
         self.last = 0.0
 
-    def step(self, killed):
+    def step(self, settled, what="killed"):
         self.done += 1
         now = time.monotonic()
         if now - self.last < 5 and self.done != self.n:
@@ -103,7 +106,7 @@ class Progress:
         self.last = now
         el = now - self.t0
         eta = el / self.done * (self.n - self.done)
-        print(f"mutate: {self.what}: {self.done}/{self.n} mutants, {killed} killed, "
+        print(f"mutate: {self.what}: {self.done}/{self.n} mutants, {settled} {what}, "
               f"{el:.0f} s, about {eta:.0f} s left", file=sys.stderr, flush=True)
 
 
@@ -118,10 +121,18 @@ def main():
                     help="the first group (default smoke: what make test runs; quick: its "
                     "fast part, for the CI-sized sample)")
     ap.add_argument("--no-full", action="store_true", help="the first group only")
+    ap.add_argument("--no-equiv", action="store_true",
+                    help="skip the equivalence proofs of the first group's survivors "
+                    "(scripts/mutant_equiv.sh); they then count as survivors")
+    ap.add_argument("--equiv-limit", type=int, default=900,
+                    help="seconds per equivalence proof (default 900)")
     ap.add_argument("--time-limit", type=float, default=0,
                     help="seconds: mutants not started by then are left out and the scores "
                     "cover those run (default: no limit); mutants run in an order spread over "
                     "the netlist")
+    ap.add_argument("--resume", action="store_true",
+                    help="keep the verdicts in OUT/journal.jsonl from an interrupted run with "
+                    "the same netlist and run only the rest")
     ap.add_argument("--min-smoke", type=float, default=0.0,
                     help="exit 1 below this smoke score, percent (default 0)")
     ap.add_argument("--min-full", type=float, default=0.0,
@@ -152,10 +163,19 @@ def main():
     smoke, full = load_groups(a.group)
     os.makedirs(a.out, exist_ok=True)
 
+    journal_path = os.path.join(a.out, "journal.jsonl")
+    done, limits = load_journal(journal_path, descriptions) if a.resume else ({}, {})
+    journal = open(journal_path, "a" if a.resume else "w")
+
+    def record(entry):
+        journal.write(json.dumps(entry) + "\n")
+        journal.flush()
+
     # 1. The unmutated netlist passes everything; its times set the limits.
     runner = Runner(tb, {})
-    limits = {}
     for t in (smoke if a.no_full else full):
+        if t["name"] in limits:
+            continue
         ok, sec, line = runner.run_test(0, t, limit=3600)
         print(f"mutate: mutant 0 (none): {t['name']}: {'pass' if ok else 'FAIL'} {sec:.1f} s",
               file=sys.stderr, flush=True)
@@ -164,45 +184,77 @@ def main():
                   file=sys.stderr)
             return 1
         limits[t["name"]] = max(20.0, 5 * sec)
+        record({"limit": t["name"], "seconds": limits[t["name"]]})
     runner.limits = limits
 
-    rows = {m: {"mutant": m, "description": descriptions[m - 1], "smoke": "", "full": "",
-                "killed_by": "", "report": "", "seconds": 0.0}
+    rows = {m: {"mutant": m, "description": descriptions[m - 1], "smoke": "", "equiv": "",
+                "full": "", "killed_by": "", "report": "", "seconds": 0.0}
             for m in chosen}
 
     deadline = time.monotonic() + a.time_limit if a.time_limit > 0 else None
+    design = os.path.join(a.build, "mutation", "design.il")
 
-    def run_before_deadline(m, tests):
-        if deadline is not None and time.monotonic() > deadline:
-            return None
-        return runner.run_group(m, tests)
+    def run_tests(m, tests):
+        by, sec, line = runner.run_group(m, tests)
+        return ("killed" if by else "survived"), by, sec, line
 
-    def stage(name, tests, mutants, column):
-        prog = Progress(name, len(mutants))
-        killed = 0
+    def prove(m, _):
+        t0 = time.monotonic()
+        p = subprocess.run([os.path.join(ROOT, "scripts", "mutant_equiv.sh"), "--time-limit",
+                            str(a.equiv_limit), design, str(m)],
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        verdict = {0: "equivalent", 1: "not proven"}.get(p.returncode, "no proof")
+        last = (p.stdout.strip().splitlines() or [""])[-1]
+        return verdict, "", time.monotonic() - t0, last
+
+    def stage(name, work, tests, mutants, column):
+        """Runs work on each mutant (journal verdicts kept); sets rows[m][column]."""
+        def apply(m, verdict, by, sec, line):
+            r = rows[m]
+            r["seconds"] += sec
+            r[column] = verdict
+            if by:
+                r["killed_by"] = by
+            if line and (by or column == "equiv"):
+                r["report"] = line if by else f"equivalence: {line}"
+        for m in mutants:  # verdicts kept from the journal (--resume)
+            if (m, column) in done:
+                e = done[m, column]
+                apply(m, e["verdict"], e["killed_by"], e["seconds"], e["report"])
+        todo = [m for m in mutants if (m, column) not in done]
+        if len(todo) < len(mutants):
+            print(f"mutate: {name}: {len(mutants) - len(todo)} verdicts kept from "
+                  f"{journal_path}", file=sys.stderr)
+        prog = Progress(name, len(todo))
+        settled = 0
+
+        def before_deadline(m):
+            if deadline is not None and time.monotonic() > deadline:
+                return None
+            return work(m, tests)
         with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
-            futs = {pool.submit(run_before_deadline, m, tests): m for m in mutants}
+            futs = {pool.submit(before_deadline, m): m for m in todo}
             for fut in concurrent.futures.as_completed(futs):
                 m = futs[fut]
                 if fut.result() is None:  # past --time-limit
                     rows[m][column] = "not run"
                     continue
-                by, sec, line = fut.result()
-                r = rows[m]
-                r["seconds"] += sec
-                r[column] = "killed" if by else "survived"
-                if by:
-                    killed += 1
-                    r["killed_by"], r["report"] = by, line
-                prog.step(killed)
-        return [m for m in mutants if rows[m][column] == "survived"]
+                verdict, by, sec, line = fut.result()
+                record({"mutant": m, "stage": column, "verdict": verdict, "killed_by": by,
+                        "seconds": sec, "report": line, "description": descriptions[m - 1]})
+                apply(m, verdict, by, sec, line)
+                settled += verdict in ("killed", "equivalent")
+                prog.step(settled, "killed" if column != "equiv" else "proven equivalent")
+        return [m for m in mutants if rows[m][column] in ("survived", "not proven", "no proof")]
 
     t0 = time.monotonic()
     # A spread order, so that a time limit leaves out mutants from all over the netlist.
     order = sorted(chosen, key=lambda m: ((m - 1) * 7919) % count)
-    survivors = stage(a.group, smoke, order, "smoke")
+    survivors = stage(a.group, run_tests, smoke, order, "smoke")
+    if not a.no_equiv and survivors:
+        survivors = stage("equivalence", prove, None, survivors, "equiv")
     if not a.no_full and survivors:
-        survivors = stage("full", full[len(smoke):], survivors, "full")
+        survivors = stage("full", run_tests, full[len(smoke):], survivors, "full")
     for m in chosen:
         if not a.no_full and rows[m]["smoke"] == "killed":
             rows[m]["full"] = "killed"
@@ -213,9 +265,11 @@ def main():
     n = len(chosen)
     smoke_killed = sum(1 for r in rows.values() if r["smoke"] == "killed")
     full_killed = sum(1 for r in rows.values() if r["full"] == "killed")
-    denom = max(1, n)
+    equivalent = sum(1 for r in rows.values() if r["equiv"] == "equivalent")
+    denom = max(1, n - equivalent)  # the score is over the mutants not proven equivalent
     summary = {
         "mutants": n, "netlist_mutants": count, "left_out_by_time_limit": asked - n,
+        "proven_equivalent": equivalent, "equivalence_checked": not a.no_equiv,
         "smoke_killed": smoke_killed, "smoke_score": round(100 * smoke_killed / denom, 2),
         "seconds": round(time.monotonic() - t0, 1), "jobs": a.jobs,
         "group": a.group, "smoke_tests": [t["name"] for t in smoke],
@@ -235,8 +289,8 @@ def main():
         json.dump(summary, f, indent=2)
     write_report(os.path.join(a.out, "report.md"), summary, rows, chosen)
 
-    line = (f"mutate: {n} mutants; {a.group} killed {smoke_killed} "
-            f"({summary['smoke_score']} %)")
+    line = (f"mutate: {n} mutants, {equivalent} proven equivalent; {a.group} killed "
+            f"{smoke_killed} ({summary['smoke_score']} % of the rest)")
     if not a.no_full:
         line += f"; full killed {full_killed} ({summary['full_score']} %)"
     print(line + f"; {summary['seconds']} s; {a.out}/report.md")
@@ -248,6 +302,29 @@ def main():
     return 1 if low else 0
 
 
+def load_journal(path, descriptions):
+    """{(mutant, stage): journal entry} and {test: time limit} from a journal."""
+    done, limits = {}, {}
+    if not os.path.exists(path):
+        usage_error(f"--resume: {path} is missing (run without --resume first)")
+    with open(path) as f:
+        for n, ln in enumerate(f, 1):
+            try:
+                e = json.loads(ln)
+            except json.JSONDecodeError:
+                continue  # a line cut by the interruption
+            if "limit" in e:
+                limits[e["limit"]] = e["seconds"]
+                continue
+            m = e["mutant"]
+            if not 1 <= m <= len(descriptions) or descriptions[m - 1] != e["description"]:
+                usage_error(f"--resume: {path}:{n}: mutant {m} is not the netlist's "
+                            "(the netlist was rebuilt): run without --resume")
+            e.setdefault("verdict", "killed" if e["killed_by"] else "survived")
+            done[m, e["stage"]] = e
+    return done, limits
+
+
 def write_report(path, s, rows, chosen):
     by_test = {}
     for r in rows.values():
@@ -255,19 +332,23 @@ def write_report(path, s, rows, chosen):
             by_test[r["killed_by"]] = by_test.get(r["killed_by"], 0) + 1
     lines = ["# Mutation score", "",
              f"{s['mutants']} mutants of zb_rop (of the netlist's {s['netlist_mutants']}; "
-             f"{s['left_out_by_time_limit']} left out by --time-limit).", "",
+             f"{s['left_out_by_time_limit']} left out by --time-limit); "
+             f"{s['proven_equivalent']} proven equivalent, out of the score.", "",
              "| group | killed | score |", "|---|---|---|",
              f"| {s['group']} | {s['smoke_killed']} | {s['smoke_score']} % |"]
     if "full_score" in s:
         lines.append(f"| full | {s['full_killed']} | {s['full_score']} % |")
     lines += ["", "Kills by the test that made them first:", ""]
     lines += [f"- {t}: {k}" for t, k in sorted(by_test.items(), key=lambda x: -x[1])]
-    survivors = [rows[m] for m in chosen if not rows[m]["killed_by"]]
-    lines += ["", f"## Survivors ({len(survivors)})", ""]
-    lines += [f"- mutant {r['mutant']}: `{r['description']}`" for r in survivors]
+    for title, pick in (("Proven equivalent", lambda r: r["equiv"] == "equivalent"),
+                        ("Survivors", lambda r: not r["killed_by"] and r["equiv"] != "equivalent")):
+        some = [rows[m] for m in chosen if pick(rows[m])]
+        lines += ["", f"## {title} ({len(some)})", ""]
+        lines += [f"- mutant {r['mutant']}: `{r['description']}`"
+                  + (f" ({r['report']})" if r["report"] and title == "Survivors" else "")
+                  for r in some]
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
-
 
 if __name__ == "__main__":
     sys.exit(main())
