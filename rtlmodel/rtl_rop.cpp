@@ -16,7 +16,10 @@
 #include "code_coverage.h"
 #endif
 
+#include <fmt/core.h>
+
 #include "parallel/parallel.h"
+#include "rtl_timing.h"
 #include "tile_bins.h"
 
 #ifdef ZB_RTL_BUG
@@ -121,6 +124,8 @@ struct Sim {
   CoverageTotals* coverage = nullptr;
   std::unique_ptr<RetireMonitor> monitor;   // with RtlOptions::retire_sink
   std::vector<uint32_t> tile_addr, tile_index;  // the monitor's view of the tile's stream
+  IssueSchedule schedule{kRtlWindow, size_t(kRtlTileW) * kRtlTileH};  // the cycles' check
+  std::vector<uint32_t> pixels;                 // its view of the tile's stream
   uint64_t cycle = 0;
   uint64_t dump_from = 0, dump_to = std::numeric_limits<uint64_t>::max();
 
@@ -254,6 +259,7 @@ struct RtlRop::Impl {
     VModel& t = *s.top;
     const TileSweep sweep(src.width, src.height, x0, y0);
     constexpr unsigned cw = 32, dw = kRtlDepthBits, vw = coverage_bits(kRtlCoverageSamples);
+    constexpr unsigned kLaneBits[kTilePlanes] = {cw, dw, vw, dw};
     auto put_beat = [&t](const BeatWords& w) {
       for (unsigned l = 0; l < unsigned(kRtlBeat); ++l) {
         put_lane(t.tile_wcolor_i, l, cw, w[0][l]);
@@ -261,6 +267,29 @@ struct RtlRop::Impl {
         put_lane(t.tile_wcov_i, l, vw, w[2][l]);
         put_lane(t.tile_wpeel_i, l, dw, w[3][l]);
       }
+    };
+    // Inputs the port leaves unread in a cycle (state_i without state_we_i; the tile port's
+    // fields without tile_req_i or tile_clear_i; a fragment's without frag_valid_i) take random
+    // values from a generator of their own, so RTL that reads one where it must not mismatches.
+    XorShift idle(seed ^ 0x1d1e5eedull);
+    auto bits = [&idle](unsigned w) { return uint32_t(idle.next() & ((uint64_t{1} << w) - 1)); };
+    auto idle_tile_port = [&] {
+      t.tile_we_i = bits(1);
+      t.tile_planes_i = bits(4);
+      unsigned aw = 0;  // BeatAW
+      while ((1u << aw) < unsigned(sweep.beats())) ++aw;
+      t.tile_addr_i = bits(aw);
+      BeatWords w;
+      for (size_t pl = 0; pl < kTilePlanes; ++pl)
+        for (auto& v : w[pl]) v = bits(kLaneBits[pl]);
+      put_beat(w);
+    };
+    auto idle_fragment = [&] {
+      t.frag_x_i = bits(16);
+      t.frag_y_i = bits(16);
+      t.frag_z_i = bits(dw);
+      t.frag_rgba_i = bits(32);
+      t.frag_cov_i = bits(vw);
     };
     run.x0 = x0;
     run.y0 = y0;
@@ -304,6 +333,7 @@ struct RtlRop::Impl {
     put_beat(clear_beat(io));
     s.tick();
     t.state_we_i = 0;
+    t.state_i = bits(13);  // pass_state_t
     t.cnt_clear_i = 0;
     t.tile_clear_i = 0;
     if (io.load) {
@@ -312,13 +342,16 @@ struct RtlRop::Impl {
       t.tile_planes_i = io.load;
       for (int k = 0; k < sweep.beats(); ++k) {
         t.tile_addr_i = k;
-        put_beat(sweep.load(src, k));
+        BeatWords w = sweep.load(src, k);
+        for (size_t pl = 0; pl < kTilePlanes; ++pl)  // the planes not loaded: unread lanes
+          if (!(io.load >> pl & 1))
+            for (auto& v : w[pl]) v = bits(kLaneBits[pl]);
+        put_beat(w);
         s.tick();
       }
       t.tile_req_i = 0;
-      t.tile_we_i = 0;
     }
-    t.tile_planes_i = 0;
+    idle_tile_port();
 
     run.stream_begin = s.cycle;
     XorShift rng(seed);
@@ -338,11 +371,15 @@ struct RtlRop::Impl {
       }
       t.stall_i = stall;
       t.frag_valid_i = valid;
-      t.frag_x_i = f[k].x;
-      t.frag_y_i = f[k].y;
-      t.frag_z_i = f[k].z;
-      t.frag_rgba_i = f[k].rgba;
-      t.frag_cov_i = f[k].cov;
+      if (valid) {
+        t.frag_x_i = f[k].x;
+        t.frag_y_i = f[k].y;
+        t.frag_z_i = f[k].z;
+        t.frag_rgba_i = f[k].rgba;
+        t.frag_cov_i = f[k].cov;
+      } else {
+        idle_fragment();
+      }
       // frag_ready_o follows stall_i within the cycle, so a changed stall_i needs an eval;
       // without back-pressure only flops move it, and the last edge's eval already shows it.
       if (thr != 0 || k == 0) t.eval();
@@ -363,6 +400,7 @@ struct RtlRop::Impl {
     t.stall_i = 0;
     const uint64_t last = s.cycle;
     while (t.busy_o) {
+      idle_fragment();
       if (s.cycle - last > kDrainLimit)
         throw std::runtime_error("rtl: busy_o still high " + std::to_string(kDrainLimit) +
                                  " cycles after the last fragment (tile " +
@@ -372,6 +410,21 @@ struct RtlRop::Impl {
     }
     run.stream_end = s.cycle;
     if (s.monitor) go = s.monitor->end_tile(s.cycle - run.load_begin) && go;
+    // Without back-pressure the stream's cycles are the issue schedule's, exactly (a slower
+    // or faster RTL is a defect too: the cost model says what it must take). After the
+    // monitor, so that a wrong write is reported as such first.
+    if (opt.check_timing && thr == 0 && n > 0 && go) {
+      s.pixels.resize(n);
+      for (size_t j = 0; j < n; ++j)
+        s.pixels[j] = uint32_t(f[j].y - y0) * kRtlTileW + uint32_t(f[j].x - x0);
+      const uint64_t want = s.schedule.run(s.pixels.data(), n);
+      if (run.stream_end - run.stream_begin != want)
+        throw std::runtime_error("rtl: tile (" + std::to_string(x0) + "," + std::to_string(y0) +
+                                 ") streamed " + std::to_string(n) + " fragments in " +
+                                 std::to_string(run.stream_end - run.stream_begin) +
+                                 " cycles, the issue schedule (rtl_timing.h) says " +
+                                 std::to_string(want) + " (--no-timing-check to go on)");
+    }
     stats.fragments_in += t.cnt_frag_in_o;
     stats.fragments_passed += t.cnt_frag_passed_o;
     stats.depth_reads += t.cnt_depth_reads_o;
@@ -391,6 +444,7 @@ struct RtlRop::Impl {
           " stall cycles, the driver clocked " + std::to_string(s.cycle - cleared - 1) +
           " and saw " + std::to_string(waits) + " offers refused");
 
+    std::vector<BeatWords> stored;  // for reread_stores
     if (io.store) {
       t.tile_req_i = 1;
       t.tile_we_i = 0;
@@ -405,11 +459,13 @@ struct RtlRop::Impl {
           w[2][l] = get_lane(t.tile_rcov_o, l, vw);
         }
         sweep.store(w, io.store, dst, b);
+        if (opt.reread_stores) stored.push_back(w);
         if (s.monitor)
           go = s.monitor->store(StoreBeat{x0, y0, b, io.store, s.cycle - 1 - run.load_begin, &w}) &&
                go;
       }
       t.tile_req_i = 0;
+      idle_tile_port();
     }
     run.load_beats = t.cnt_tile_loads_o;
     run.store_beats = t.cnt_tile_stores_o;
@@ -421,7 +477,33 @@ struct RtlRop::Impl {
                                std::to_string(io.load ? beats : 0) + " and " +
                                std::to_string(io.store ? beats : 0));
     run.store_end = s.cycle;
+    if (!stored.empty() && go) reread(s, x0, y0, io.store, stored);
     return go;
+  }
+
+  // Reads the planes `planes` of the tile again, beat by beat, after its store: every word must
+  // be the one the store read. Outside the run's cycles (store_end is taken before).
+  static void reread(Sim& s, int x0, int y0, uint8_t planes, const std::vector<BeatWords>& first) {
+    VModel& t = *s.top;
+    constexpr unsigned cw = 32, dw = kRtlDepthBits, vw = coverage_bits(kRtlCoverageSamples);
+    t.tile_req_i = 1;
+    t.tile_we_i = 0;
+    for (size_t b = 0; b < first.size(); ++b) {
+      t.tile_addr_i = uint32_t(b);
+      s.tick();
+      for (unsigned l = 0; l < unsigned(kRtlBeat); ++l) {
+        const uint32_t w[3] = {get_lane(t.tile_rcolor_o, l, cw), get_lane(t.tile_rdepth_o, l, dw),
+                               get_lane(t.tile_rcov_o, l, vw)};
+        static const char* const kPlane[3] = {"colour", "depth", "coverage"};
+        for (int p = 0; p < 3; ++p)
+          if ((planes >> p & 1) && w[p] != first[b][size_t(p)][l])
+            throw std::runtime_error(fmt::format(
+                "rtl: tile ({},{}) read {} {:#x} at beat {} lane {} again after its store, "
+                "which read {:#x}: the store changed the plane",
+                x0, y0, kPlane[p], w[p], b, l, first[b][size_t(p)][l]));
+      }
+    }
+    t.tile_req_i = 0;
   }
 
   // Bins `frags` into tiles, stably (tile_bins.h).

@@ -26,6 +26,12 @@ struct RtlOptions {
   // window's defect instead of the blend's (docs/testbench.md "A checker that can fail").
   std::vector<std::string> plusargs;
   bool assertions = true;   // the RTL's assertions; off shows what the comparison alone catches
+  // Without back-pressure each tile's streaming cycles must be the issue schedule's
+  // (rtl_timing.h, the cost model's source): an RTL slower or faster than specified fails.
+  bool check_timing = true;
+  // After each store, read the stored planes again: every word must read the same (a tile read
+  // leaves the planes as they were, fresh words included). The tiles suite sets it.
+  bool reread_stores = false;
   // Models run a pass's tiles side by side (tiles are independent: each starts drained, its
   // planes loaded or cleared). Planes, counters and cycles are those of one model whatever the
   // number. A trace needs one waveform: with trace_path set the run uses one model.

@@ -154,6 +154,9 @@ void add_options(CLI::App& app, Config& c, Args& a) {
                "run the RTL with its assertions off, to see what the comparison alone catches");
   app.add_flag("!--no-lockstep", c.lockstep,
                "compare the frames after each pass only, not every write at its cycle");
+  app.add_flag("!--no-timing-check", c.check_timing,
+               "do not check each tile's streaming cycles against the issue schedule "
+               "(checked without back-pressure), to see what the comparisons alone catch");
 #ifdef ZB_TB_BUG  // zblend_tb_bug: the RTL holds deliberate defects, one switched on per run
   app.add_option("--defect", a.defect,
                  "the injected defect: blend (alpha blend with an odd source alpha flips red "

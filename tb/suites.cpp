@@ -20,6 +20,8 @@ CosimOptions cosim_options(const Config& c, uint64_t seed) {
   o.rtl.trace_path = c.trace;
   o.rtl.plusargs = c.plusargs;
   o.rtl.assertions = c.assertions;
+  o.rtl.check_timing = c.check_timing;
+  o.rtl.reread_stores = c.reread_stores;
   o.rtl.coverage = c.coverage;
   o.mismatch_fst = c.mismatch_fst;
   o.lockstep = c.lockstep;
@@ -351,7 +353,8 @@ Tally suite_window(const Config& c) {
 
 // tiles: the tile planes' fast-clear bookkeeping. Passes from a menu that includes passes
 // writing nothing at all (so a plane is fast-cleared twice with no store between), clears and
-// peel copies between them, on one or two tiles, some passes touching one tile only.
+// peel copies between them, on one or two tiles, some passes touching one tile only; depths
+// beside the last depth clear value.
 Tally suite_tiles(const Config& c) {
   Tally t;
   const int iters = c.iterations ? c.iterations : 12;
@@ -359,13 +362,19 @@ Tally suite_tiles(const Config& c) {
   const uint32_t zmax = depth_max(24);
   for (int it = 0; it < iters; ++it) {
     const uint64_t seed = c.seed + it;
-    const bool ok = run_iteration("tiles", c, seed, t, [&](Cosim& cs) {
+    Config reread = c;
+    reread.reread_stores = true;  // and every store must leave the planes as they were
+    const bool ok = run_iteration("tiles", reread, seed, t, [&](Cosim& cs) {
       Rng r(seed ^ 0x5eed);
       const int w = kRtlTileW * (1 + int(r.below(2))) - int(r.below(3));
       const int h = 1 + int(r.below(uint32_t(std::min(kRtlTileH, 8))));
       cs.begin_frame(w, h, 24, Rgba8{1, 2, 3, 4});
+      uint32_t zclear = zmax;  // the last depth clear value: a peel copy may carry it
       for (int p = 0; p < 8; ++p) {
-        if (r.chance(0.4)) cs.frame_op({FrameOpKind::kClearDepth, {}, r.chance(0.5) ? zmax : r.below(zmax), false});
+        if (r.chance(0.4)) {
+          zclear = r.chance(0.5) ? zmax : r.below(zmax);
+          cs.frame_op({FrameOpKind::kClearDepth, {}, zclear, false});
+        }
         if (r.chance(0.3)) cs.frame_op({FrameOpKind::kClearColor, {pick_channel(r), pick_channel(r), pick_channel(r), pick_alpha(r)}, 0, false});
         if (r.chance(0.2)) cs.frame_op({FrameOpKind::kCopyDepthToPeel, {}, 0, false});
         RopState st;
@@ -386,7 +395,12 @@ Tally suite_tiles(const Config& c) {
             Fragment g;
             g.x = uint16_t(x);
             g.y = uint16_t(y);
-            g.z = r.chance(0.2) ? (r.chance(0.5) ? 0 : zmax) : r.below(zmax + 1u);
+            // Depths beside the clear value too: a peel or depth test against a cleared word
+            // then turns on its every bit (z = v or v + 1 tells v from v with one bit changed).
+            if (r.chance(0.3))
+              g.z = std::min(zmax, uint32_t(std::max<int64_t>(0, int64_t(zclear) - 1 + r.below(3))));
+            else
+              g.z = r.chance(0.2) ? (r.chance(0.5) ? 0 : zmax) : r.below(zmax + 1u);
             g.color = Rgba8{pick_channel(r), pick_channel(r), pick_channel(r), pick_alpha(r)};
             g.coverage = uint8_t(r.below(kRtlCoverageSamples + 1));
             g.prim = uint32_t(f.size() / 16);

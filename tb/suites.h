@@ -25,6 +25,8 @@ struct Config {
   std::vector<std::string> plusargs;     // given to every RTL model (RtlOptions::plusargs)
   bool assertions = true;                // the RTL's assertions (RtlOptions::assertions)
   bool lockstep = true;                  // every write at its cycle (CosimOptions::lockstep)
+  bool check_timing = true;              // streaming cycles = the schedule (RtlOptions)
+  bool reread_stores = false;            // each store read twice, alike (RtlOptions)
 };
 
 // What a suite did: its counts, whether it failed, and a line of its own.
