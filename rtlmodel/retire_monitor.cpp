@@ -16,6 +16,7 @@ void RetireMonitor::begin_tile(int x0, int y0, const uint32_t* addr, const uint3
   index_ = index;
   n_ = n;
   next_.assign(n, kNone);
+  x4_cycle_.assign(n, kNoCycle);
   for (auto& h : head_) h.assign(words, kNone);
   tail_.assign(words, kNone);
   for (size_t k = 0; k < n; ++k) {
@@ -49,6 +50,7 @@ bool RetireMonitor::take(RetireStage stage, uint32_t addr, uint64_t cycle, size_
     r.kind = Retire::Kind::kExtra;
   } else {
     r.fragment = index_[head];
+    if (stage == RetireStage::kX4) x4_cycle_[head] = cycle;
     head = next_[head];
   }
   return sink_.retire(r);

@@ -71,6 +71,9 @@ class RetireMonitor {
   bool observe(const RetirePort& p, uint64_t tile_cycle, size_t accepted);
   // The tile has drained: every fragment still waiting to retire is missing.
   bool end_tile(uint64_t tile_cycle);
+  // Each fragment's X4 retire, by stream position: its tile cycle (kNoCycle when none yet).
+  static constexpr uint64_t kNoCycle = ~uint64_t{0};
+  const std::vector<uint64_t>& x4_cycles() const { return x4_cycle_; }
   // A beat the tile's store read, to the sink.
   bool store(const StoreBeat& b) { return go_ = go_ && sink_.store(b); }
 
@@ -88,6 +91,7 @@ class RetireMonitor {
   size_t n_ = 0;
   std::vector<uint32_t> next_;  // per stream position: the next one to its pixel
   std::vector<uint32_t> head_[2], tail_;  // per stage and tile word: the next to retire
+  std::vector<uint64_t> x4_cycle_;          // per stream position
 };
 
 }  // namespace zb

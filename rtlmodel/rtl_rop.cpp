@@ -126,6 +126,7 @@ struct Sim {
   std::vector<uint32_t> tile_addr, tile_index;  // the monitor's view of the tile's stream
   IssueSchedule schedule{kRtlWindow, size_t(kRtlTileW) * kRtlTileH};  // the cycles' check
   std::vector<uint32_t> pixels;                 // its view of the tile's stream
+  std::vector<uint64_t> issue;                  // and its issue cycles
   uint64_t cycle = 0;
   uint64_t dump_from = 0, dump_to = std::numeric_limits<uint64_t>::max();
 
@@ -417,7 +418,21 @@ struct RtlRop::Impl {
       s.pixels.resize(n);
       for (size_t j = 0; j < n; ++j)
         s.pixels[j] = uint32_t(f[j].y - y0) * kRtlTileW + uint32_t(f[j].x - x0);
-      const uint64_t want = s.schedule.run(s.pixels.data(), n);
+      s.issue.resize(n);
+      const uint64_t want = s.schedule.run(s.pixels.data(), n, s.issue.data());
+      // With the monitor, each fragment's too: X4 a fixed number of cycles after its issue.
+      if (s.monitor) {
+        const auto& x4 = s.monitor->x4_cycles();
+        const uint64_t from = run.stream_begin - run.load_begin;
+        for (size_t j = 0; j < n; ++j)
+          if (x4[j] - s.issue[j] != x4[0] - s.issue[0])
+            throw std::runtime_error(fmt::format(
+                "rtl: fragment #{} (position {} of tile ({},{})'s stream) reached X4 {} cycles "
+                "after its issue in the schedule (rtl_timing.h), the tile's first {} "
+                "(--no-timing-check to go on)",
+                f[j].index, j, x0, y0, int64_t(x4[j] - s.issue[j] - from),
+                int64_t(x4[0] - s.issue[0] - from)));
+      }
       if (run.stream_end - run.stream_begin != want)
         throw std::runtime_error("rtl: tile (" + std::to_string(x0) + "," + std::to_string(y0) +
                                  ") streamed " + std::to_string(n) + " fragments in " +

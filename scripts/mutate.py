@@ -16,7 +16,8 @@ Runs zblend_tb_mut (zb_rop as Yosys's mutant netlist, build/mutation/) against t
 Score = killed / (mutants - proven equivalent), for smoke and for full. Writes OUT/mutants.csv
 (one row per mutant: its description, verdict, the test that killed it, the first report line),
 OUT/summary.json and OUT/report.md, with progress on stderr. Each verdict is also appended to
-OUT/journal.jsonl as it comes, so --resume carries an interrupted run on. Exit 1 when a score
+OUT/journal.jsonl as it comes, so --resume carries an interrupted run on (with OUT's copy of
+the testbench, so that a rebuild meanwhile changes nothing). Exit 1 when a score
 is below its minimum or mutant 0 fails; 2 on bad usage.
 """
 import argparse
@@ -25,6 +26,7 @@ import csv
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import time
@@ -162,6 +164,12 @@ def main():
         chosen = list(range(1, count + 1))
     smoke, full = load_groups(a.group)
     os.makedirs(a.out, exist_ok=True)
+    # The run's own copy of the testbench, so that a rebuild meanwhile changes nothing; --resume
+    # goes on with the copy its journal came from.
+    own = os.path.join(a.out, "zblend_tb_mut")
+    if not (a.resume and os.path.exists(own)):
+        shutil.copy2(tb, own)
+    tb = own
 
     journal_path = os.path.join(a.out, "journal.jsonl")
     done, limits = load_journal(journal_path, descriptions) if a.resume else ({}, {})
