@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Is a surviving mutant equivalent to zb_rop? (make mutate, docs/mutation.md)
 # Yosys's equivalence flow on zb_rop (gold) and the mutant (gate), alike but for the one mutated
-# cell: equiv_make pairs their signals by name, equiv_struct merges cells whose inputs are
-# already equal, equiv_simple proves each pair on its input cone over 4 cycles, equiv_induct the
-# rest together by induction, both starting from the same state. Sound, not complete: "proven"
-# means the mutant's ports, and every signal left paired, equal zb_rop's in every cycle; "not
-# proven" names the signals that were not shown equal (the mutant may still be equivalent).
+# cell: equiv_make pairs their signals by name, equiv_struct pairs the outputs of alike cells
+# (auto-named ones too: -icells) and merges them, equiv_simple proves each pair on its input
+# cone over 4 cycles, equiv_induct the rest together by induction, both starting from the same
+# state. Sound, not complete: "proven" means the mutant's ports, and every signal left paired,
+# equal zb_rop's in every cycle; "not proven" names the signals that were not shown equal (the
+# mutant may still be equivalent).
 # Exit: 0 proven equivalent; 1 not proven; 2 usage; 3 Yosys failed or ran out of time.
 set -uo pipefail
 
@@ -46,7 +47,7 @@ for round in 1 2 3; do
   [[ $left -gt 0 ]] || { echo "mutant_equiv.sh: time limit ($limit s) before round $round"; exit 3; }
   timeout "$left" yosys -q -l "$work/log" -p "read_rtlil $design; rename zb_rop gold;
     copy gold gate; $mutation; async2sync; equiv_make -blacklist $work/blacklist gold gate equiv;
-    hierarchy -top equiv; equiv_struct; equiv_simple -seq 4; equiv_induct -seq 4;
+    hierarchy -top equiv; equiv_struct -icells; equiv_simple -seq 4; equiv_induct -seq 4;
     equiv_status" >/dev/null 2>&1
   rc=$?
   if [[ $rc -eq 124 ]]; then echo "mutant_equiv.sh: time limit ($limit s) in round $round"; exit 3; fi
