@@ -4,7 +4,7 @@
 # cell: equiv_make pairs their signals by name, equiv_struct pairs the outputs of alike cells
 # (auto-named ones too: -icells) and merges them, equiv_simple proves each pair on its input
 # cone over 4 cycles, equiv_induct the rest together by induction, both starting from the same
-# state. Sound, not complete: "proven" means the mutant's ports, and every signal left paired,
+# state. Sound, not complete: "proven" means the mutant's outputs, and every signal left paired,
 # equal zb_rop's in every cycle; "not proven" names the signals that were not shown equal (the
 # mutant may still be equivalent).
 # Exit: 0 proven equivalent; 1 not proven; 2 usage; 3 Yosys failed or ran out of time.
@@ -35,14 +35,15 @@ command -v yosys >/dev/null || { echo "mutant_equiv.sh: yosys not found (scripts
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-# zb_rop's ports (the flattened design has no other module): never left out of the pairing.
-grep -oE '^ *wire .*(input|output) [0-9]+ \\\S+' "$design" | awk '{print $NF}' | sort -u > "$work/ports"
+# zb_rop's outputs (the flattened design has no other module): never left out of the pairing.
+grep -oE '^ *wire .*output [0-9]+ \\\S+' "$design" | awk '{print $NF}' | sort -u > "$work/ports"
 : > "$work/blacklist"
 # Round 1 pairs every signal by name. An internal signal the mutant changes but its ports never
 # see (a bit nothing reads, say) is then "not proven"; the next round leaves those signals
 # unpaired, so the gate keeps its own values there and only the rest must be equal. Sound: a
-# proof still covers every port and every paired signal in every cycle.
-for round in 1 2 3; do
+# proof still covers every output and every paired signal in every cycle.
+rounds=5
+for round in $(seq $rounds); do
   left=$((limit - SECONDS))
   [[ $left -gt 0 ]] || { echo "mutant_equiv.sh: time limit ($limit s) before round $round"; exit 3; }
   timeout "$left" yosys -q -l "$work/log" -p "read_rtlil $design; rename zb_rop gold;
@@ -59,12 +60,13 @@ for round in 1 2 3; do
   fi
   grep -qE "Found a total of [0-9]+ unproven" "$work/log" ||
     { echo "mutant_equiv.sh: yosys failed (exit $rc)"; exit 3; }
-  # The unproven signals, by gold's name.
-  grep -oE 'Unproven \$equiv \S+ \S+' "$work/log" | awk '{print $4}' | sed 's/_gold$//' |
-    sort -u > "$work/unproven"
+  # The unproven signals, by gold's name (not constants, which equiv_struct may pair).
+  grep -oE 'Unproven \$equiv \S+ \S+' "$work/log" | awk '{print $4}' | grep -v "^[0-9]*'" |
+    sed 's/_gold$//' | sort -u > "$work/unproven"
   at_port=$(comm -12 "$work/unproven" "$work/ports" | head -3 | tr '\n' ' ')
-  if [[ -n $at_port ]]; then echo "not proven: differs at port ${at_port% }"; exit 1; fi
+  if [[ -n $at_port ]]; then echo "not proven: differs at output ${at_port% }"; exit 1; fi
+  [[ -s $work/unproven ]] || { echo "not proven: only constants left unproven"; exit 1; }
   cat "$work/unproven" >> "$work/blacklist"
 done
-echo "not proven: internal signals after 3 rounds: $(head -3 "$work/unproven" | tr '\n' ' ')"
+echo "not proven: internal signals after $rounds rounds: $(head -3 "$work/unproven" | tr '\n' ' ')"
 exit 1

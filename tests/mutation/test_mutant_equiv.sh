@@ -23,7 +23,7 @@ check() {
   echo "ok: $name: $out"
 }
 check unused-bit '-mode const1 .*-wire g_chan\[[0-3]\]\.unused_u ' 0 "internal signals unpaired"
-check output-flop '-mode const0 .*-wire ms_o ' 1 'differs at port \ms_o'
+check output-flop '-mode const0 .*-wire ms_o ' 1 'differs at output \ms_o'
 check clock '-port CLK ' 3 "no proof"
 scripts/mutant_equiv.sh "$tmp/design.il" 9999 >/dev/null 2>&1
 [[ $? -eq 2 ]] || fail "a mutant number past the list: want exit 2"
