@@ -109,6 +109,19 @@ uint32_t get_lane(const Port& port, unsigned lane, unsigned width) {
   }
 }
 
+// The beat the tile port read at the last edge (colour, depth, coverage; peel is never stored).
+template <class Model>
+BeatWords read_beat(const Model& t) {
+  constexpr unsigned cw = 32, dw = kRtlDepthBits, vw = coverage_bits(kRtlCoverageSamples);
+  BeatWords w{};
+  for (unsigned l = 0; l < unsigned(kRtlBeat); ++l) {
+    w[0][l] = get_lane(t.tile_rcolor_o, l, cw);
+    w[1][l] = get_lane(t.tile_rdepth_o, l, dw);
+    w[2][l] = get_lane(t.tile_rcov_o, l, vw);
+  }
+  return w;
+}
+
 // A fragment as streamed: the datapath's fields and its index in the pass.
 struct Streamed {
   uint16_t x, y;
@@ -274,12 +287,12 @@ struct RtlRop::Impl {
     // values from a generator of their own, so RTL that reads one where it must not mismatches.
     XorShift idle(seed ^ 0x1d1e5eedull);
     auto bits = [&idle](unsigned w) { return uint32_t(idle.next() & ((uint64_t{1} << w) - 1)); };
+    unsigned beat_aw = 0;  // zb_rop's BeatAW: tile_addr_i's width
+    while ((1u << beat_aw) < unsigned(sweep.beats())) ++beat_aw;
     auto idle_tile_port = [&] {
       t.tile_we_i = bits(1);
       t.tile_planes_i = bits(4);
-      unsigned aw = 0;  // BeatAW
-      while ((1u << aw) < unsigned(sweep.beats())) ++aw;
-      t.tile_addr_i = bits(aw);
+      t.tile_addr_i = bits(beat_aw);
       BeatWords w;
       for (size_t pl = 0; pl < kTilePlanes; ++pl)
         for (auto& v : w[pl]) v = bits(kLaneBits[pl]);
@@ -467,12 +480,7 @@ struct RtlRop::Impl {
         t.tile_addr_i = b;
         s.tick();
         watch();
-        BeatWords w{};
-        for (unsigned l = 0; l < unsigned(kRtlBeat); ++l) {
-          w[0][l] = get_lane(t.tile_rcolor_o, l, cw);
-          w[1][l] = get_lane(t.tile_rdepth_o, l, dw);
-          w[2][l] = get_lane(t.tile_rcov_o, l, vw);
-        }
+        const BeatWords w = read_beat(t);
         sweep.store(w, io.store, dst, b);
         if (opt.reread_stores) stored.push_back(w);
         if (s.monitor)
@@ -500,23 +508,20 @@ struct RtlRop::Impl {
   // be the one the store read. Outside the run's cycles (store_end is taken before).
   static void reread(Sim& s, int x0, int y0, uint8_t planes, const std::vector<BeatWords>& first) {
     VModel& t = *s.top;
-    constexpr unsigned cw = 32, dw = kRtlDepthBits, vw = coverage_bits(kRtlCoverageSamples);
     t.tile_req_i = 1;
     t.tile_we_i = 0;
+    static const char* const kPlane[3] = {"colour", "depth", "coverage"};
     for (size_t b = 0; b < first.size(); ++b) {
       t.tile_addr_i = uint32_t(b);
       s.tick();
-      for (unsigned l = 0; l < unsigned(kRtlBeat); ++l) {
-        const uint32_t w[3] = {get_lane(t.tile_rcolor_o, l, cw), get_lane(t.tile_rdepth_o, l, dw),
-                               get_lane(t.tile_rcov_o, l, vw)};
-        static const char* const kPlane[3] = {"colour", "depth", "coverage"};
-        for (int p = 0; p < 3; ++p)
-          if ((planes >> p & 1) && w[p] != first[b][size_t(p)][l])
+      const BeatWords w = read_beat(t);
+      for (size_t p = 0; p < 3; ++p)
+        for (unsigned l = 0; l < unsigned(kRtlBeat); ++l)
+          if ((planes >> p & 1) && w[p][l] != first[b][p][l])
             throw std::runtime_error(fmt::format(
                 "rtl: tile ({},{}) read {} {:#x} at beat {} lane {} again after its store, "
                 "which read {:#x}: the store changed the plane",
-                x0, y0, kPlane[p], w[p], b, l, first[b][size_t(p)][l]));
-      }
+                x0, y0, kPlane[p], w[p][l], b, l, first[b][p][l]));
     }
     t.tile_req_i = 0;
   }

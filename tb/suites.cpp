@@ -360,10 +360,10 @@ Tally suite_tiles(const Config& c) {
   const int iters = c.iterations ? c.iterations : 12;
   Progress progress(c, iters);
   const uint32_t zmax = depth_max(24);
+  Config reread = c;
+  reread.reread_stores = true;  // and every store must leave the planes as they were
   for (int it = 0; it < iters; ++it) {
     const uint64_t seed = c.seed + it;
-    Config reread = c;
-    reread.reread_stores = true;  // and every store must leave the planes as they were
     const bool ok = run_iteration("tiles", reread, seed, t, [&](Cosim& cs) {
       Rng r(seed ^ 0x5eed);
       const int w = kRtlTileW * (1 + int(r.below(2))) - int(r.below(3));
