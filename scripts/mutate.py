@@ -96,11 +96,12 @@ class Runner:
 
 
 class Progress:
-    def __init__(self, what, n):
+    def __init__(self, what, n, settled="killed"):
         self.what, self.n, self.done, self.t0 = what, n, 0, time.monotonic()
+        self.settled = settled
         self.last = 0.0
 
-    def step(self, settled, what="killed"):
+    def step(self, settled):
         self.done += 1
         now = time.monotonic()
         if now - self.last < 5 and self.done != self.n:
@@ -108,7 +109,7 @@ class Progress:
         self.last = now
         el = now - self.t0
         eta = el / self.done * (self.n - self.done)
-        print(f"mutate: {self.what}: {self.done}/{self.n} mutants, {settled} {what}, "
+        print(f"mutate: {self.what}: {self.done}/{self.n} mutants, {settled} {self.settled}, "
               f"{el:.0f} s, about {eta:.0f} s left", file=sys.stderr, flush=True)
 
 
@@ -233,7 +234,8 @@ def main():
         if len(todo) < len(mutants):
             print(f"mutate: {name}: {len(mutants) - len(todo)} verdicts kept from "
                   f"{journal_path}", file=sys.stderr)
-        prog = Progress(name, len(todo))
+        prog = Progress(name, len(todo),
+                        "proven equivalent" if column == "equiv" else "killed")
         settled = 0
 
         def before_deadline(m):
@@ -252,7 +254,7 @@ def main():
                         "seconds": sec, "report": line, "description": descriptions[m - 1]})
                 apply(m, verdict, by, sec, line)
                 settled += verdict in ("killed", "equivalent")
-                prog.step(settled, "killed" if column != "equiv" else "proven equivalent")
+                prog.step(settled)
         return [m for m in mutants if rows[m][column] in ("survived", "not proven", "no proof")]
 
     t0 = time.monotonic()
