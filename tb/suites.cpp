@@ -354,7 +354,7 @@ Tally suite_window(const Config& c) {
 // tiles: the tile planes' fast-clear bookkeeping. Passes from a menu that includes passes
 // writing nothing at all (so a plane is fast-cleared twice with no store between), clears and
 // peel copies between them, on one or two tiles, some passes touching one tile only; depths
-// beside the last depth clear value.
+// beside the last depth clear value; frames a few rows high or one or two tiles high.
 Tally suite_tiles(const Config& c) {
   Tally t;
   const int iters = c.iterations ? c.iterations : 12;
@@ -367,7 +367,12 @@ Tally suite_tiles(const Config& c) {
     const bool ok = run_iteration("tiles", reread, seed, t, [&](Cosim& cs) {
       Rng r(seed ^ 0x5eed);
       const int w = kRtlTileW * (1 + int(r.below(2))) - int(r.below(3));
-      const int h = 1 + int(r.below(uint32_t(std::min(kRtlTileH, 8))));
+      // Short frames are cheap; tall ones (one or two tiles high) put every beat of a tile in
+      // the frame, so a write-back to a wrong beat lands on a word that is compared.
+      const bool tall = r.chance(0.5);
+      const int h = tall ? kRtlTileH * (1 + int(r.below(2))) - int(r.below(3))
+                         : 1 + int(r.below(uint32_t(std::min(kRtlTileH, 8))));
+      const uint32_t row_odds = uint32_t(std::max(1, h / 8));  // about 8 rows of fragments
       cs.begin_frame(w, h, 24, Rgba8{1, 2, 3, 4});
       uint32_t zclear = zmax;  // the last depth clear value: a peel copy may carry it
       for (int p = 0; p < 8; ++p) {
@@ -390,7 +395,8 @@ Tally suite_tiles(const Config& c) {
         st.peel_test = kind >= 4;
         const int xs = r.chance(0.3) ? std::min(w, kRtlTileW) : w;  // one tile only
         std::vector<Fragment> f;
-        for (int y = 0; y < h; ++y)
+        for (int y = 0; y < h; ++y) {
+          if (r.below(row_odds) != 0) continue;
           for (int x = 0; x < xs; ++x) {
             Fragment g;
             g.x = uint16_t(x);
@@ -406,6 +412,7 @@ Tally suite_tiles(const Config& c) {
             g.prim = uint32_t(f.size() / 16);
             f.push_back(g);
           }
+        }
         draw_pass(cs, std::string("tiles-") + kNames[kind], st, f);
       }
     });
