@@ -305,6 +305,16 @@ struct RtlRop::Impl {
       t.frag_rgba_i = bits(32);
       t.frag_cov_i = bits(vw);
     };
+    // frag_ready_o must be low in a cycle with stall_i, tile_req_i or tile_clear_i (docs/rtl.md
+    // "Port timing"); the driver offers no fragment then, so only this check sees a port that
+    // would take one. Read after an edge whose inputs are still applied.
+    auto refuses = [&](const char* why) {
+      if (t.frag_ready_o)
+        throw std::runtime_error(fmt::format(
+            "rtl: tile ({},{}) frag_ready_o high at cycle {} with {} (docs/rtl.md \"Port "
+            "timing\": the port must refuse fragments then)",
+            x0, y0, s.cycle, why));
+    };
     run.x0 = x0;
     run.y0 = y0;
     run.io = io;
@@ -346,6 +356,7 @@ struct RtlRop::Impl {
     t.tile_planes_i = io.clear;
     put_beat(clear_beat(io));
     s.tick();
+    if (io.clear) refuses("tile_clear_i");
     t.state_we_i = 0;
     t.state_i = bits(13);  // pass_state_t
     t.cnt_clear_i = 0;
@@ -362,6 +373,7 @@ struct RtlRop::Impl {
             for (auto& v : w[pl]) v = bits(kLaneBits[pl]);
         put_beat(w);
         s.tick();
+        refuses("tile_req_i (a load)");
       }
       t.tile_req_i = 0;
     }
@@ -397,6 +409,7 @@ struct RtlRop::Impl {
       // frag_ready_o follows stall_i within the cycle, so a changed stall_i needs an eval;
       // without back-pressure only flops move it, and the last edge's eval already shows it.
       if (thr != 0 || k == 0) t.eval();
+      if (stall) refuses("stall_i");
       waits += valid && !t.frag_ready_o;
       if (valid && t.frag_ready_o) {
         accept_out[f[k].index] = s.cycle;
@@ -480,6 +493,7 @@ struct RtlRop::Impl {
         t.tile_addr_i = b;
         s.tick();
         watch();
+        refuses("tile_req_i (a store)");
         const BeatWords w = read_beat(t);
         sweep.store(w, io.store, dst, b);
         if (opt.reread_stores) stored.push_back(w);
