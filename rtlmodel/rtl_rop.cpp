@@ -122,6 +122,18 @@ BeatWords read_beat(const Model& t) {
   return w;
 }
 
+// A beat onto the tile port's write lanes (colour, depth, coverage, peel).
+template <class Model>
+void put_beat(Model& t, const BeatWords& w) {
+  constexpr unsigned cw = 32, dw = kRtlDepthBits, vw = coverage_bits(kRtlCoverageSamples);
+  for (unsigned l = 0; l < unsigned(kRtlBeat); ++l) {
+    put_lane(t.tile_wcolor_i, l, cw, w[0][l]);
+    put_lane(t.tile_wdepth_i, l, dw, w[1][l]);
+    put_lane(t.tile_wcov_i, l, vw, w[2][l]);
+    put_lane(t.tile_wpeel_i, l, dw, w[3][l]);
+  }
+}
+
 // A fragment as streamed: the datapath's fields and its index in the pass.
 struct Streamed {
   uint16_t x, y;
@@ -274,14 +286,6 @@ struct RtlRop::Impl {
     const TileSweep sweep(src.width, src.height, x0, y0);
     constexpr unsigned cw = 32, dw = kRtlDepthBits, vw = coverage_bits(kRtlCoverageSamples);
     constexpr unsigned kLaneBits[kTilePlanes] = {cw, dw, vw, dw};
-    auto put_beat = [&t](const BeatWords& w) {
-      for (unsigned l = 0; l < unsigned(kRtlBeat); ++l) {
-        put_lane(t.tile_wcolor_i, l, cw, w[0][l]);
-        put_lane(t.tile_wdepth_i, l, dw, w[1][l]);
-        put_lane(t.tile_wcov_i, l, vw, w[2][l]);
-        put_lane(t.tile_wpeel_i, l, dw, w[3][l]);
-      }
-    };
     // Inputs the port leaves unread in a cycle (state_i without state_we_i; the tile port's
     // fields without tile_req_i or tile_clear_i; a fragment's without frag_valid_i) take random
     // values from a generator of their own, so RTL that reads one where it must not mismatches.
@@ -296,7 +300,7 @@ struct RtlRop::Impl {
       BeatWords w;
       for (size_t pl = 0; pl < kTilePlanes; ++pl)
         for (auto& v : w[pl]) v = bits(kLaneBits[pl]);
-      put_beat(w);
+      put_beat(t, w);
     };
     auto idle_fragment = [&] {
       t.frag_x_i = bits(16);
@@ -354,7 +358,7 @@ struct RtlRop::Impl {
     const uint64_t cleared = s.cycle;  // the counters count from the next cycle on
     t.tile_clear_i = io.clear != 0;
     t.tile_planes_i = io.clear;
-    put_beat(clear_beat(io));
+    put_beat(t, clear_beat(io));
     s.tick();
     if (io.clear) refuses("tile_clear_i");
     t.state_we_i = 0;
@@ -371,7 +375,7 @@ struct RtlRop::Impl {
         for (size_t pl = 0; pl < kTilePlanes; ++pl)  // the planes not loaded: unread lanes
           if (!(io.load >> pl & 1))
             for (auto& v : w[pl]) v = bits(kLaneBits[pl]);
-        put_beat(w);
+        put_beat(t, w);
         s.tick();
         refuses("tile_req_i (a load)");
       }
@@ -514,13 +518,17 @@ struct RtlRop::Impl {
                                std::to_string(io.load ? beats : 0) + " and " +
                                std::to_string(io.store ? beats : 0));
     run.store_end = s.cycle;
-    if (!stored.empty() && go) reread(s, x0, y0, io.store, stored);
+    if (!stored.empty() && go) reread(s, x0, y0, io.store, io.load != 0, stored);
     return go;
   }
 
-  // Reads the planes `planes` of the tile again, beat by beat, after its store: every word must
-  // be the one the store read. Outside the run's cycles (store_end is taken before).
-  static void reread(Sim& s, int x0, int y0, uint8_t planes, const std::vector<BeatWords>& first) {
+  // After a store: reads the planes `planes` of the tile again, beat by beat (every word must
+  // be the one the store read), then loads those words back (the planes read the same after).
+  // Outside the run's cycles (store_end is taken before). The tile counters, not cleared since
+  // the setup, then hold one more tile of reads and of loads: past their width (zb_rop's
+  // TileCntW, two tiles' beats less one), so their saturation shows.
+  static void reread(Sim& s, int x0, int y0, uint8_t planes, bool loaded,
+                     const std::vector<BeatWords>& first) {
     VModel& t = *s.top;
     t.tile_req_i = 1;
     t.tile_we_i = 0;
@@ -537,7 +545,22 @@ struct RtlRop::Impl {
                 "which read {:#x}: the store changed the plane",
                 x0, y0, kPlane[p], w[p][l], b, l, first[b][p][l]));
     }
+    t.tile_we_i = 1;
+    t.tile_planes_i = planes;
+    for (size_t b = 0; b < first.size(); ++b) {
+      t.tile_addr_i = uint32_t(b);
+      put_beat(t, first[b]);
+      s.tick();
+    }
     t.tile_req_i = 0;
+    t.tile_we_i = 0;
+    const uint64_t beats = first.size(), most = 2 * beats - 1;  // 2^TileCntW - 1
+    const uint64_t loads = std::min(most, (loaded ? beats : 0) + beats);
+    if (t.cnt_tile_stores_o != most || t.cnt_tile_loads_o != loads)
+      throw std::runtime_error(fmt::format(
+          "rtl: tile ({},{}) counted {} store and {} load beats after its store was read again "
+          "and loaded back; two tiles of beats saturate at {}: want {} and {}",
+          x0, y0, t.cnt_tile_stores_o, t.cnt_tile_loads_o, most, most, loads));
   }
 
   // Bins `frags` into tiles, stably (tile_bins.h).

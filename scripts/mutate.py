@@ -11,14 +11,16 @@ Runs zblend_tb_mut (zb_rop as Yosys's mutant netlist, build/mutation/) against t
   2. each mutant runs the smoke group (tb/regressions.json: what make test runs) in order, and
      is killed at the first test that fails: a mismatch, an error, a crash or the time limit;
   3. each smoke survivor goes to Yosys's equivalence flow (scripts/mutant_equiv.sh): one proven
-     equivalent to zb_rop can be killed by no test and leaves the score;
+     equivalent to zb_rop can be killed by no test and leaves the score (but for those whose
+     written reason, --reasons, says they differ);
   4. each survivor not proven equivalent runs the full group (smoke's tests, then full's).
 Score = killed / (mutants - proven equivalent), for smoke and for full. Writes OUT/mutants.csv
 (one row per mutant: its description, verdict, the test that killed it, the first report line),
 OUT/summary.json and OUT/report.md, with progress on stderr. Each verdict is also appended to
 OUT/journal.jsonl as it comes, so --resume carries an interrupted run on (with OUT's copy of
 the testbench, so that a rebuild meanwhile changes nothing). Exit 1 when a score
-is below its minimum or mutant 0 fails; 2 on bad usage.
+is below its minimum, mutant 0 fails or a test kills a mutant that a written reason says no
+test can kill; 2 on bad usage.
 """
 import argparse
 import concurrent.futures
@@ -30,6 +32,8 @@ import shutil
 import subprocess
 import sys
 import time
+
+from mutant_reasons import KINDS, Reasons
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 REPORT_LINE = re.compile(r"^(LOCKSTEP MISMATCH|MISMATCH|suite \S+ +FAIL|suite \S+: error|"
@@ -136,6 +140,9 @@ def main():
     ap.add_argument("--resume", action="store_true",
                     help="keep the verdicts in OUT/journal.jsonl from an interrupted run with "
                     "the same netlist and run only the rest")
+    ap.add_argument("--reasons", default=os.path.join(ROOT, "mutation", "reasons.json"),
+                    help="written reasons for survivors no test can kill (default "
+                    "mutation/reasons.json); the report names each survivor's")
     ap.add_argument("--min-smoke", type=float, default=0.0,
                     help="exit 1 below this smoke score, percent (default 0)")
     ap.add_argument("--min-full", type=float, default=0.0,
@@ -152,6 +159,11 @@ def main():
     with open(listing) as f:
         descriptions = [ln.strip() for ln in f if ln.strip()]
     count = len(descriptions)
+    try:
+        reasons = Reasons(a.reasons)
+    except (OSError, ValueError) as err:
+        usage_error(f"--reasons: {err}")
+    reasons.count(descriptions)
     if a.sample is not None and a.mutants:
         usage_error("--sample and --mutants: choose one")
     if a.sample is not None:
@@ -197,7 +209,7 @@ def main():
     runner.limits = limits
 
     rows = {m: {"mutant": m, "description": descriptions[m - 1], "smoke": "", "equiv": "",
-                "full": "", "killed_by": "", "report": "", "seconds": 0.0}
+                "full": "", "killed_by": "", "report": "", "seconds": 0.0, "reason": ""}
             for m in chosen}
 
     deadline = time.monotonic() + a.time_limit if a.time_limit > 0 else None
@@ -262,12 +274,28 @@ def main():
     order = sorted(chosen, key=lambda m: ((m - 1) * 7919) % count)
     survivors = stage(a.group, run_tests, smoke, order, "smoke")
     if not a.no_equiv and survivors:
-        survivors = stage("equivalence", prove, None, survivors, "equiv")
+        # A survivor whose written reason says it differs (the port contract, a count beyond
+        # any run) is not equivalent: the prover would only spend its time limit on it.
+        differ = [m for m in survivors
+                  if (reasons.explain(descriptions[m - 1]) or {}).get("kind", "equivalent")
+                  != "equivalent"]
+        for m in differ:
+            rows[m]["equiv"] = "not tried"
+        survivors = stage("equivalence", prove, None,
+                          [m for m in survivors if m not in differ], "equiv") + differ
     if not a.no_full and survivors:
         survivors = stage("full", run_tests, full[len(smoke):], survivors, "full")
     for m in chosen:
         if not a.no_full and rows[m]["smoke"] == "killed":
             rows[m]["full"] = "killed"
+    wrong = []  # killed mutants a reason says no test can kill: the reason is wrong
+    for m in chosen:  # a written reason for each survivor that has one
+        r = rows[m]
+        e = reasons.explain(r["description"])
+        if e and r["killed_by"]:
+            wrong.append(f"{e['id']} (mutant {m}, killed by {r['killed_by']})")
+        elif not r["killed_by"] and r["equiv"] != "equivalent" and r["smoke"] != "not run":
+            r["reason"] = e["id"] if e else ""
     asked = len(chosen)
     chosen = [m for m in chosen if rows[m]["smoke"] != "not run"]
     rows = {m: rows[m] for m in chosen}
@@ -277,12 +305,17 @@ def main():
     full_killed = sum(1 for r in rows.values() if r["full"] == "killed")
     equivalent = sum(1 for r in rows.values() if r["equiv"] == "equivalent")
     denom = max(1, n - equivalent)  # the score is over the mutants not proven equivalent
+    last = "smoke" if a.no_full else "full"
+    left = [r for r in rows.values() if r[last] not in ("killed", "") and r["equiv"] != "equivalent"]
     summary = {
         "mutants": n, "netlist_mutants": count, "left_out_by_time_limit": asked - n,
         "proven_equivalent": equivalent, "equivalence_checked": not a.no_equiv,
         "smoke_killed": smoke_killed, "smoke_score": round(100 * smoke_killed / denom, 2),
         "seconds": round(time.monotonic() - t0, 1), "jobs": a.jobs,
         "group": a.group, "smoke_tests": [t["name"] for t in smoke],
+        "survivors": len(left), "survivors_with_reason": sum(1 for r in left if r["reason"]),
+        "reasons_file": os.path.relpath(a.reasons, ROOT), "stale_reasons": reasons.stale(),
+        "wrong_reasons": wrong,
     }
     if not a.no_full:
         summary.update(full_killed=full_killed,
@@ -297,19 +330,26 @@ def main():
             w.writerow(r)
     with open(os.path.join(a.out, "summary.json"), "w") as f:
         json.dump(summary, f, indent=2)
-    write_report(os.path.join(a.out, "report.md"), summary, rows, chosen)
+    write_report(os.path.join(a.out, "report.md"), summary, rows, chosen, reasons)
 
     line = (f"mutate: {n} mutants, {equivalent} proven equivalent; {a.group} killed "
             f"{smoke_killed} ({summary['smoke_score']} % of the rest)")
     if not a.no_full:
         line += f"; full killed {full_killed} ({summary['full_score']} %)"
     print(line + f"; {summary['seconds']} s; {a.out}/report.md")
+    print(f"mutate: {summary['survivors']} survivors, {summary['survivors_with_reason']} with a "
+          f"written reason ({summary['reasons_file']})"
+          + (f"; stale reasons (match no mutant): {', '.join(reasons.stale())}"
+             if reasons.stale() else ""))
+    if wrong:
+        print(f"mutate: FAILED: written reasons that a test contradicts ({summary['reasons_file']}): "
+              + "; ".join(wrong), file=sys.stderr)
     low = summary["smoke_score"] < a.min_smoke or (
         not a.no_full and summary["full_score"] < a.min_full)
     if low:
         print(f"mutate: FAILED: score below --min-smoke {a.min_smoke} / --min-full {a.min_full}",
               file=sys.stderr)
-    return 1 if low else 0
+    return 1 if low or wrong else 0
 
 
 def load_journal(path, descriptions):
@@ -335,7 +375,7 @@ def load_journal(path, descriptions):
     return done, limits
 
 
-def write_report(path, s, rows, chosen):
+def write_report(path, s, rows, chosen, reasons):
     by_test = {}
     for r in rows.values():
         if r["killed_by"]:
@@ -350,13 +390,26 @@ def write_report(path, s, rows, chosen):
         lines.append(f"| full | {s['full_killed']} | {s['full_score']} % |")
     lines += ["", "Kills by the test that made them first:", ""]
     lines += [f"- {t}: {k}" for t, k in sorted(by_test.items(), key=lambda x: -x[1])]
-    for title, pick in (("Proven equivalent", lambda r: r["equiv"] == "equivalent"),
-                        ("Survivors", lambda r: not r["killed_by"] and r["equiv"] != "equivalent")):
-        some = [rows[m] for m in chosen if pick(rows[m])]
-        lines += ["", f"## {title} ({len(some)})", ""]
-        lines += [f"- mutant {r['mutant']}: `{r['description']}`"
-                  + (f" ({r['report']})" if r["report"] and title == "Survivors" else "")
-                  for r in some]
+    item = lambda r: (f"- mutant {r['mutant']}: `{r['description']}`"
+                      + (f" ({r['report']})" if r["report"] and not r["killed_by"] else ""))
+    some = [rows[m] for m in chosen if rows[m]["equiv"] == "equivalent"]
+    lines += ["", f"## Proven equivalent ({len(some)})", ""] + [item(r) for r in some]
+    left = [rows[m] for m in chosen if not rows[m]["killed_by"] and rows[m]["equiv"] != "equivalent"]
+    lines += ["", f"## Survivors ({len(left)}: {s['survivors_with_reason']} with a written "
+              f"reason from {s['reasons_file']})"]
+    for e in reasons.entries:
+        mine = [r for r in left if r["reason"] == e["id"]]
+        if mine:
+            lines += ["", f"### {e['id']} ({len(mine)}): {KINDS[e['kind']]}", "", e["why"], ""]
+            lines += [item(r) for r in mine]
+    bare = [r for r in left if not r["reason"]]
+    lines += ["", f"### Without a written reason ({len(bare)})", ""] + [item(r) for r in bare]
+    if s["wrong_reasons"]:
+        lines += ["", "**Wrong reasons** (a test killed a mutant they cover): "
+                  + "; ".join(s["wrong_reasons"])]
+    if s["stale_reasons"]:
+        lines += ["", "Stale reasons (they match no mutant of this netlist): "
+                  + ", ".join(s["stale_reasons"])]
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
 
