@@ -1,6 +1,8 @@
 // The named suites of zblend_tb; see suites.h.
 #include "suites.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -185,7 +187,8 @@ std::vector<Fragment> random_stream(Rng& r, int w, int h, size_t n, int hot, dou
 
 }  // namespace
 
-// random: constrained-random states and streams, several passes per small frame.
+// random: constrained-random states and streams, several passes per small frame; the first
+// iteration adds every blend mode with every colour mask.
 Tally suite_random(const Config& c) {
   Tally t;
   const uint64_t total = c.fragments ? c.fragments : 300000;
@@ -221,6 +224,16 @@ Tally suite_random(const Config& c) {
         draw_pass(cs, "random-" + std::to_string(p + 1), st,
                   random_stream(r, w, h, per_pass, 4, 0.3, zpool));
       }
+      // The first iteration also draws every blend mode with every colour mask, a short pass
+      // each: random states reach a given pair once in 320 passes.
+      for (unsigned b = 0; it == 0 && b < kBlendModes; ++b)
+        for (uint8_t m = 0; m < 16; ++m) {
+          RopState st = random_state(r);
+          st.blend = BlendMode(b);
+          st.color_mask = m;
+          draw_pass(cs, fmt::format("random-blend{}-mask{:x}", b, m), st,
+                    random_stream(r, w, h, 40, 4, 0.3, zpool));
+        }
     });
     if (!ok) break;
     progress.add();
