@@ -14,6 +14,8 @@ KINDS = {
                   "not close)",
     "contract": "differs only for inputs the port contract rules out (docs/rtl.md)",
     "unobservable": "differs only after more events than a run has, or in a count no driver reads",
+    "unchecked": "differs only in a behaviour the checker does not check (the reason says which): a "
+                 "gap in the checker, stated",
 }
 
 

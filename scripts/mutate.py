@@ -13,7 +13,8 @@ Runs zblend_tb_mut (zb_rop as Yosys's mutant netlist, build/mutation/) against t
   3. each smoke survivor goes to Yosys's equivalence flow (scripts/mutant_equiv.sh): one proven
      equivalent to zb_rop can be killed by no test and leaves the score (but for those whose
      written reason, --reasons, says they differ);
-  4. each survivor not proven equivalent runs the full group (smoke's tests, then full's).
+  4. each survivor not proven equivalent runs the full group (smoke's tests, then full's); one
+     with a written reason counts as a survivor without the run, unless --full-all.
 Score = killed / (mutants - proven equivalent), for smoke and for full. Writes OUT/mutants.csv
 (one row per mutant: its description, verdict, the test that killed it, the first report line),
 OUT/summary.json and OUT/report.md, with progress on stderr. Each verdict is also appended to
@@ -128,6 +129,9 @@ def main():
                     help="the first group (default smoke: what make test runs; quick: its "
                     "fast part, for the CI-sized sample)")
     ap.add_argument("--no-full", action="store_true", help="the first group only")
+    ap.add_argument("--full-all", action="store_true",
+                    help="run the full group also on survivors with a written reason (by "
+                    "default they count as full-group survivors without the run)")
     ap.add_argument("--no-equiv", action="store_true",
                     help="skip the equivalence proofs of the first group's survivors "
                     "(scripts/mutant_equiv.sh); they then count as survivors")
@@ -284,7 +288,15 @@ def main():
         survivors = stage("equivalence", prove, None,
                           [m for m in survivors if m not in differ], "equiv") + differ
     if not a.no_full and survivors:
-        survivors = stage("full", run_tests, full[len(smoke):], survivors, "full")
+        # A survivor with a written reason is one no test can kill: it counts as a full-group
+        # survivor without the run (which only lowers the score if the reason is wrong), unless
+        # --full-all. Its smoke run has already checked the reason against the smoke group.
+        reasoned = [] if a.full_all else [m for m in survivors
+                                          if reasons.explain(descriptions[m - 1])]
+        for m in reasoned:
+            rows[m]["full"] = "survived (reason)"
+        survivors = stage("full", run_tests, full[len(smoke):],
+                          [m for m in survivors if m not in reasoned], "full") + reasoned
     for m in chosen:
         if not a.no_full and rows[m]["smoke"] == "killed":
             rows[m]["full"] = "killed"
