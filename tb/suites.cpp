@@ -397,6 +397,11 @@ Tally suite_tiles(const Config& c) {
         if (r.chance(0.2)) cs.frame_op({FrameOpKind::kCopyDepthToPeel, {}, 0, false});
         RopState st;
         const uint32_t kind = r.below(6);
+        if (kind >= 4 && r.chance(0.5)) {  // peel against a cleared plane: its clear value's bits
+          zclear = r.below(zmax);
+          cs.frame_op({FrameOpKind::kClearDepth, {}, zclear, false});
+          cs.frame_op({FrameOpKind::kCopyDepthToPeel, {}, 0, false});
+        }
         static const char* kNames[] = {"write-all", "write-none", "read-blend", "coverage",
                                        "peel", "write-none-peel"};
         st.depth_test = kind != 0;
