@@ -152,6 +152,7 @@ struct Sim {
   IssueSchedule schedule{kRtlWindow, size_t(kRtlTileW) * kRtlTileH};  // the cycles' check
   std::vector<uint32_t> pixels;                 // its view of the tile's stream
   std::vector<uint64_t> issue;                  // and its issue cycles
+  std::vector<uint64_t> accepts;                // its accept cycles, under back-pressure
   uint64_t cycle = 0;
   uint64_t dump_from = 0, dump_to = std::numeric_limits<uint64_t>::max();
 
@@ -441,15 +442,21 @@ struct RtlRop::Impl {
     }
     run.stream_end = s.cycle;
     if (s.monitor) go = s.monitor->end_tile(s.cycle - run.load_begin) && go;
-    // Without back-pressure the stream's cycles are the issue schedule's, exactly (a slower
-    // or faster RTL is a defect too: the cost model says what it must take). After the
-    // monitor, so that a wrong write is reported as such first.
-    if (opt.check_timing && thr == 0 && n > 0 && go) {
+    // The stream's cycles are the issue schedule's, exactly (a slower or faster RTL is a
+    // defect too: the cost model says what it must take); under back-pressure, the schedule
+    // of the accepts the RTL made. After the monitor, so that a wrong write is reported as
+    // such first.
+    if (opt.check_timing && n > 0 && go) {
       s.pixels.resize(n);
       for (size_t j = 0; j < n; ++j)
         s.pixels[j] = uint32_t(f[j].y - y0) * kRtlTileW + uint32_t(f[j].x - x0);
       s.issue.resize(n);
-      const uint64_t want = s.schedule.run(s.pixels.data(), n, s.issue.data());
+      if (thr != 0) {
+        s.accepts.resize(n);
+        for (size_t j = 0; j < n; ++j) s.accepts[j] = accept_out[f[j].index] - run.stream_begin;
+      }
+      const uint64_t want = s.schedule.run(s.pixels.data(), n, s.issue.data(),
+                                           thr != 0 ? s.accepts.data() : nullptr);
       // With the monitor, each fragment's too: X4 a fixed number of cycles after its issue.
       if (s.monitor) {
         const auto& x4 = s.monitor->x4_cycles();

@@ -26,8 +26,9 @@ struct RtlOptions {
   // window's defect instead of the blend's (docs/testbench.md "A checker that can fail").
   std::vector<std::string> plusargs;
   bool assertions = true;   // the RTL's assertions; off shows what the comparison alone catches
-  // Without back-pressure each tile's streaming cycles must be the issue schedule's
-  // (rtl_timing.h, the cost model's source): an RTL slower or faster than specified fails.
+  // Each tile's streaming cycles must be the issue schedule's (rtl_timing.h, the cost model's
+  // source; under back-pressure, of the accepts the RTL made): an RTL slower or faster than
+  // specified fails.
   bool check_timing = true;
   // After each store, read the stored planes again: every word must read the same (a tile read
   // leaves the planes as they were, fresh words included). The tiles suite sets it.

@@ -13,7 +13,8 @@ IssueSchedule::IssueSchedule(unsigned window, size_t keys)
   entries_.reserve(window_);
 }
 
-uint64_t IssueSchedule::run(const uint32_t* pixel, size_t n, uint64_t* issue) {
+uint64_t IssueSchedule::run(const uint32_t* pixel, size_t n, uint64_t* issue,
+                            const uint64_t* accept) {
   if (n == 0) return 0;
   if (++run_ == 0) {  // the stamp wrapped: forget every pixel
     std::fill(stamp_.begin(), stamp_.end(), 0);
@@ -36,7 +37,9 @@ uint64_t IssueSchedule::run(const uint32_t* pixel, size_t n, uint64_t* issue) {
         pick = e;
         break;
       }
-    const bool take = next < n && entries_.size() < window_;
+    // In I (or moving there from S) from the cycle after its accept.
+    const uint64_t ready = next < n && accept ? accept[next] + 1 : 0;
+    const bool take = next < n && entries_.size() < window_ && c >= ready;
     const bool picked_one = pick < entries_.size();
     if (picked_one) {
       const Entry picked = entries_[pick];
@@ -69,7 +72,7 @@ uint64_t IssueSchedule::run(const uint32_t* pixel, size_t n, uint64_t* issue) {
     } else if (!picked_one) {
       // Nothing picked and nothing taken: nothing changes until the first entry frees (the
       // oldest entry of each pixel has a finite `earliest`).
-      uint64_t wake = kNever;
+      uint64_t wake = next < n && entries_.size() < window_ ? ready : kNever;
       for (const Entry& e : entries_) wake = std::min(wake, e.earliest);
       c = std::max(c + 1, wake);
       continue;

@@ -32,7 +32,11 @@ class IssueSchedule {
   // Schedules a stream of `n` fragments to pixels `pixel[0..n)`, offered every cycle without
   // back-pressure; writes each one's issue cycle to issue[k] when `issue` is not null. Returns
   // the stream's cycles: the last issue + kRtlDrain (0 for an empty stream).
-  uint64_t run(const uint32_t* pixel, size_t n, uint64_t* issue = nullptr);
+  // With `accept`, fragment k was accepted in cycle accept[k] instead (back-pressure: valid
+  // gaps and stall_i), and the window may take it from cycle accept[k] + 1: the schedule then
+  // says when a stream whose accepts are known must issue.
+  uint64_t run(const uint32_t* pixel, size_t n, uint64_t* issue = nullptr,
+               const uint64_t* accept = nullptr);
   // The same for tile `tile` of `bins` (the driver's stream of that tile), the fragments `f` of
   // a frame `width` pixels wide; issue[k] for the tile's k-th fragment.
   uint64_t run_tile(const TileBins& bins, size_t tile, const Fragment* f, int width,

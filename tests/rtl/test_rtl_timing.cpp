@@ -61,6 +61,25 @@ TEST(IssueSchedule, IssueCyclesByHand) {
   EXPECT_EQ(issue[3], kRtlFirstIssue + 3);
 }
 
+// Under back-pressure, by hand: a fragment enters the window no earlier than the cycle after
+// its accept. Pixels 0, 1, 0 accepted in cycles 0, 5, 6: the first issues at 4; the second is
+// taken at 6, picked at 7, issues at 9; the third is taken at 7 and, its pixel last issued at
+// 4, may be picked from 6: picked at 8, issues at 10. Accepts in cycles 0, 1, 2 give the
+// schedule without gaps.
+TEST(IssueSchedule, AcceptCyclesByHand) {
+  const uint32_t pixels[] = {0, 1, 0};
+  const uint64_t late[] = {0, 5, 6}, every[] = {0, 1, 2};
+  uint64_t issue[3] = {}, plain[3] = {};
+  IssueSchedule schedule;
+  EXPECT_EQ(schedule.run(pixels, 3, issue, late), 10 + kRtlDrain);
+  EXPECT_EQ(issue[0], kRtlFirstIssue);
+  EXPECT_EQ(issue[1], 9u);
+  EXPECT_EQ(issue[2], 10u);
+  const uint64_t cycles = schedule.run(pixels, 3, plain);
+  EXPECT_EQ(schedule.run(pixels, 3, issue, every), cycles);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(issue[k], plain[k]) << "fragment " << k;
+}
+
 // One pixel: the bound is the span, whatever the window.
 TEST(IssueSchedule, OnePixelRunsAtTheSpan) {
   const std::vector<uint32_t> pixels(100, 3);
