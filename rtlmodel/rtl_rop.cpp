@@ -109,15 +109,20 @@ uint32_t get_lane(const Port& port, unsigned lane, unsigned width) {
   }
 }
 
+// The tile port's lane widths per plane (kPlane* order: colour pack_rgba, depth, coverage
+// count, peel depth).
+constexpr unsigned kColorBits = 32, kDepthBits = kRtlDepthBits,
+                   kCovBits = coverage_bits(kRtlCoverageSamples);
+constexpr unsigned kLaneBits[kTilePlanes] = {kColorBits, kDepthBits, kCovBits, kDepthBits};
+
 // The beat the tile port read at the last edge (colour, depth, coverage; peel is never stored).
 template <class Model>
 BeatWords read_beat(const Model& t) {
-  constexpr unsigned cw = 32, dw = kRtlDepthBits, vw = coverage_bits(kRtlCoverageSamples);
   BeatWords w{};
   for (unsigned l = 0; l < unsigned(kRtlBeat); ++l) {
-    w[0][l] = get_lane(t.tile_rcolor_o, l, cw);
-    w[1][l] = get_lane(t.tile_rdepth_o, l, dw);
-    w[2][l] = get_lane(t.tile_rcov_o, l, vw);
+    w[0][l] = get_lane(t.tile_rcolor_o, l, kColorBits);
+    w[1][l] = get_lane(t.tile_rdepth_o, l, kDepthBits);
+    w[2][l] = get_lane(t.tile_rcov_o, l, kCovBits);
   }
   return w;
 }
@@ -125,12 +130,11 @@ BeatWords read_beat(const Model& t) {
 // A beat onto the tile port's write lanes (colour, depth, coverage, peel).
 template <class Model>
 void put_beat(Model& t, const BeatWords& w) {
-  constexpr unsigned cw = 32, dw = kRtlDepthBits, vw = coverage_bits(kRtlCoverageSamples);
   for (unsigned l = 0; l < unsigned(kRtlBeat); ++l) {
-    put_lane(t.tile_wcolor_i, l, cw, w[0][l]);
-    put_lane(t.tile_wdepth_i, l, dw, w[1][l]);
-    put_lane(t.tile_wcov_i, l, vw, w[2][l]);
-    put_lane(t.tile_wpeel_i, l, dw, w[3][l]);
+    put_lane(t.tile_wcolor_i, l, kColorBits, w[0][l]);
+    put_lane(t.tile_wdepth_i, l, kDepthBits, w[1][l]);
+    put_lane(t.tile_wcov_i, l, kCovBits, w[2][l]);
+    put_lane(t.tile_wpeel_i, l, kDepthBits, w[3][l]);
   }
 }
 
@@ -285,8 +289,6 @@ struct RtlRop::Impl {
                 uint64_t* accept_out, TileRun& run, PassStats& stats) const {
     VModel& t = *s.top;
     const TileSweep sweep(src.width, src.height, x0, y0);
-    constexpr unsigned cw = 32, dw = kRtlDepthBits, vw = coverage_bits(kRtlCoverageSamples);
-    constexpr unsigned kLaneBits[kTilePlanes] = {cw, dw, vw, dw};
     // Inputs the port leaves unread in a cycle (state_i without state_we_i; the tile port's
     // fields without tile_req_i or tile_clear_i; a fragment's without frag_valid_i) take random
     // values from a generator of their own, so RTL that reads one where it must not mismatches.
@@ -306,9 +308,9 @@ struct RtlRop::Impl {
     auto idle_fragment = [&] {
       t.frag_x_i = bits(16);
       t.frag_y_i = bits(16);
-      t.frag_z_i = bits(dw);
+      t.frag_z_i = bits(kDepthBits);
       t.frag_rgba_i = bits(32);
-      t.frag_cov_i = bits(vw);
+      t.frag_cov_i = bits(kCovBits);
     };
     // frag_ready_o must be low in a cycle with stall_i, tile_req_i or tile_clear_i (docs/rtl.md
     // "Port timing"); the driver offers no fragment then, so only this check sees a port that

@@ -37,9 +37,10 @@ uint64_t IssueSchedule::run(const uint32_t* pixel, size_t n, uint64_t* issue,
         pick = e;
         break;
       }
-    // In I (or moving there from S) from the cycle after its accept.
-    const uint64_t ready = next < n && accept ? accept[next] + 1 : 0;
-    const bool take = next < n && entries_.size() < window_ && c >= ready;
+    // The next fragment is in I (or moving there from S) from the cycle after its accept.
+    const bool room = next < n && entries_.size() < window_;
+    const uint64_t ready = room && accept ? accept[next] + 1 : 0;
+    const bool take = room && c >= ready;
     const bool picked_one = pick < entries_.size();
     if (picked_one) {
       const Entry picked = entries_[pick];
@@ -72,7 +73,7 @@ uint64_t IssueSchedule::run(const uint32_t* pixel, size_t n, uint64_t* issue,
     } else if (!picked_one) {
       // Nothing picked and nothing taken: nothing changes until the first entry frees (the
       // oldest entry of each pixel has a finite `earliest`).
-      uint64_t wake = next < n && entries_.size() < window_ ? ready : kNever;
+      uint64_t wake = room ? ready : kNever;
       for (const Entry& e : entries_) wake = std::min(wake, e.earliest);
       c = std::max(c + 1, wake);
       continue;
