@@ -21,7 +21,6 @@ KINDS = {
 
 class Reasons:
     def __init__(self, path):
-        self.path = path
         self.entries = []
         with open(path) as f:
             data = json.load(f)

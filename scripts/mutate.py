@@ -180,6 +180,7 @@ def main():
     else:
         chosen = list(range(1, count + 1))
     smoke, full = load_groups(a.group)
+    reason_of = {m: reasons.explain(descriptions[m - 1]) for m in chosen}  # entry or None
     os.makedirs(a.out, exist_ok=True)
     # The run's own copy of the testbench, so that a rebuild meanwhile changes nothing; --resume
     # goes on with the copy its journal came from.
@@ -281,8 +282,7 @@ def main():
         # A survivor whose written reason says it differs (the port contract, a count beyond
         # any run) is not equivalent: the prover would only spend its time limit on it.
         differ = [m for m in survivors
-                  if (reasons.explain(descriptions[m - 1]) or {}).get("kind", "equivalent")
-                  != "equivalent"]
+                  if (reason_of[m] or {}).get("kind", "equivalent") != "equivalent"]
         for m in differ:
             rows[m]["equiv"] = "not tried"
         survivors = stage("equivalence", prove, None,
@@ -291,8 +291,7 @@ def main():
         # A survivor with a written reason is one no test can kill: it counts as a full-group
         # survivor without the run (which only lowers the score if the reason is wrong), unless
         # --full-all. Its smoke run has already checked the reason against the smoke group.
-        reasoned = [] if a.full_all else [m for m in survivors
-                                          if reasons.explain(descriptions[m - 1])]
+        reasoned = [] if a.full_all else [m for m in survivors if reason_of[m]]
         for m in reasoned:
             rows[m]["full"] = "survived (reason)"
         survivors = stage("full", run_tests, full[len(smoke):],
@@ -303,7 +302,7 @@ def main():
     wrong = []  # killed mutants a reason says no test can kill: the reason is wrong
     for m in chosen:  # a written reason for each survivor that has one
         r = rows[m]
-        e = reasons.explain(r["description"])
+        e = reason_of[m]
         if e and r["killed_by"]:
             wrong.append(f"{e['id']} (mutant {m}, killed by {r['killed_by']})")
         elif not r["killed_by"] and r["equiv"] != "equivalent" and r["smoke"] != "not run":
@@ -317,8 +316,7 @@ def main():
     full_killed = sum(1 for r in rows.values() if r["full"] == "killed")
     equivalent = sum(1 for r in rows.values() if r["equiv"] == "equivalent")
     denom = max(1, n - equivalent)  # the score is over the mutants not proven equivalent
-    last = "smoke" if a.no_full else "full"
-    left = [r for r in rows.values() if r[last] not in ("killed", "") and r["equiv"] != "equivalent"]
+    left = [r for r in rows.values() if not r["killed_by"] and r["equiv"] != "equivalent"]
     summary = {
         "mutants": n, "netlist_mutants": count, "left_out_by_time_limit": asked - n,
         "proven_equivalent": equivalent, "equivalence_checked": not a.no_equiv,
@@ -342,7 +340,7 @@ def main():
             w.writerow(r)
     with open(os.path.join(a.out, "summary.json"), "w") as f:
         json.dump(summary, f, indent=2)
-    write_report(os.path.join(a.out, "report.md"), summary, rows, chosen, reasons)
+    write_report(os.path.join(a.out, "report.md"), summary, rows, chosen, left, reasons)
 
     line = (f"mutate: {n} mutants, {equivalent} proven equivalent; {a.group} killed "
             f"{smoke_killed} ({summary['smoke_score']} % of the rest)")
@@ -387,7 +385,7 @@ def load_journal(path, descriptions):
     return done, limits
 
 
-def write_report(path, s, rows, chosen, reasons):
+def write_report(path, s, rows, chosen, left, reasons):
     by_test = {}
     for r in rows.values():
         if r["killed_by"]:
@@ -406,7 +404,6 @@ def write_report(path, s, rows, chosen, reasons):
                       + (f" ({r['report']})" if r["report"] and not r["killed_by"] else ""))
     some = [rows[m] for m in chosen if rows[m]["equiv"] == "equivalent"]
     lines += ["", f"## Proven equivalent ({len(some)})", ""] + [item(r) for r in some]
-    left = [rows[m] for m in chosen if not rows[m]["killed_by"] and rows[m]["equiv"] != "equivalent"]
     lines += ["", f"## Survivors ({len(left)}: {s['survivors_with_reason']} with a written "
               f"reason from {s['reasons_file']})"]
     for e in reasons.entries:
