@@ -5,12 +5,10 @@
 # spoils, naming the fragment, the cycle, both values and the pixel's history, with an FST that
 # replays it; and the unmutated netlist (mutant 0) must pass the same run.
 set -u
-tb=${1:?usage: test_mutant_caught.sh PATH/TO/zblend_tb_mut PATH/TO/mutations.txt}
-mutations=${2:?usage: test_mutant_caught.sh PATH/TO/zblend_tb_mut PATH/TO/mutations.txt}
-source "$(dirname "$0")/../rtl/checker_lib.sh"
+source "$(dirname "$0")/mutant_lib.sh" "$@"
 
-grep -q '^mutate -mode const1 -module zb_rop -cell u_depth.u_cov_plane.g_bank\[3\].u_mem.mem_q -port RD_ADDR -portbit 6 ' \
-  <(head -1 "$mutations") || fail "mutant 1 is not the coverage read-address mutant this test expects: $(head -1 "$mutations")"
+expect_mutant 1 '^mutate -mode const1 -module zb_rop -cell u_depth.u_cov_plane.g_bank\[3\].u_mem.mem_q -port RD_ADDR -portbit 6 ' \
+  "the coverage read-address mutant"
 args=(--suite random --seed 1 --fragments 300000)
 "$tb" --mutant 0 "${args[@]}" -q --mismatch-fst "" >"$tmp/out.txt" 2>&1 ||
   fail "the unmutated netlist (mutant 0) fails: it is not zb_rop"

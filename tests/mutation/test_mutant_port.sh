@@ -5,12 +5,9 @@
 # (frag_ready_o ignores all three); the run must stop at the first such cycle, naming it, and
 # the unmutated netlist must pass the same runs.
 set -u
-tb=${1:?usage: test_mutant_port.sh PATH/TO/zblend_tb_mut PATH/TO/mutations.txt}
-mutations=${2:?usage: test_mutant_port.sh PATH/TO/zblend_tb_mut PATH/TO/mutations.txt}
-source "$(dirname "$0")/../rtl/checker_lib.sh"
+source "$(dirname "$0")/mutant_lib.sh" "$@"
 
-sed -n 1130p "$mutations" | grep -q -- '-mode const0 .* -wire u_input.hold_i -wirebit 0 ' ||
-  fail "mutant 1130 is not the hold_i mutant this test expects: $(sed -n 1130p "$mutations")"
+expect_mutant 1130 '-mode const0 .* -wire u_input.hold_i -wirebit 0 ' "the hold_i mutant"
 for args in "--suite tiles --seed 1" "--suite random --seed 2 --fragments 20000 --backpressure 0.3"; do
   # shellcheck disable=SC2086
   "$tb" --mutant 0 $args -q --mismatch-fst "" >"$tmp/out.txt" 2>&1 || fail "mutant 0 fails $args"

@@ -6,12 +6,10 @@
 # the timing check under back-pressure sees it: the run must stop naming the late fragment,
 # pass with --no-timing-check, and the unmutated netlist must pass with the check.
 set -u
-tb=${1:?usage: test_mutant_timing.sh PATH/TO/zblend_tb_mut PATH/TO/mutations.txt}
-mutations=${2:?usage: test_mutant_timing.sh PATH/TO/zblend_tb_mut PATH/TO/mutations.txt}
-source "$(dirname "$0")/../rtl/checker_lib.sh"
+source "$(dirname "$0")/mutant_lib.sh" "$@"
 
-sed -n 194p "$mutations" | grep -q -- '-mode const0 -module zb_rop -cell $flatten\\u_input.$not$rtl/zb_input.sv:54' ||
-  fail "mutant 194 is not the I-free mutant this test expects: $(sed -n 194p "$mutations")"
+expect_mutant 194 '-mode const0 -module zb_rop -cell $flatten\\u_input.$not$rtl/zb_input.sv:54' \
+  "the I-free mutant"
 args=(--suite random --seed 1000 --fragments 50000 --backpressure 0.3 -q --mismatch-fst "")
 "$tb" --mutant 0 "${args[@]}" >"$tmp/out.txt" 2>&1 || fail "mutant 0 fails under back-pressure"
 "$tb" --mutant 194 --no-timing-check "${args[@]}" >"$tmp/out.txt" 2>&1 ||

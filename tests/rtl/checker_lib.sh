@@ -2,7 +2,7 @@
 # $tb set to the testbench program. It makes $tmp and removes it at exit.
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; echo "--- output:"; cat "$tmp/out.txt"; exit 1; }
+fail() { echo "FAIL: $*"; [[ -f $tmp/out.txt ]] && { echo "--- output:"; cat "$tmp/out.txt"; }; exit 1; }
 
 # run NAME ARGS...: the run fails (exit 1) and writes an FST.
 run() {
