@@ -554,16 +554,23 @@ struct RtlRop::Impl {
                 "which read {:#x}: the store changed the plane",
                 x0, y0, kPlane[p], w[p][l], b, l, first[b][p][l]));
     }
+    const uint64_t beats = first.size(), most = 2 * beats - 1;  // 2^TileCntW - 1
     t.tile_we_i = 1;
     t.tile_planes_i = planes;
     for (size_t b = 0; b < first.size(); ++b) {
       t.tile_addr_i = uint32_t(b);
       put_beat(t, first[b]);
       s.tick();
+      // The store count reached all ones at the last read; a saturated count holds, every
+      // cycle (a hold that rewrites the count shows only at some cycles).
+      if (t.cnt_tile_stores_o != most)
+        throw std::runtime_error(fmt::format(
+            "rtl: tile ({},{}) store count {} at load-back beat {} after its store was read "
+            "again: saturated at {}, it must hold there",
+            x0, y0, t.cnt_tile_stores_o, b, most));
     }
     t.tile_req_i = 0;
     t.tile_we_i = 0;
-    const uint64_t beats = first.size(), most = 2 * beats - 1;  // 2^TileCntW - 1
     const uint64_t loads = std::min(most, (loaded ? beats : 0) + beats);
     if (t.cnt_tile_stores_o != most || t.cnt_tile_loads_o != loads)
       throw std::runtime_error(fmt::format(

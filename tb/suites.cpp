@@ -30,25 +30,6 @@ CosimOptions cosim_options(const Config& c, uint64_t seed) {
   return o;
 }
 
-namespace {
-
-// The share of a suite's work done, reported to c.progress: `total` units, added as done.
-class Progress {
- public:
-  Progress(const Config& c, uint64_t total) : c_(c), total_(std::max<uint64_t>(1, total)) {}
-  void add(uint64_t n = 1) {
-    done_ += n;
-    if (c_.progress) c_.progress(std::min(1.0, double(done_) / double(total_)));
-  }
-
- private:
-  const Config& c_;
-  uint64_t total_;
-  uint64_t done_ = 0;
-};
-
-// Runs one iteration's body on a fresh Cosim; folds its counts into `t`. Returns false on a
-// mismatch (the report is printed) so the suite stops.
 bool run_iteration(const char* suite, const Config& c, uint64_t seed, Tally& t,
                    const std::function<void(Cosim&)>& body) {
   Cosim cosim(cosim_options(c, seed));
@@ -76,8 +57,6 @@ bool run_iteration(const char* suite, const Config& c, uint64_t seed, Tally& t,
                              (unsigned long long)cosim.fragments());
   return ok;
 }
-
-}  // namespace
 
 void draw_pass(Cosim& cs, const std::string& name, const RopState& st,
                const std::vector<Fragment>& f) {
@@ -611,6 +590,10 @@ const std::vector<Suite>& suites() {
       {"tiles",
        "fast-clear bookkeeping: passes that write nothing between clears, one or two tiles",
        suite_tiles},
+      {"clears",
+       "a store's last write-back meeting the next fast clear, then clears with no store "
+       "between, probed at every pixel",
+       suite_clears},
       {"blend",
        "alpha and additive over all 2^24 (s, a, d), 2^16 (a, d) on A; coverage over all "
        "(k, s, d)",

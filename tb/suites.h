@@ -53,6 +53,26 @@ struct Rng {  // splitmix64: suites' stimulus
 // The Cosim options of one iteration: back-pressure pattern `seed`, the run's waveforms.
 CosimOptions cosim_options(const Config& c, uint64_t seed);
 
+// The share of a suite's work done, reported to c.progress: `total` units, added as done.
+class Progress {
+ public:
+  Progress(const Config& c, uint64_t total) : c_(c), total_(total > 0 ? total : 1) {}
+  void add(uint64_t n = 1) {
+    done_ += n;
+    if (c_.progress) c_.progress(done_ >= total_ ? 1.0 : double(done_) / double(total_));
+  }
+
+ private:
+  const Config& c_;
+  uint64_t total_;
+  uint64_t done_ = 0;
+};
+
+// Runs one iteration's body on a fresh Cosim; folds its counts into `t`. Returns false on a
+// mismatch (the report is printed) so the suite stops.
+bool run_iteration(const char* suite, const Config& c, uint64_t seed, Tally& t,
+                   const std::function<void(Cosim&)>& body);
+
 // One labelled pass: begin, draw `f`, end (compares).
 void draw_pass(Cosim& cs, const std::string& name, const RopState& st,
                const std::vector<Fragment>& f);
@@ -77,6 +97,7 @@ Tally suite_random(const Config& c);  // constrained-random states and streams
 Tally suite_hazard(const Config& c);  // runs on 1-4 pixels; fragments per clock
 Tally suite_window(const Config& c);  // directed issue-window streams
 Tally suite_tiles(const Config& c);   // fast-clear bookkeeping across passes and tiles
+Tally suite_clears(const Config& c);  // a store's write-back meeting the next clear (suite_clears.cpp)
 Tally suite_blend(const Config& c);   // the blend unit, exhaustively, through the pipeline
 
 struct Suite {
