@@ -6,7 +6,7 @@ ZBLEND     := $(BUILD)/zblend
 RUN_SIZE   ?= --width 640 --height 480
 
 .DEFAULT_GOAL := build
-.PHONY: help setup build run test test-asan mutate bench bench-verilator profile-rtl synth formal systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
+.PHONY: help setup build run test test-asan regress mutate bench bench-verilator profile-rtl synth formal systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
 
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | awk -F'\t' '{printf "%-16s %s\n", $$1, $$2}'
@@ -36,6 +36,14 @@ test-asan: setup ## The tests built with AddressSanitizer and UndefinedBehaviorS
 	  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DZBLEND_SANITIZE=ON
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS)
+
+# The regression runner (docs/regressions.md): a group of tb/regressions.json on JOBS local
+# processes; JUnit XML, HTML summary, failing tests again with waves. make test runs smoke.
+GROUP        ?= nightly
+REGRESS_ARGS ?=
+
+regress: build ## Run GROUP (default nightly) of tb/regressions.json: out/regress/GROUP/summary.html, junit.xml
+	python3 scripts/regress.py run $(GROUP) -j $(JOBS) --build $(BUILD) --out out/regress/$(GROUP) $(REGRESS_ARGS)
 
 bench: build ## Benchmarks: datapath, golden vs llvmpipe, memory, RTL, cost growth: out/bench/
 	@/usr/bin/python3 scripts/bench.py --build $(BUILD) --out out/bench
@@ -73,11 +81,11 @@ mutate: build ## Mutation score: zb_rop's 1200 Yosys mutants, smoke group, equiv
 	python3 scripts/mutate.py --build $(BUILD) --out out/mutate -j $(JOBS) $(MUTATE_ARGS)
 
 # Only zblend is built, its log shown only if the build fails; render makes out/waves/.
-waves: setup $(BUILD)/CMakeCache.txt ## Render `cad` on the RTL with a waveform: out/waves/cad.fst
+waves: setup $(BUILD)/CMakeCache.txt ## Render `cad` on the RTL with a waveform and its GTKWave save file: out/waves/cad.fst, .gtkw
 	@log=$$(cmake --build $(BUILD) -j $(JOBS) --target zblend 2>&1) || { printf '%s\n' "$$log"; exit 1; }
 	@$(ZBLEND) render --scene cad --method three-pass --width 128 --height 96 --backend rtl \
 	  --out out/waves/cad.png --waves out/waves/cad.fst
-	@echo "open it: gtkwave out/waves/cad.fst  (or surfer out/waves/cad.fst)"
+	@echo "open it: gtkwave out/waves/cad.gtkw  (its save file: signals by stage; or surfer out/waves/cad.fst)"
 
 # The methods lab (docs/lab.md): the sweeps first, so that the lab's report takes them in.
 LAB_DIR ?= out/lab

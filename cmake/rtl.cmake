@@ -48,7 +48,8 @@ set(ZBLEND_VERILATOR_OPT_FAST "" CACHE STRING "C++ flags added to the model's ho
 # widths above. BUG adds the deliberate defects the checkers must catch, each switched on by a
 # plusarg (+zb_bug_blend, +zb_bug_window); SYSTEMC builds it with --sc. MUTANTS builds Yosys's
 # netlist of zb_rop's mutants (mutation/CMakeLists.txt) in its wrapper instead of rtl/: a
-# generated netlist, so no -Wall, and no assertions (Yosys drops them).
+# generated netlist, so no -Wall, and no assertions (Yosys drops them). TRACE adds FST tracing
+# and the waveform probe, model PREFIX_probe.
 function(zblend_verilate target)
   cmake_parse_arguments(V "SYSTEMC;BUG;COVERAGE;TRACE" "PREFIX;DIRECTORY;MUTANTS" "" ${ARGN})
   set(args --assert ${ZBLEND_VERILATOR_OPT} -Wall ${ZBLEND_RTL_PARAMS})
@@ -83,6 +84,14 @@ function(zblend_verilate target)
     VERILATOR_ARGS ${args})
   if(V_SYSTEMC)
     verilator_link_systemc(${target})  # verilate() only sets VM_SC; this adds libsystemc
+  endif()
+  if(V_TRACE)
+    # The testbench's probe (rtlmodel/zb_wave_probe.sv), traced into the same FST as zb_rop.
+    verilate(${target} TRACE_FST
+      SOURCES ${PROJECT_SOURCE_DIR}/rtlmodel/zb_wave_probe.sv
+      TOP_MODULE zb_wave_probe PREFIX ${V_PREFIX}_probe
+      DIRECTORY ${V_DIRECTORY}_probe
+      VERILATOR_ARGS -Wall)
   endif()
   # Generated and Verilator runtime code: not held to the project's warning flags.
   target_compile_options(${target} PRIVATE -w -Wno-error)

@@ -57,6 +57,9 @@ class RetireSink {
   virtual ~RetireSink() = default;
   virtual bool retire(const Retire& r) = 0;
   virtual bool store(const StoreBeat& b) = 0;
+  // The golden model's writes for `fragment` of the pass, for the waveform's probe; null when
+  // the sink does not know them.
+  virtual const PixelWrites* expected(uint32_t /*fragment*/) const { return nullptr; }
 };
 
 // One model's monitor, a tile at a time.

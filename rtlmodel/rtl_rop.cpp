@@ -21,22 +21,29 @@
 #include "parallel/parallel.h"
 #include "rtl_timing.h"
 #include "tile_bins.h"
+#include "waves.h"
 
 #ifdef ZB_RTL_BUG
 #include "Vzb_rop_bug.h"
+#include "Vzb_rop_bug_probe.h"
 #include "Vzb_rop_bug_zb_rop.h"
 using VModel = Vzb_rop_bug;
 using VParams = Vzb_rop_bug_zb_rop;
+using VProbe = Vzb_rop_bug_probe;
 #elif defined(ZB_RTL_MUT)
 #include "Vzb_rop_mut.h"
+#include "Vzb_rop_mut_probe.h"
 #include "Vzb_rop_mut_zb_rop.h"
 using VModel = Vzb_rop_mut;
 using VParams = Vzb_rop_mut_zb_rop;
+using VProbe = Vzb_rop_mut_probe;
 #else
 #include "Vzb_rop.h"
+#include "Vzb_rop_probe.h"
 #include "Vzb_rop_zb_rop.h"
 using VModel = Vzb_rop;
 using VParams = Vzb_rop_zb_rop;
+using VProbe = Vzb_rop_probe;
 #endif
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -145,38 +152,53 @@ struct Streamed {
   uint8_t cov;
 };
 
-// One Verilated model with its context, clock and optional FST.
+// One Verilated model with its context, clock and optional FST. The FST opens at the first
+// cycle it holds (dump_from), so its time starts there; beside zb_rop it holds the testbench's
+// probe (waves.h), and its GTKWave save file is written when it closes.
 struct Sim {
   std::unique_ptr<VerilatedContext> ctx;
   std::unique_ptr<VModel> top;
   std::unique_ptr<VerilatedFstC> fst;
+  std::string fst_path;
+  std::unique_ptr<VProbe> probe;
+  WaveProbe wave;                           // the probe's inputs for the coming cycle
+  WaveView view;                            // the save file's
   CoverageTotals* coverage = nullptr;
-  std::unique_ptr<RetireMonitor> monitor;   // with RtlOptions::retire_sink
+  std::unique_ptr<ProbeSink> probe_sink;    // with an FST: the monitor's transactions shown
+  std::unique_ptr<RetireMonitor> monitor;   // with RtlOptions::retire_sink or an FST
   std::vector<uint32_t> tile_addr, tile_index;  // the monitor's view of the tile's stream
   IssueSchedule schedule{kRtlWindow, size_t(kRtlTileW) * kRtlTileH};  // the cycles' check
   std::vector<uint32_t> pixels;                 // its view of the tile's stream
   std::vector<uint64_t> issue;                  // and its issue cycles
   std::vector<uint64_t> accepts;                // its accept cycles, under back-pressure
   uint64_t cycle = 0;
-  uint64_t dump_from = 0, dump_to = std::numeric_limits<uint64_t>::max();
+  uint64_t dump_from, dump_to;
 
-  Sim(const std::string& fst_path, const RtlOptions& o, CoverageTotals* totals = nullptr)
-      : ctx(std::make_unique<VerilatedContext>()), coverage(totals) {
-    if (o.retire_sink) monitor = std::make_unique<RetireMonitor>(*o.retire_sink);
+  // `path`: an FST of cycles [from, to] when set.
+  Sim(const std::string& path, const RtlOptions& o, CoverageTotals* totals = nullptr,
+      uint64_t from = 0, uint64_t to = std::numeric_limits<uint64_t>::max())
+      : ctx(std::make_unique<VerilatedContext>()), fst_path(path), coverage(totals),
+        dump_from(from), dump_to(to) {
+    if (!path.empty()) {
+      probe_sink = std::make_unique<ProbeSink>(o.retire_sink, wave);
+      monitor = std::make_unique<RetireMonitor>(*probe_sink);
+    } else if (o.retire_sink) {
+      monitor = std::make_unique<RetireMonitor>(*o.retire_sink);
+    }
     std::vector<const char*> argv{"zb_rop"};
     for (const std::string& a : o.plusargs) argv.push_back(a.c_str());
     ctx->commandArgs(int(argv.size()), argv.data());
     ctx->assertOn(o.assertions);
     ctx->fatalOnError(true);
-    if (!fst_path.empty()) ctx->traceEverOn(true);  // before the model exists
+    if (!path.empty()) ctx->traceEverOn(true);  // before the model exists
     top = std::make_unique<VModel>(ctx.get(), "zb_rop");
-    if (!fst_path.empty()) {
-      const std::filesystem::path p(fst_path);
+    if (!path.empty()) {
+      const std::filesystem::path p(path);
       if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+      probe = std::make_unique<VProbe>(ctx.get(), "tb");
       fst = std::make_unique<VerilatedFstC>();
       top->trace(fst.get(), 99);
-      fst->open(fst_path.c_str());
-      if (!fst->isOpen()) throw std::runtime_error("cannot write waveform " + fst_path);
+      probe->trace(fst.get(), 99);
     }
     top->clk_i = 0;
     top->rst_ni = 0;
@@ -202,8 +224,16 @@ struct Sim {
     Verilated::threadContextp(ctx.get());
     top->final();
     add_coverage();
-    if (fst) fst->close();
+    if (fst && fst->isOpen()) {
+      fst->close();
+      try {
+        write_save_file(fst_path, view);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "zblend: %s\n", e.what());
+      }
+    }
     fst.reset();
+    probe.reset();
     top.reset();
   }
   Sim(const Sim&) = delete;
@@ -237,16 +267,43 @@ struct Sim {
   // Time 2c is cycle c's falling edge, 2c+1 its rising edge. The inputs must be evaluated
   // before the rising edge: Verilator's assertions read the values of the last evaluation,
   // so inputs set after the falling edge's evaluation would reach them a cycle late.
+  // The waveform's time: 10 ns a cycle (waves.h).
   void tick() {
+    const bool dump = fst && cycle - dump_from <= dump_to - dump_from;
+    if (dump && !fst->isOpen()) {
+      fst->open(fst_path.c_str());
+      if (!fst->isOpen()) throw std::runtime_error("cannot write waveform " + fst_path);
+    }
+    if (dump) show_probe();
     top->clk_i = 0;
-    ctx->time(2 * cycle);
+    ctx->time(wave_fall_ps(cycle));
     top->eval();
-    if (fst && cycle - dump_from <= dump_to - dump_from) fst->dump(2 * cycle);
+    if (dump) fst->dump(wave_fall_ps(cycle));
     top->clk_i = 1;
-    ctx->time(2 * cycle + 1);
+    ctx->time(wave_rise_ps(cycle));
     top->eval();
-    if (fst && cycle - dump_from <= dump_to - dump_from) fst->dump(2 * cycle + 1);
+    if (dump) fst->dump(wave_rise_ps(cycle));
+    wave.next_cycle();
     ++cycle;
+  }
+
+  void show_probe() {
+    VProbe& p = *probe;
+    p.pass_no = wave.pass_no;
+    p.frag_index = wave.frag_index;
+    p.frag_prim = wave.frag_prim;
+    p.x4_retire = wave.x4_retire;
+    p.x4_index = wave.x4_index;
+    p.x4_golden_dwe = wave.x4_dwe;
+    p.x4_golden_depth = wave.x4_depth;
+    p.x4_golden_vwe = wave.x4_vwe;
+    p.x4_golden_cov = wave.x4_cov;
+    p.x11_retire = wave.x11_retire;
+    p.x11_index = wave.x11_index;
+    p.x11_golden_cwe = wave.x11_cwe;
+    p.x11_golden_color = wave.x11_color;
+    p.mismatch = wave.mismatch || cycle == view.mismatch;
+    p.eval();
   }
 };
 
@@ -413,6 +470,8 @@ struct RtlRop::Impl {
       } else {
         idle_fragment();
       }
+      s.wave.frag_index = valid ? f[k].index : WaveProbe::kNone;
+      s.wave.frag_prim = valid ? frags[f[k].index].prim : WaveProbe::kNone;
       // frag_ready_o follows stall_i within the cycle, so a changed stall_i needs an eval;
       // without back-pressure only flops move it, and the last edge's eval already shows it.
       if (thr != 0 || k == 0) t.eval();
@@ -432,6 +491,7 @@ struct RtlRop::Impl {
     }
     t.frag_valid_i = 0;
     t.stall_i = 0;
+    s.wave.frag_index = s.wave.frag_prim = WaveProbe::kNone;
     const uint64_t last = s.cycle;
     while (t.busy_o) {
       idle_fragment();
@@ -652,6 +712,7 @@ PassStats RtlRop::end_pass() {
   const int tx = m.tiles_x();
   auto run = [&](Sim& s, size_t j) {
     const size_t tile = touched[j];
+    s.wave.pass_no = uint32_t(m.pass_no);
     const uint32_t b = m.tile_first[tile], e = m.tile_first[tile + 1];
     return m.run_tile(s, m.fb, m.fb, int(tile % tx) * kRtlTileW, int(tile / tx) * kRtlTileH,
                       ios[j], m.binned.data() + b, e - b, m.tile_seed(m.pass_no, tile),
@@ -720,8 +781,11 @@ const std::vector<uint64_t>& RtlRop::accept_cycles() const { return impl_->accep
 const std::vector<TileRun>& RtlRop::tile_runs() const { return impl_->runs; }
 uint64_t RtlRop::pass_number() const { return impl_->pass_no == 0 ? 0 : impl_->pass_no - 1; }
 
+void RtlRop::mark_waves(const WaveView& view) { impl_->sim.view = view; }
+
 Framebuffer RtlRop::replay_tile(const Framebuffer& before, int x0, int y0,
-                                const std::string& fst_path, uint64_t from, uint64_t to) const {
+                                const std::string& fst_path, uint64_t from, uint64_t to,
+                                const WaveView& view) const {
   const Impl& m = *impl_;
   const TileRun* found = nullptr;
   for (const TileRun& r : m.runs)
@@ -734,11 +798,23 @@ Framebuffer RtlRop::replay_tile(const Framebuffer& before, int x0, int y0,
     VerilatedContext* ctx;
     ~RestoreContext() { Verilated::threadContextp(ctx); }
   } restore{m.sim.ctx.get()};
+  // The run already judged these writes: the replay's monitor only names them in the probe,
+  // with the golden writes the run's sink holds.
+  struct Shows final : RetireSink {
+    const RetireSink* run = nullptr;
+    bool retire(const Retire&) override { return true; }
+    bool store(const StoreBeat&) override { return true; }
+    const PixelWrites* expected(uint32_t f) const override {
+      return run ? run->expected(f) : nullptr;
+    }
+  } shows;
+  shows.run = m.opt.retire_sink;
   RtlOptions quiet = m.opt;
-  quiet.retire_sink = nullptr;  // the run already judged these writes
-  Sim sim(fst_path, quiet);
-  sim.dump_from = from;
-  sim.dump_to = to;
+  quiet.retire_sink = &shows;
+  quiet.check_timing = false;  // the waveform is wanted whatever the timing
+  Sim sim(fst_path, quiet, nullptr, from, to);
+  sim.view = view;
+  sim.wave.pass_no = uint32_t(m.pass_no - 1);
   // Same cycle numbers as the original run, so the waveform's times match the report.
   sim.cycle = found->load_begin;
   std::vector<uint64_t> accepted(m.frags.size(), 0);

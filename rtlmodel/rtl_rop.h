@@ -13,6 +13,7 @@
 #include "rop/backend.h"
 #include "rtl_params.h"
 #include "tile_io.h"
+#include "waves.h"
 
 namespace zb {
 
@@ -99,9 +100,13 @@ class RtlRop final : public Backend {
 
   // Replays the last pass's tile at origin (x0, y0) on a fresh model, starting from `before`
   // (the frame as it was at the start of that pass), dumping an FST of cycles [from, to] to
-  // `fst_path`. Returns the tile's frame after the replay (only that tile's pixels updated).
+  // `fst_path`, and its save file showing `view` (waves.h). Returns the tile's frame after the
+  // replay (only that tile's pixels updated). A fresh model holds no state of earlier passes
+  // (the planes' fast-clear epochs): a defect that needs them may not show in the replay.
   Framebuffer replay_tile(const Framebuffer& before, int x0, int y0, const std::string& fst_path,
-                          uint64_t from, uint64_t to) const;
+                          uint64_t from, uint64_t to, const WaveView& view) const;
+  // What the save file of the run's own FST (RtlOptions::trace_path) shows: markers, zoom.
+  void mark_waves(const WaveView& view);
 
  private:
   struct Impl;

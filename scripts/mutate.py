@@ -34,6 +34,7 @@ import subprocess
 import sys
 import time
 
+import regressions
 from mutant_reasons import KINDS, Reasons
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -47,9 +48,14 @@ def usage_error(msg):
 
 
 def load_groups(first):
-    with open(os.path.join(ROOT, "tb", "regressions.json")) as f:
-        groups = json.load(f)["groups"]
-    return groups[first], groups[first] + groups["full"]
+    try:
+        groups = regressions.load()
+    except regressions.RegressionError as err:
+        usage_error(str(err))
+    tests = groups[first] + groups["full"]
+    if any(t["tool"] != "tb" for t in tests):
+        usage_error(f"tb/regressions.json: groups {first} and full may hold zblend_tb tests only")
+    return groups[first], tests
 
 
 def parse_mutants(spec, count):

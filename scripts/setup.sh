@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Installs the Debian packages zblend needs, only those missing. Quiet when all are present.
-# Usage: setup.sh [synth|profile]   (synth: also nextpnr-ice40 and IceStorm, for `make synth`;
-# profile: also perf, for `make profile-rtl`). Yosys, its yosys-smtbmc and z3 are always in:
-# `make test` runs the CI-sized `make formal`.
+# Usage: setup.sh [synth|profile|view]   (synth: also nextpnr-ice40 and IceStorm, for `make
+# synth`; profile: also perf, for `make profile-rtl`; view: Chromium and ImageMagick, to look at
+# HTML reports and waves headless and take screenshots). Always in: Yosys, its yosys-smtbmc and
+# z3 (`make test` runs the CI-sized `make formal`); GNU parallel, Slurm and munge (the regression
+# runner's tests, docs/regressions.md); GTKWave and Xvfb (the waves' test).
 set -euo pipefail
 
 packages=(
@@ -15,13 +17,17 @@ packages=(
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
   python3-matplotlib
   yosys z3
+  parallel slurm-wlm munge
+  gtkwave xvfb xauth
 )
 if [[ ${1:-} == synth ]]; then
   packages+=(nextpnr-ice40 fpga-icestorm)
 elif [[ ${1:-} == profile ]]; then
   packages+=(linux-perf)
+elif [[ ${1:-} == view ]]; then
+  packages+=(chromium imagemagick)
 elif [[ $# -gt 0 ]]; then
-  echo "setup: error: unknown group '$1' (choose synth or profile)" >&2
+  echo "setup: error: unknown group '$1' (choose synth, profile or view)" >&2
   exit 2
 fi
 

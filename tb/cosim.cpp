@@ -1,5 +1,7 @@
 #include "cosim.h"
 
+#include <filesystem>
+
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
@@ -140,9 +142,13 @@ void Cosim::report_pixel(int x, int y, size_t differing) {
   o << pixel_history(x, y, lo, hi, 64);
   const TileRun* run = tile_run(x, y);
   std::string fst;
-  if (run && !opt_.mismatch_fst.empty()) {
-    o << waveform(x, y, *run, lo, hi, fst);
-  } else if (!run) {
+  WaveView view;
+  view.markers = accept_markers(x, y);
+  view.title = "pixel (" + std::to_string(x) + "," + std::to_string(y) + ") differs after " +
+               pass_label() + "; markers: its fragments' accepts";
+  if (run) {
+    o << waveform(x, y, *run, lo, hi, view, fst);
+  } else {
     o << "  waveform: the pass did not stream the tile of (" << x << "," << y
       << "): the pixel changed without a fragment\n";
   }
@@ -219,25 +225,54 @@ std::string Cosim::pixel_history(int x, int y, uint64_t& lo, uint64_t& hi, size_
   return o.str();
 }
 
+std::vector<WaveMarker> Cosim::accept_markers(int x, int y, size_t last) const {
+  const std::vector<Fragment>& frags = rtl_.pass_fragments();
+  const std::vector<uint64_t>& acc = rtl_.accept_cycles();
+  std::vector<WaveMarker> m;
+  for (size_t i = 0; i < frags.size() && i <= last; ++i)
+    if (frags[i].x == x && frags[i].y == y)
+      m.push_back({acc[i], "#" + std::to_string(i) + " accepted"});
+  constexpr size_t kMost = 25;  // GTKWave's 26 named markers, one kept for the wrong write
+  if (m.size() > kMost) m.erase(m.begin(), m.end() - kMost);  // the latest
+  return m;
+}
+
 std::string Cosim::waveform(int x, int y, const TileRun& run, uint64_t lo, uint64_t hi,
-                            std::string& fst) const {
+                            WaveView view, std::string& fst) {
   uint64_t from = run.load_begin, to = run.store_end;  // nothing streamed: the whole tile
   if (lo <= hi) {
     from = std::max(run.load_begin, lo > opt_.window ? lo - opt_.window : 0);
     to = std::min(hi + opt_.window, run.store_end);
   }
+  view.from = from;
+  view.to = to;
+  std::ostringstream o;
+  if (!opt_.rtl.trace_path.empty()) {  // the run's own FST: its save file shows the same
+    rtl_.mark_waves(view);
+    o << "  trace: " << opt_.rtl.trace_path << " with its save file "
+      << std::filesystem::path(opt_.rtl.trace_path).replace_extension(".gtkw").string()
+      << " (written as the run ends), zoomed to cycles " << from << ".." << to << "\n";
+  }
+  if (opt_.mismatch_fst.empty()) return o.str();
   const int x0 = run.x0, y0 = run.y0;
   const Framebuffer& rf = rtl_.framebuffer();
-  std::ostringstream o;
   try {
-    const Framebuffer replayed = rtl_.replay_tile(before_, x0, y0, opt_.mismatch_fst, from, to);
+    const Framebuffer replayed =
+        rtl_.replay_tile(before_, x0, y0, opt_.mismatch_fst, from, to, view);
     fst = opt_.mismatch_fst;
     const bool same = replayed.color_at(x, y) == rf.color_at(x, y) &&
                       replayed.depth_at(x, y) == rf.depth_at(x, y) &&
                       replayed.coverage_at(x, y) == rf.coverage_at(x, y);
     o << "  waveform: " << fst << " (cycles " << from << ".." << to << " of tile (" << x0 << ","
-      << y0 << "), time = 2*cycle+1 at the rising edge; replay "
-      << (same ? "reproduced the RTL's pixel" : "did NOT reproduce the RTL's pixel") << ")\n";
+      << y0 << "); a 10 ns clock, cycle c's rising edge at 10c+5 ns; replay "
+      << (same ? "reproduced the RTL's pixel" : "did NOT reproduce the RTL's pixel: its "
+                                                "fresh model lacks earlier passes' state")
+      << ")\n";
+    o << "  save file: " << std::filesystem::path(fst).replace_extension(".gtkw").string()
+      << " (gtkwave " << std::filesystem::path(fst).replace_extension(".gtkw").string()
+      << "): signals by stage, markers at "
+      << (view.mismatch != WaveView::kNone ? "the first wrong write and " : "")
+      << "the pixel's accepts\n";
   } catch (const std::exception& e) {
     o << "  waveform: not written: " << e.what() << "\n";
   }
@@ -252,7 +287,7 @@ void Cosim::report_divergence(const Divergence& d) {
   ++mismatches_;
   std::ostringstream o;
   o << "LOCKSTEP MISMATCH in " << pass_label() << ": the first wrong write, at cycle " << cycle
-    << " (its edge at time " << 2 * cycle + 1 << ")\n";
+    << " (its rising edge at " << wave_rise_text(cycle) << ")\n";
   if (!d.store && r.fragment != Retire::kNoFragment) {
     const Fragment& f = rtl_.pass_fragments().at(r.fragment);
     o << "  fragment #" << r.fragment << " (primitive " << f.prim << ") at pixel (" << r.x << ","
@@ -270,7 +305,15 @@ void Cosim::report_divergence(const Divergence& d) {
   const size_t last = !d.store && r.fragment != Retire::kNoFragment ? r.fragment : SIZE_MAX;
   o << pixel_history(r.x, r.y, lo, hi, 64, last);
   std::string fst;
-  if (run && !opt_.mismatch_fst.empty()) o << waveform(r.x, r.y, *run, lo, hi, fst);
+  WaveView view;
+  const std::string what =
+      !d.store && r.fragment != Retire::kNoFragment ? " #" + std::to_string(r.fragment) : "";
+  view.markers.push_back({cycle, "first wrong write" + what});
+  for (WaveMarker& m : accept_markers(r.x, r.y, last)) view.markers.push_back(std::move(m));
+  view.mismatch = cycle;
+  view.title = "the first wrong write at pixel (" + std::to_string(r.x) + "," +
+               std::to_string(r.y) + "), " + pass_label() + "; markers: it, then its pixel's accepts";
+  if (run) o << waveform(r.x, r.y, *run, lo, hi, view, fst);
   throw MismatchError(o.str(), r.x, r.y, fst);
 }
 

@@ -73,10 +73,13 @@ class Cosim final : public Backend {
   // sides wrote; widens [lo, hi] to their accept cycles.
   std::string pixel_history(int x, int y, uint64_t& lo, uint64_t& hi, size_t limit,
                             size_t last = SIZE_MAX) const;
+  // The pass's fragments at (x, y) up to fragment `last`: a marker at each accept (waves.h).
+  std::vector<WaveMarker> accept_markers(int x, int y, size_t last = SIZE_MAX) const;
   // Replays `run`'s tile with an FST of the cycles [lo, hi] and opt_.window around them (the
-  // whole tile when lo > hi): the report's waveform line; `fst` names the file written.
+  // whole tile when lo > hi) and a save file showing `view` there: the report's waveform
+  // lines; `fst` names the FST written. The run's own FST (a trace) gets the view too.
   std::string waveform(int x, int y, const TileRun& run, uint64_t lo, uint64_t hi,
-                       std::string& fst) const;
+                       WaveView view, std::string& fst);
   // Compares every plane of the two frames; throws MismatchError on the first difference.
   void compare_frames();
   [[noreturn]] void report_counters(const PassStats& rtl, const PassStats& golden);

@@ -3,6 +3,7 @@
 // depth, coverage and peel bit after every pass; --replay runs a trace file the same way.
 #include <chrono>
 #include <cstdio>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -196,6 +197,32 @@ void check_args(const CLI::App& app, Config& c, const Args& a) {
       {{"--trace", c.trace, ".fst"}, {"--coverage-out", a.coverage_out, ".dat"}});
 }
 
+// The reproduce command's start (Config::command): argv[0] and every argument but those that
+// choose the suite, seed, iterations and output files.
+std::string base_command(const std::vector<std::string>& args) {
+  static const std::set<std::string> kDropped = {"--suite", "--seed", "--iterations", "--trace",
+                                                 "--mismatch-fst", "--coverage-out", "--replay"};
+  auto quoted = [](const std::string& s) {
+    if (!s.empty() && s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                          "0123456789_-+=./,:@%") == std::string::npos)
+      return s;
+    std::string q = "'";
+    for (char ch : s) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+    return q + "'";
+  };
+  std::string out = quoted(args.at(0));
+  for (size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    const std::string name = a.substr(0, a.find('='));
+    if (kDropped.count(name)) {
+      if (a.find('=') == std::string::npos) ++i;  // and its value
+      continue;
+    }
+    out += " " + quoted(a);
+  }
+  return out;
+}
+
 std::vector<const Suite*> chosen_suites(const Args& a) {
   std::vector<const Suite*> chosen;
   if (a.suites.empty())
@@ -250,6 +277,7 @@ int main(int argc, char** argv) {
     std::vector<const Suite*> chosen;
     if (a.replay.empty()) chosen = chosen_suites(a);
     check_args(app, c, a);
+    c.command = base_command(args);
     return run(c, a, chosen);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);

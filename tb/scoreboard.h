@@ -43,6 +43,9 @@ class Scoreboard final : public RetireSink {
 
   bool retire(const Retire& r) override;
   bool store(const StoreBeat& b) override;
+  const PixelWrites* expected(uint32_t fragment) const override {
+    return fragment < expected_.size() ? &expected_[fragment] : nullptr;
+  }
 
   const std::optional<Divergence>& first() const { return first_; }
   const std::vector<PixelWrites>& expected() const { return expected_; }

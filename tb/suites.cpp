@@ -30,6 +30,16 @@ CosimOptions cosim_options(const Config& c, uint64_t seed) {
   return o;
 }
 
+// The failure's last lines: the iteration, and the one command that runs it again alone with
+// the whole run's waveform and its save file (docs/testbench.md "Waves").
+static void fail(const char* suite, const Config& c, uint64_t seed) {
+  std::printf("FAIL suite %s iteration seed %llu\n", suite, (unsigned long long)seed);
+  const std::string fst = fmt::format("out/waves/{}-{}.fst", suite, seed);
+  std::printf("reproduce with waves: %s --suite %s --seed %llu --iterations 1 --trace %s\n",
+              c.command.empty() ? "zblend_tb" : c.command.c_str(), suite,
+              (unsigned long long)seed, fst.c_str());
+}
+
 bool run_iteration(const char* suite, const Config& c, uint64_t seed, Tally& t,
                    const std::function<void(Cosim&)>& body) {
   Cosim cosim(cosim_options(c, seed));
@@ -38,14 +48,15 @@ bool run_iteration(const char* suite, const Config& c, uint64_t seed, Tally& t,
     body(cosim);
   } catch (const MismatchError& e) {
     std::printf("%s", e.what());
-    std::printf("FAIL suite %s iteration seed %llu: replay with --suite %s --seed %llu "
-                "--iterations 1%s\n",
-                suite, (unsigned long long)seed, suite, (unsigned long long)seed,
-                c.backpressure > 0 ? (" --backpressure " + std::to_string(c.backpressure)).c_str()
-                                   : "");
+    fail(suite, c, seed);
     t.failed = true;
     ok = false;
     if (cosim.mismatches() == 0) ++t.mismatches;  // a counter mismatch
+  } catch (const std::runtime_error& e) {  // a check of the driver's: counts, port, timing
+    std::printf("suite %s: error: %s\n", suite, e.what());
+    fail(suite, c, seed);
+    t.failed = true;
+    ok = false;
   }
   ++t.iterations;
   t.fragments += cosim.fragments();

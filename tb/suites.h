@@ -27,6 +27,9 @@ struct Config {
   bool lockstep = true;                  // every write at its cycle (CosimOptions::lockstep)
   bool check_timing = true;              // streaming cycles = the schedule (RtlOptions)
   bool reread_stores = false;            // each store read twice, alike (RtlOptions)
+  // The program and the arguments that do not choose the suite, seed, iterations or output
+  // files, shell-quoted: a failure's reproduce command starts with it.
+  std::string command;
 };
 
 // What a suite did: its counts, whether it failed, and a line of its own.

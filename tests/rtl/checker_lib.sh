@@ -21,7 +21,7 @@ run() {
 lockstep() {
   local name=$1 stage=$2; shift 2
   run "$name" "$@"
-  grep -qE '^LOCKSTEP MISMATCH in frame [0-9]+ pass [0-9]+.*: the first wrong write, at cycle [0-9]+ \(its edge at time [0-9]+\)' \
+  grep -qE '^LOCKSTEP MISMATCH in frame [0-9]+ pass [0-9]+.*: the first wrong write, at cycle [0-9]+ \(its rising edge at [0-9]+ ns\)' \
     "$tmp/out.txt" || fail "$name: no 'LOCKSTEP MISMATCH ... at cycle N' line"
   grep -qE '^  fragment #[0-9]+ \(primitive [0-9]+\) at pixel \([0-9]+,[0-9]+\), accepted at cycle [0-9]+' \
     "$tmp/out.txt" || fail "$name: the fragment is not named"
