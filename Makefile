@@ -133,27 +133,15 @@ plan-rtl: setup $(BUILD)/CMakeCache.txt ## Size a model to SCENE within MAX_ERRO
 
 COV_BUILD ?= build-cov
 COV_DIR   := out/coverage
-COV_TB    := $(COV_BUILD)/zblend_tb --coverage-out
 
 coverage: setup ## RTL line and toggle coverage of the suites, annotated: out/coverage/
 	@[ -f $(COV_BUILD)/CMakeCache.txt ] || cmake -S . -B $(COV_BUILD) \
 	  -DCMAKE_BUILD_TYPE=Release -DZBLEND_RTL_COVERAGE=ON
 	@cmake --build $(COV_BUILD) -j $(JOBS) --target zblend_tb
-	@rm -rf $(COV_DIR) && mkdir -p $(COV_DIR)/runs
-	$(COV_TB) $(COV_DIR)/runs/scenes.dat --suite scenes --seed 1
-	$(COV_TB) $(COV_DIR)/runs/scenes_bp.dat --suite scenes --seed 2 --backpressure 0.3
-	$(COV_TB) $(COV_DIR)/runs/random.dat --suite random --seed 1 --fragments 100000
-	$(COV_TB) $(COV_DIR)/runs/random_bp.dat --suite random --seed 1000 --fragments 50000 \
-	  --backpressure 0.3
-	$(COV_TB) $(COV_DIR)/runs/hazard.dat --suite hazard --seed 1 --fragments 100000
-	$(COV_TB) $(COV_DIR)/runs/hazard_bp.dat --suite hazard --seed 7 --fragments 50000 \
-	  --backpressure 0.3
-	$(COV_TB) $(COV_DIR)/runs/blend.dat --suite blend --fragments 400000
-	$(COV_TB) $(COV_DIR)/runs/window.dat --suite window --seed 1
-	$(COV_TB) $(COV_DIR)/runs/window_bp.dat --suite window --seed 5 --backpressure 0.3
-	@verilator_coverage --write $(COV_DIR)/merged.dat $(COV_DIR)/runs/*.dat
-	@verilator_coverage --annotate $(COV_DIR)/annotated $(COV_DIR)/merged.dat \
-	  | sed 's/^/verilator_coverage: /'
+	@# The coverage group of tb/regressions.json through the runner, which merges the runs'
+	@# counts into merged.dat and annotates the sources (docs/regressions.md).
+	@rm -rf $(COV_DIR)
+	python3 scripts/regress.py run coverage --coverage -j $(JOBS) --build $(COV_BUILD) --out $(COV_DIR)
 	@# Per kind of point (line includes branch points), from the merged counts.
 	@tr '\001\002' '|=' < $(COV_DIR)/merged.dat | awk '/^C / { \
 	    k = match($$0, /page=v_[a-z]+/) ? substr($$0, RSTART + 7, RLENGTH - 7) : "other"; \

@@ -37,12 +37,41 @@ def usage_error(msg):
     sys.exit(2)
 
 
+def tree(test, a):
+    """The build tree of the test's RTL parameter set: BUILD, or BUILD-SET."""
+    return a.build if test["rtl"] == "default" else f"{a.build.rstrip('/')}-{test['rtl']}"
+
+
+def ensure_trees(tests, a):
+    """Configures and builds the tree of every RTL parameter set the tests use beyond the
+    default (what each needs: zblend_tb, zblend), with the set's options."""
+    need = {}
+    for t in tests:
+        if t["rtl"] != "default":
+            need.setdefault(t["rtl"], (t["rtl_cache"], set()))[1].add(
+                "zblend" if t["tool"] == "render" else "zblend_tb")
+    for name, (cache, targets) in sorted(need.items()):
+        d = os.path.join(ROOT, tree({"rtl": name}, a))
+        opts = [f"-D{k}={v}" for k, v in sorted(cache.items())]
+        print(f"regress: RTL parameter set {name} ({' '.join(opts)}): building {d}",
+              file=sys.stderr, flush=True)
+        for cmd in (["cmake", "-S", ROOT, "-B", d, "-DCMAKE_BUILD_TYPE=Release", *opts],
+                    ["cmake", "--build", d, "-j", str(a.jobs), "--target", *sorted(targets)]):
+            p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+            if p.returncode != 0:
+                print(p.stdout[-3000:], file=sys.stderr)
+                print(f"regress: FAILED: {shlex.join(cmd)} (exit {p.returncode})",
+                      file=sys.stderr)
+                sys.exit(1)
+
+
 def command(test, a, extra=()):
     """The test's command line, as a list (relative to the repository)."""
+    build = tree(test, a)
     if test["tool"] == "render":
-        return [os.path.join(a.build, "zblend"), "render", *test["args"], "-q",
+        return [os.path.join(build, "zblend"), "render", *test["args"], "-q",
                 "--out-dir", os.path.join("OUT", "render", test["name"]), *extra]
-    tb = a.tb or os.path.join(a.build, "zblend_tb")
+    tb = a.tb or os.path.join(build, "zblend_tb")
     return [tb, *shlex.split(a.tb_args), *test["args"], *extra]
 
 
@@ -64,6 +93,9 @@ def run_one(test, a, waves=False):
     if test["tool"] == "tb":
         fst = os.path.join(out, "waves", name + ".fst") if waves else ""
         extra = ["--mismatch-fst", fst]
+        if a.coverage and not waves:
+            os.makedirs(os.path.join(out, "coverage"), exist_ok=True)
+            extra += ["--coverage-out", os.path.join(out, "coverage", name + ".dat")]
     cmd = [c.replace("OUT", out) if c.startswith("OUT") else c for c in command(test, a, extra)]
     log = os.path.join(out, "logs", name + (".waves" if waves else "") + ".log")
     t0 = time.monotonic()
@@ -258,9 +290,11 @@ def cmd_run(group, tests, a):
     except (OSError, ValueError, KeyError):
         pass
     shutil.rmtree(os.path.join(a.out, "results"), ignore_errors=True)
+    shutil.rmtree(os.path.join(a.out, "coverage"), ignore_errors=True)
     for stale in ("waves.json",):
         if os.path.exists(os.path.join(a.out, stale)):
             os.remove(os.path.join(a.out, stale))
+    ensure_trees(tests, a)
     print(f"regress: {group}: {len(tests)} tests on {a.jobs} processes; {a.out}/",
           file=sys.stderr, flush=True)
     prog = Progress(tests, last)
@@ -274,7 +308,28 @@ def cmd_run(group, tests, a):
     failed = [r for r in results if not r["passed"]]
     if failed and a.waves:
         rerun_with_waves(failed, tests, a)
+    if a.coverage and not merge_coverage(a):
+        return 1
     return gather(group, tests, a, started)
+
+
+def merge_coverage(a):
+    """verilator_coverage: every test's counts (OUT/coverage/) into OUT/merged.dat, the sources
+    annotated in OUT/annotated/. False when no test wrote any."""
+    cov = os.path.join(a.out, "coverage")
+    runs = sorted(os.path.join(cov, f) for f in os.listdir(cov) if f.endswith(".dat")) \
+        if os.path.isdir(cov) else []
+    if not runs:
+        print("regress: --coverage: no test wrote coverage: is BUILD a coverage build "
+              "(-DZBLEND_RTL_COVERAGE=ON)?", file=sys.stderr)
+        return False
+    merged = os.path.join(a.out, "merged.dat")
+    subprocess.run(["verilator_coverage", "--write", merged, *runs], check=True)
+    subprocess.run(["verilator_coverage", "--annotate", os.path.join(a.out, "annotated"), merged],
+                   check=True, stdout=subprocess.DEVNULL)
+    print(f"regress: coverage of {len(runs)} tests merged: {merged}; sources annotated in "
+          f"{os.path.join(a.out, 'annotated')}/", file=sys.stderr)
+    return True
 
 
 def one_command(group, a, index):
@@ -298,6 +353,7 @@ def cmd_parallel(group, tests, a):
     --resume-failed runs only what failed or never ran."""
     if not shutil.which("parallel"):
         usage_error("GNU parallel is missing: run scripts/setup.sh (Debian package 'parallel')")
+    ensure_trees(tests, a)
     started = time.monotonic()
     os.makedirs(a.out, exist_ok=True)
     joblog = os.path.join(a.out, "joblog")
@@ -317,6 +373,7 @@ def cmd_parallel(group, tests, a):
 def cmd_slurm(group, tests, a):
     """Writes OUT/regress.sbatch: an array job, one task per test; with --submit, runs it
     (sbatch --wait) and gathers the results."""
+    ensure_trees(tests, a)  # on the submitting host: the tree must be on the shared file system
     out = os.path.abspath(a.out)
     os.makedirs(os.path.join(out, "slurm"), exist_ok=True)
     script = os.path.join(out, "regress.sbatch")
@@ -369,6 +426,9 @@ def main():
     ap.add_argument("--index", type=int, help="one: the test's index in the group (0-based)")
     ap.add_argument("--waves", type=int, default=3, metavar="K",
                     help="run at most K failing tests again with waves (default 3)")
+    ap.add_argument("--coverage", action="store_true",
+                    help="run: BUILD is a coverage build (-DZBLEND_RTL_COVERAGE=ON); each suite "
+                    "test writes its RTL coverage to OUT/coverage/, merged into OUT/merged.dat")
     ap.add_argument("--timeout", type=float, default=0, help="seconds per test (default none)")
     ap.add_argument("--sshloginfile", help="parallel: GNU parallel's list of hosts")
     ap.add_argument("--resume-failed", action="store_true",
@@ -389,6 +449,9 @@ def main():
         usage_error(f"no group '{a.group}' in {a.file} (groups: {', '.join(groups)})")
     tests = groups[a.group]
     a.out = a.out or os.path.join("out", "regress", a.group)
+    if a.tb and any(t["rtl"] != "default" for t in tests):
+        usage_error(f"--tb names one testbench; group {a.group} runs RTL parameter sets "
+                    f"({', '.join(sorted({t['rtl'] for t in tests}))}), each its own")
     if a.action == "list":
         for i, t in enumerate(tests):
             print(f"{i}\t{t['name']}\t{shlex.join(command(t, a)).replace('OUT/', a.out + '/')}")

@@ -8,8 +8,11 @@ An entry is one test or a cross product of tests:
    "args": [...]}                                  zblend render --backend both per scene x method
                                                    (x seed x back-pressure): golden model and RTL
                                                    compared at every write.
-Each expands to tests with explicit seeds: the name grows -SCENE-METHOD, -sSEED, -bpP. A group
-may also list {"group": G}: G's tests, in order.
+Each expands to tests with explicit seeds: the name grows -SCENE-METHOD, -sSEED, -bpP. An
+entry's "rtl": [..] runs it on each named RTL parameter set of the file's "rtl_params" ({"window4":
+{"ZBLEND_RTL_WINDOW": 4}, ...}: CMake's ZBLEND_RTL_* options, a build tree each), "default"
+being the build given; the name grows -SET. A group may also list {"group": G}: G's tests, in
+order.
 """
 import json
 import os
@@ -18,7 +21,7 @@ import re
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT = os.path.join(ROOT, "tb", "regressions.json")
 NAME = re.compile(r"[A-Za-z0-9_.+-]+")
-KEYS = {"name", "args", "suite", "seeds", "backpressure", "render", "group"}
+KEYS = {"name", "args", "suite", "seeds", "backpressure", "render", "group", "rtl"}
 
 
 class RegressionError(ValueError):
@@ -29,7 +32,7 @@ def _num(v):
     return f"{v:g}" if isinstance(v, float) else str(v)
 
 
-def _expand(entry, where):
+def _expand(entry, where, rtl_params):
     unknown = set(entry) - KEYS
     if unknown:
         raise RegressionError(f"{where}: unknown key(s) {', '.join(sorted(unknown))} "
@@ -60,8 +63,18 @@ def _expand(entry, where):
             raise RegressionError(f"{where} ({name}): 'render' needs 'scene' and 'method' lists")
         combos = [(f"-{s}-{m}", ["--scene", s, "--method", m, "--backend", "both"], "render")
                   for s in r["scene"] for m in r["method"]]
+    sets = entry.get("rtl", ["default"])
+    if not isinstance(sets, list) or not sets:
+        raise RegressionError(f"{where} ({name}): 'rtl' must be a non-empty list of parameter "
+                              "sets")
+    for r in sets:
+        if r != "default" and r not in rtl_params:
+            raise RegressionError(f"{where} ({name}): no RTL parameter set '{r}' in "
+                                  f"\"rtl_params\" (sets: default, {', '.join(rtl_params)})")
+    combos = [(suffix + (f"-{r}" if len(sets) > 1 else ""), head, tool, r)
+              for suffix, head, tool in combos for r in sets]
     tests = []
-    for suffix, head, tool in combos:
+    for suffix, head, tool, rtl in combos:
         for s in seeds:
             for b in bps:
                 tail = []
@@ -72,7 +85,8 @@ def _expand(entry, where):
                 if b is not None:
                     tail += ["--backpressure", _num(b)]
                     n += f"-bp{_num(b)}" if len(bps) > 1 else ""
-                tests.append({"name": n, "tool": tool, "args": head + args + tail})
+                tests.append({"name": n, "tool": tool, "args": head + args + tail, "rtl": rtl,
+                              "rtl_cache": rtl_params.get(rtl, {})})
     return tests
 
 
@@ -88,6 +102,12 @@ def load(path=DEFAULT):
     groups = doc.get("groups") if isinstance(doc, dict) else None
     if not isinstance(groups, dict) or not groups:
         raise RegressionError(f"{path}: no \"groups\" object")
+    rtl_params = doc.get("rtl_params", {})
+    if not isinstance(rtl_params, dict) or any(
+            not NAME.fullmatch(k) or k == "default" or not isinstance(v, dict) or
+            any(not str(o).startswith("ZBLEND_RTL_") for o in v) for k, v in rtl_params.items()):
+        raise RegressionError(f"{path}: \"rtl_params\" maps set names (not 'default') to "
+                              "{ZBLEND_RTL_*: value} objects")
     out = {}
 
     def resolve(g, stack):
@@ -105,7 +125,7 @@ def load(path=DEFAULT):
             if "group" in e:
                 tests += resolve(e["group"], stack + [g])
             else:
-                tests += _expand(e, where)
+                tests += _expand(e, where, rtl_params)
         seen = set()
         for t in tests:
             if t["name"] in seen:

@@ -57,9 +57,11 @@ replay=$(sed -n 's/^  replay: //p' "$tmp/log.txt" | head -1)
 grep -q 'LOCKSTEP MISMATCH' "$tmp/replay.txt" || fail "the replay command did not reproduce the mismatch: $replay"
 echo "ok: a defective RTL fails, with waves and a replay command that reproduces it"
 
-# GNU parallel: the joblog, and --resume-failed runs only the failed jobs.
+# GNU parallel: the joblog, and --resume-failed runs only the failed jobs. The host list names
+# this machine only (":"), as an --sshloginfile of a team's hosts would name theirs.
+echo ":" >"$tmp/hosts"
 "${regress[@]}" parallel g -j 2 --file "$tmp/reg.json" --tb "$build/zblend_tb_mut" --tb-args "--mutant 512" \
-  --out "$tmp/par" >"$tmp/log.txt" 2>&1 && fail "parallel passed on the mutant"
+  --sshloginfile "$tmp/hosts" --out "$tmp/par" >"$tmp/log.txt" 2>&1 && fail "parallel passed on the mutant"
 junit "$tmp/par/junit.xml" 3 2
 [[ $(grep -c 'regress.py one g' "$tmp/par/joblog") -eq 3 ]] || fail "joblog: want 3 jobs"
 "${regress[@]}" parallel g -j 2 --file "$tmp/reg.json" --tb "$build/zblend_tb_mut" --tb-args "--mutant 0" \
@@ -75,6 +77,21 @@ rc=$?
 [[ $rc -eq 2 ]] || fail "a malformed file: exit $rc, want 2"
 grep -q "bad.json: groups.g\[0\]: unknown key(s) bp" "$tmp/log.txt" || fail "the error does not say where"
 [[ ! -e $tmp/none ]] || fail "a refused run wrote $tmp/none"
+# RTL parameter sets: each set's tests on its own build tree; an unknown set and --tb refused.
+cat >"$tmp/sets.json" <<'J'
+{"rtl_params": {"w4": {"ZBLEND_RTL_WINDOW": 4}},
+ "groups": {"g": [{"name": "t", "suite": "tiles", "rtl": ["default", "w4"]}]}}
+J
+echo '{"rtl_params": {"w4": {}}, "groups": {"bad": [{"name": "t", "suite": "tiles", "rtl": ["w5"]}]}}' >"$tmp/sets5.json"
+"${regress[@]}" list g --file "$tmp/sets.json" --build "$tmp/b" >"$tmp/log.txt" 2>&1 || fail "list with parameter sets"
+grep -q "^0	t-default	$tmp/b/zblend_tb --suite tiles" "$tmp/log.txt" &&
+  grep -q "^1	t-w4	$tmp/b-w4/zblend_tb --suite tiles" "$tmp/log.txt" || fail "parameter sets' trees: $(cat "$tmp/log.txt")"
+"${regress[@]}" list bad --file "$tmp/sets5.json" >"$tmp/log.txt" 2>&1
+[[ $? -eq 2 ]] && grep -q "no RTL parameter set 'w5'" "$tmp/log.txt" || fail "an unknown parameter set is not refused"
+"${regress[@]}" run g --file "$tmp/sets.json" --tb "$build/zblend_tb" --out "$tmp/none" >"$tmp/log.txt" 2>&1
+[[ $? -eq 2 ]] && grep -q "each its own" "$tmp/log.txt" || fail "--tb with parameter sets is not refused"
+echo "ok: RTL parameter sets: one tree each; unknown set and --tb refused"
+
 "${regress[@]}" run nosuch >"$tmp/log.txt" 2>&1
 [[ $? -eq 2 ]] && grep -q "no group 'nosuch'" "$tmp/log.txt" || fail "an unknown group is not refused"
 echo "ok: malformed file and unknown group refused (exit 2)"
