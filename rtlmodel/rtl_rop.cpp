@@ -470,8 +470,10 @@ struct RtlRop::Impl {
       } else {
         idle_fragment();
       }
-      s.wave.frag_index = valid ? f[k].index : WaveProbe::kNone;
-      s.wave.frag_prim = valid ? frags[f[k].index].prim : WaveProbe::kNone;
+      if (s.probe) {  // only a traced model shows the offered fragment
+        s.wave.frag_index = valid ? f[k].index : WaveProbe::kNone;
+        s.wave.frag_prim = valid ? frags[f[k].index].prim : WaveProbe::kNone;
+      }
       // frag_ready_o follows stall_i within the cycle, so a changed stall_i needs an eval;
       // without back-pressure only flops move it, and the last edge's eval already shows it.
       if (thr != 0 || k == 0) t.eval();

@@ -66,11 +66,12 @@ def ensure_trees(tests, a):
 
 
 def command(test, a, extra=()):
-    """The test's command line, as a list (relative to the repository)."""
+    """The test's command line, as a list (relative to the repository; renders write under
+    a.out)."""
     build = tree(test, a)
     if test["tool"] == "render":
         return [os.path.join(build, "zblend"), "render", *test["args"], "-q",
-                "--out-dir", os.path.join("OUT", "render", test["name"]), *extra]
+                "--out-dir", os.path.join(os.path.abspath(a.out), "render", test["name"]), *extra]
     tb = a.tb or os.path.join(build, "zblend_tb")
     return [tb, *shlex.split(a.tb_args), *test["args"], *extra]
 
@@ -96,7 +97,7 @@ def run_one(test, a, waves=False):
         if a.coverage and not waves:
             os.makedirs(os.path.join(out, "coverage"), exist_ok=True)
             extra += ["--coverage-out", os.path.join(out, "coverage", name + ".dat")]
-    cmd = [c.replace("OUT", out) if c.startswith("OUT") else c for c in command(test, a, extra)]
+    cmd = command(test, a, extra)
     log = os.path.join(out, "logs", name + (".waves" if waves else "") + ".log")
     t0 = time.monotonic()
     with open(log, "w") as f:
@@ -454,7 +455,7 @@ def main():
                     f"({', '.join(sorted({t['rtl'] for t in tests}))}), each its own")
     if a.action == "list":
         for i, t in enumerate(tests):
-            print(f"{i}\t{t['name']}\t{shlex.join(command(t, a)).replace('OUT/', a.out + '/')}")
+            print(f"{i}\t{t['name']}\t{shlex.join(command(t, a))}")
         return 0
     if a.action == "one":
         if (a.name is None) == (a.index is None):

@@ -79,7 +79,7 @@ def _expand(entry, where, rtl_params):
             for b in bps:
                 tail = []
                 n = name + suffix
-                if s is not None and (len(seeds) > 1 or "seeds" in entry):
+                if s is not None:
                     tail += ["--seed", str(s)]
                     n += f"-s{s}" if len(seeds) > 1 else ""
                 if b is not None:
