@@ -21,9 +21,9 @@
 //         drives the RAM's write data)
 module zb_blend
 #(
-  parameter int unsigned COV_SAMPLES = 16,  // N: 1, 2, 4, 8 or 16
-  localparam int unsigned CovW       = $clog2(COV_SAMPLES + 1),
-  localparam int unsigned QW         = 8 + CovW  // w*s + N/2 < 2^(8 + log2 N + 1)
+  parameter int COV_SAMPLES = 16,  // N: 1, 2, 4, 8 or 16
+  localparam int CovW       = $clog2(COV_SAMPLES + 1),
+  localparam int QW         = 8 + CovW  // w*s + N/2 < 2^(8 + log2 N + 1)
 ) (
   input  logic            clk_i,
   input  zb_pkg::blend_mode_e mode_i,
@@ -36,7 +36,7 @@ module zb_blend
   output logic [31:0]     color_o   // cycle c + 4: blended and masked
 );
 
-  localparam int unsigned CovLog = $clog2(COV_SAMPLES);
+  localparam int CovLog = $clog2(COV_SAMPLES);
 
   logic under, cov;
   assign under = mode_i == zb_pkg::BlendUnder;

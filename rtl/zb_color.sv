@@ -6,9 +6,9 @@
 // forwarding registers. A write at E7 (the fragment in X11 as this one is in X7) is bypassed
 // into X7 ("Same-pixel distance").
 module zb_color #(
-  parameter int unsigned WORDS       = 4096,
-  parameter int unsigned BEAT        = 8,
-  parameter int unsigned COV_SAMPLES = 16
+  parameter int WORDS       = 4096,
+  parameter int BEAT        = 8,
+  parameter int COV_SAMPLES = 16
 ) (
   input  logic                              clk_i,
   input  logic                              rst_ni,
@@ -114,6 +114,7 @@ module zb_color #(
   );
 
 `ifndef SYNTHESIS
+`ifndef ZB_NO_SVA
   // A write of the pixel at the read edge (X5 meets X11) or the next (X6 meets X11) reaches X7
   // as the forwarded word; one at E7 (X6 meets X10) as the bypass.
   ColorForwardCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
@@ -128,6 +129,7 @@ module zb_color #(
   ColorReadEdgeForwardPath: cover property (@(posedge clk_i) disable iff (!rst_ni) fwd5_hit);
   ColorBypassPath: cover property (@(posedge clk_i) disable iff (!rst_ni)
       x6_valid_i && x10_cwe && x6_addr_i == x10_addr_i);
+`endif
 `endif
 
 endmodule

@@ -4,8 +4,8 @@
 // "At all ones" is a flop (sat_q), set by the increment that reaches all ones, so the counter's
 // enable is not behind a CNT_W-bit comparison of its own value.
 module zb_counters #(
-  parameter int unsigned NUM   = 9,
-  parameter int unsigned CNT_W = 32
+  parameter int NUM   = 9,
+  parameter int CNT_W = 32
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,   // asynchronous, active low
@@ -38,12 +38,14 @@ module zb_counters #(
     assign cnt_o[i*CNT_W +: CNT_W] = cnt_q;
 
 `ifndef SYNTHESIS
+`ifndef ZB_NO_SVA
     // A counter never wraps: at all ones it stays there until cleared.
     CntSaturates: assert property (@(posedge clk_i) disable iff (!rst_ni)
         (!clear_i && cnt_q == CntMax) |=> (cnt_q == CntMax));
     // The flag is exactly "at all ones".
     SatFlagExact: assert property (@(posedge clk_i) disable iff (!rst_ni)
         sat_q == (cnt_q == CntMax));
+`endif
 `endif
   end
 

@@ -12,8 +12,8 @@
 // samples), the polygon colour for w = N. Requires k <= N and cs <= N (zb_rop asserts both).
 // The depth comparison comes in as its two flags, registered a stage earlier by zb_rop.
 module zb_coverage_composite #(
-  parameter int unsigned COV_SAMPLES = 16,  // N: 1, 2, 4, 8 or 16
-  localparam int unsigned CovW       = $clog2(COV_SAMPLES + 1)
+  parameter int COV_SAMPLES = 16,  // N: 1, 2, 4, 8 or 16
+  localparam int CovW       = $clog2(COV_SAMPLES + 1)
 ) (
   input  logic                  lt_i,          // polygon depth z < background depth Zs
   input  logic                  eq_i,          // z == Zs

@@ -5,10 +5,10 @@
 // apart. X1 registers the read data, X2 compares, X3 decides (zb_depth_test,
 // zb_coverage_composite), X4 writes.
 module zb_depth #(
-  parameter int unsigned DEPTH_BITS  = 24,
-  parameter int unsigned WORDS       = 4096,
-  parameter int unsigned BEAT        = 8,
-  parameter int unsigned COV_SAMPLES = 16
+  parameter int DEPTH_BITS  = 24,
+  parameter int WORDS       = 4096,
+  parameter int BEAT        = 8,
+  parameter int COV_SAMPLES = 16
 ) (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -48,7 +48,7 @@ module zb_depth #(
   output logic [$clog2(COV_SAMPLES+1)-1:0]    x4_wcov_o
 );
 
-  localparam int unsigned CovW = $clog2(COV_SAMPLES + 1);
+  localparam int CovW = $clog2(COV_SAMPLES + 1);
 
   logic unused_color;  // the colour plane is zb_color's
   assign unused_color = tile_planes_i.color;
@@ -235,6 +235,7 @@ module zb_depth #(
   assign x4_wcov_o   = x4_cov_new_q;
 
 `ifndef SYNTHESIS
+`ifndef ZB_NO_SVA
   // A read that meets a write of its pixel at one edge takes the forwarded word.
   DepthForwardCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
       (issue_i && x4_dwe && m_addr_i == x4_addr_i) |=> dfwd_hit_q);
@@ -255,6 +256,7 @@ module zb_depth #(
   // A fragment that passes with the peel test on lies strictly behind the peel plane.
   PeelPassBehind: assert property (@(posedge clk_i) disable iff (!rst_ni)
       (x_valid_i[3] && x3_pass && peel_test_i && !cov_mode_i) |-> x3_behind_q);
+`endif
 `endif
 
 endmodule

@@ -4,10 +4,10 @@
 // the end of the issue window's logic. Here the fragment gets its tile-local address and 3a
 // (for the premultiply, zb_premul).
 module zb_input #(
-  parameter int unsigned DEPTH_BITS  = 24,
-  parameter int unsigned TILE_W      = 64,
-  parameter int unsigned TILE_H      = 64,
-  parameter int unsigned COV_SAMPLES = 16
+  parameter int DEPTH_BITS  = 24,
+  parameter int TILE_W      = 64,
+  parameter int TILE_H      = 64,
+  parameter int COV_SAMPLES = 16
 ) (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
@@ -31,10 +31,10 @@ module zb_input #(
   output logic                                 busy_o    // I or S holds a fragment
 );
 
-  localparam int unsigned AddrW = $clog2(TILE_W * TILE_H);
-  localparam int unsigned XW    = $clog2(TILE_W);
-  localparam int unsigned YW    = $clog2(TILE_H);
-  localparam int unsigned CovW  = $clog2(COV_SAMPLES + 1);
+  localparam int AddrW = $clog2(TILE_W * TILE_H);
+  localparam int XW    = $clog2(TILE_W);
+  localparam int YW    = $clog2(TILE_H);
+  localparam int CovW  = $clog2(COV_SAMPLES + 1);
 
   logic                  accept, in_ready_d, in_ready_q;
   logic [15:0]           dx, dy;
@@ -123,6 +123,7 @@ module zb_input #(
   assign busy_o    = i_valid_q | s_valid_q;
 
 `ifndef SYNTHESIS
+`ifndef ZB_NO_SVA
   // An accepted fragment lies inside the resident tile.
   FragInTile: assert property (@(posedge clk_i) disable iff (!rst_ni)
       accept |-> (dx < 16'(TILE_W) && dy < 16'(TILE_H)));
@@ -134,6 +135,7 @@ module zb_input #(
       in_ready_q == !s_valid_q);
   // The skid register takes a fragment (I held by a full window).
   SkidTaken: cover property (@(posedge clk_i) disable iff (!rst_ni) accept && !i_free);
+`endif
 `endif
 
 endmodule

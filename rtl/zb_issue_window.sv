@@ -18,10 +18,10 @@
 // flops, not its fragments. A picked slot is refilled at the earliest at K's edge.
 // A slot freed by a pick is reused from the next cycle: in_ready_o depends on flops only.
 module zb_issue_window #(
-  parameter int unsigned WINDOW = 8,    // slots, 2..16 (one slot would take only every other cycle)
-  parameter int unsigned ADDR_W = 12,
-  parameter int unsigned DATA_W = 64,
-  parameter int unsigned SPAN   = 4     // same-pixel issue distance, >= 3 (P0 = K, P1 = M)
+  parameter int WINDOW = 8,    // slots, 2..16 (one slot would take only every other cycle)
+  parameter int ADDR_W = 12,
+  parameter int DATA_W = 64,
+  parameter int SPAN   = 4     // same-pixel issue distance, >= 3 (P0 = K, P1 = M)
 ) (
   input  logic                clk_i,
   input  logic                rst_ni,
@@ -40,14 +40,14 @@ module zb_issue_window #(
   output logic                busy_o
 );
 
-  localparam int unsigned HitW = SPAN - 1;
+  localparam int HitW = SPAN - 1;
 
 `ifndef SYNTHESIS
   if (WINDOW < 2 || WINDOW > 16) begin : g_bad_window
-    $error("zb_issue_window: WINDOW must be 2..16");
+    `ZB_PARAM_ERROR("zb_issue_window: WINDOW must be 2..16");
   end
   if (SPAN < 3) begin : g_bad_span
-    $error("zb_issue_window: SPAN must be at least 3");
+    `ZB_PARAM_ERROR("zb_issue_window: SPAN must be at least 3");
   end
 `endif
 
@@ -163,7 +163,7 @@ module zb_issue_window #(
   // pick, so K's fragment is the read register (a block RAM on an FPGA: no slot flops, no mux).
   // It reads every cycle (an enable from the pick would lengthen the pick's path); M takes the
   // word only after a pick, and a pick never reads the slot being written (taken slots are free).
-  localparam int unsigned SlotW = $clog2(WINDOW);
+  localparam int SlotW = $clog2(WINDOW);
   logic [SlotW-1:0] ins_slot, pick_slot;
   always_comb begin
     ins_slot  = '0;
@@ -187,6 +187,7 @@ module zb_issue_window #(
   );
 
 `ifndef SYNTHESIS
+`ifndef ZB_NO_SVA
   // The relations the pick trusts, stated on addresses: hit_q and same_q are exact for every
   // occupied slot, and older_q orders the occupied slots totally.
   for (genvar i = 0; i < WINDOW; i++) begin : g_slot
@@ -246,6 +247,7 @@ module zb_issue_window #(
       eq_addr[j] = slot_addr(j) == slot_addr(i);
     end
   endfunction
+`endif
 `endif
 
 endmodule

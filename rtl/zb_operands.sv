@@ -3,7 +3,7 @@
 // blend mode zb_blend's operands k, 3k, the addend and q (X6 -> X7; zb_blend's header).
 // The fragment's colour and 3a travel X1..X6 in arrays indexed by stage.
 module zb_operands #(
-  parameter int unsigned COV_SAMPLES = 16
+  parameter int COV_SAMPLES = 16
 ) (
   input  logic                               clk_i,
   input  zb_pkg::blend_mode_e                blend_i,
@@ -16,8 +16,8 @@ module zb_operands #(
   output logic [4*(8+$clog2(COV_SAMPLES+1))-1:0] x7_q_o
 );
 
-  localparam int unsigned CovW = $clog2(COV_SAMPLES + 1);
-  localparam int unsigned QW   = 8 + CovW;  // coverage blend addend w*s + N/2 (zb_blend)
+  localparam int CovW = $clog2(COV_SAMPLES + 1);
+  localparam int QW   = 8 + CovW;  // coverage blend addend w*s + N/2 (zb_blend)
   localparam logic [CovW-1:0] Full = CovW'(COV_SAMPLES);
   localparam logic [QW-1:0]   Half = QW'(COV_SAMPLES / 2);
 

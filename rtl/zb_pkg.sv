@@ -45,3 +45,24 @@ package zb_pkg;
   } planes_t;
 
 endpackage
+
+// Simulators without SystemVerilog's concurrent assertions and elaboration system tasks
+// (Icarus 11; others define ZB_NO_SVA themselves, docs/rtl.md "Simulators"): every module
+// leaves its assertions and covers out, and checks its parameters at time 0 instead.
+// Every flow reads this file first.
+`ifdef __ICARUS__
+`define ZB_NO_SVA
+`endif
+`ifdef ZB_NO_SVA
+`define ZB_PARAM_ERROR(msg) initial $fatal(1, msg)
+`else
+`define ZB_PARAM_ERROR(msg) $error(msg)
+`endif
+
+`ifdef __ICARUS__
+// Icarus 11 looks a struct type up by its bare name from the scope that uses it, even when
+// qualified (zb_pkg::planes_t), and aborts where that name is not imported. Yosys 0.23 reads
+// no import, and Verilator needs none.
+import zb_pkg::pass_state_t;
+import zb_pkg::planes_t;
+`endif

@@ -17,11 +17,11 @@
 // The tile port takes both RAM ports while active; zb_rop uses it only while no fragment is in
 // flight, so the pipeline's and the port's accesses never meet and tile_req_i alone selects.
 module zb_plane #(
-  parameter int unsigned WIDTH = 32,
-  parameter int unsigned WORDS = 1024,
-  parameter int unsigned BEAT  = 8,         // pixels per tile-port beat: a power of two >= 2
-  parameter bit          FORWARDED = 1'b0,  // the user replaces a read that meets a write
-  parameter bit          READ_ONLY = 1'b0   // no pipeline writes (peel): one fresh flag a plane
+  parameter int WIDTH     = 32,
+  parameter int WORDS     = 1024,
+  parameter int BEAT      = 8,     // pixels per tile-port beat: a power of two >= 2
+  parameter bit FORWARDED = 1'b0,  // the user replaces a read that meets a write
+  parameter bit READ_ONLY = 1'b0   // no pipeline writes (peel): one fresh flag a plane
 ) (
   input  logic                     clk_i,
   input  logic                     rst_ni,
@@ -43,14 +43,14 @@ module zb_plane #(
   output logic [WIDTH-1:0]         rdata_o          // the pixel read at the last pipeline read
 );
 
-  localparam int unsigned AddrW  = $clog2(WORDS);
-  localparam int unsigned BankW  = $clog2(BEAT);
-  localparam int unsigned Beats  = WORDS / BEAT;
-  localparam int unsigned BeatAW = $clog2(Beats);
+  localparam int AddrW  = $clog2(WORDS);
+  localparam int BankW  = $clog2(BEAT);
+  localparam int Beats  = WORDS / BEAT;
+  localparam int BeatAW = $clog2(Beats);
 
 `ifndef SYNTHESIS
   if (BEAT < 2 || BEAT != (1 << BankW) || BEAT > WORDS) begin : g_bad_beat
-    $error("zb_plane: BEAT must be a power of two, 2..WORDS");
+    `ZB_PARAM_ERROR("zb_plane: BEAT must be a power of two, 2..WORDS");
   end
 `endif
 
@@ -116,7 +116,7 @@ module zb_plane #(
 
   // The banks: words of {generation, value}. The write-back rewrites only the fresh words (as
   // the clear value); the others are at the epoch already.
-  localparam int unsigned GenW = READ_ONLY ? 0 : 1;
+  localparam int GenW = READ_ONLY ? 0 : 1;
   logic [BEAT*WIDTH-1:0] lane;       // each bank's last read word, resolved
   logic [WIDTH-1:0]      wdata_one;  // a bank's write data but for a load
   logic                  plane_fresh_q;
@@ -182,6 +182,7 @@ module zb_plane #(
   assign rdata_o      = lane[rbank_q*WIDTH +: WIDTH];
 
 `ifndef SYNTHESIS
+`ifndef ZB_NO_SVA
   // The RAM's read-during-write result is undefined in hardware (no_rw_check): a pipeline read
   // never meets a write of its word at one edge (zb_rop's interlock) unless the plane's user
   // forwards the written word instead, nor does the tile port meet the pipeline.
@@ -225,6 +226,7 @@ module zb_plane #(
   if (READ_ONLY) begin : g_read_only
     PipeNeverWrites: assert property (@(posedge clk_i) disable iff (!rst_ni) !pipe_we_i);
   end
+`endif
 `endif
 
 endmodule

@@ -20,16 +20,16 @@
 // state, counters). Memories and data registers are not reset.
 module zb_rop
 #(
-  parameter int unsigned DEPTH_BITS = 24,   // 8..32
-  parameter int unsigned TILE_W     = 64,   // power of two
-  parameter int unsigned TILE_H     = 64,   // power of two
-  parameter int unsigned CNT_W      = 32,
-  parameter int unsigned COV_SAMPLES = 16,  // N of the sample pattern: 1, 2, 4, 8 or 16
-  parameter int unsigned WINDOW     = 8,    // issue window slots, 2..16
-  parameter int unsigned BEAT       = 8,    // tile port pixels per clock: 2..TILE_W, power of two
-  localparam int unsigned AddrW     = $clog2(TILE_W * TILE_H),
-  localparam int unsigned BeatAW    = $clog2(TILE_W * TILE_H / BEAT),
-  localparam int unsigned CovW      = $clog2(COV_SAMPLES + 1)  // coverage count 0..N
+  parameter int DEPTH_BITS = 24,   // 8..32
+  parameter int TILE_W     = 64,   // power of two
+  parameter int TILE_H     = 64,   // power of two
+  parameter int CNT_W      = 32,
+  parameter int COV_SAMPLES = 16,  // N of the sample pattern: 1, 2, 4, 8 or 16
+  parameter int WINDOW     = 8,    // issue window slots, 2..16
+  parameter int BEAT       = 8,    // tile port pixels per clock: 2..TILE_W, power of two
+  localparam int AddrW     = $clog2(TILE_W * TILE_H),
+  localparam int BeatAW    = $clog2(TILE_W * TILE_H / BEAT),
+  localparam int CovW      = $clog2(COV_SAMPLES + 1)  // coverage count 0..N
 ) (
   input  logic                  clk_i,
   input  logic                  rst_ni,
@@ -90,24 +90,24 @@ module zb_rop
   output logic [31:0]           mon_wcolor_o
 );
 
-  localparam int unsigned XW    = $clog2(TILE_W);
-  localparam int unsigned YW    = $clog2(TILE_H);
-  localparam int unsigned Words = TILE_W * TILE_H;
-  localparam int unsigned QW    = 8 + CovW;  // coverage blend addend w*s + N/2 (zb_blend)
+  localparam int XW    = $clog2(TILE_W);
+  localparam int YW    = $clog2(TILE_H);
+  localparam int Words = TILE_W * TILE_H;
+  localparam int QW    = 8 + CovW;  // coverage blend addend w*s + N/2 (zb_blend)
 
 `ifndef SYNTHESIS
   if (TILE_W < 2 || TILE_W != (1 << XW) || TILE_H < 2 || TILE_H != (1 << YW)) begin : g_bad_tile
-    $error("zb_rop: TILE_W and TILE_H must be powers of two, at least 2");
+    `ZB_PARAM_ERROR("zb_rop: TILE_W and TILE_H must be powers of two, at least 2");
   end
   if (DEPTH_BITS < 8 || DEPTH_BITS > 32) begin : g_bad_depth
-    $error("zb_rop: DEPTH_BITS must be 8..32");
+    `ZB_PARAM_ERROR("zb_rop: DEPTH_BITS must be 8..32");
   end
   if (COV_SAMPLES < 1 || COV_SAMPLES > 16 || (COV_SAMPLES & (COV_SAMPLES - 1)) != 0)
   begin : g_bad_cov
-    $error("zb_rop: COV_SAMPLES must be 1, 2, 4, 8 or 16");
+    `ZB_PARAM_ERROR("zb_rop: COV_SAMPLES must be 1, 2, 4, 8 or 16");
   end
   if (BEAT < 2 || BEAT > TILE_W || (BEAT & (BEAT - 1)) != 0) begin : g_bad_beat
-    $error("zb_rop: BEAT must be a power of two, 2..TILE_W");
+    `ZB_PARAM_ERROR("zb_rop: BEAT must be a power of two, 2..TILE_W");
   end
 `endif
 
@@ -133,8 +133,8 @@ module zb_rop
   // (bypass); at Span + 1 at E6, and at Span + 2 at the read edge E5: X6 catches either in
   // zb_color's forwarding registers. Below 4 the older result would not exist yet when the
   // younger's X7 needs it.
-  localparam int unsigned Span = 4;
-  localparam int unsigned Last = 11;   // the colour write's stage
+  localparam int Span = 4;
+  localparam int Last = 11;   // the colour write's stage
 
   // ---------------------------------------------------------------------------------------
   // I/S: the input stage (zb_input).
@@ -179,7 +179,7 @@ module zb_rop
   // (no older fragment in the window has it, and none issued less than Span cycles before this
   // one would issue); M takes the pick and issues it: the depth, coverage and peel reads.
   // ---------------------------------------------------------------------------------------
-  localparam int unsigned WinDataW = 10 + CovW + 32 + DEPTH_BITS;  // {3 a, cov, rgba, z}
+  localparam int WinDataW = 10 + CovW + 32 + DEPTH_BITS;  // {3 a, cov, rgba, z}
 
   logic                  m_valid_q;
   logic [AddrW-1:0]      m_addr_q;
@@ -355,15 +355,25 @@ module zb_rop
   assign busy_o = i_busy | w_busy | m_valid_q | (|x_valid_q);
 
   assign mon_x4_valid_o  = x_valid_q[4];
-  assign mon_x4_addr_o   = x_addr_q[4];
   assign mon_dwe_o       = x4_dwe;
   assign mon_x11_valid_o = x_valid_q[Last];
+`ifdef __ICARUS__
+  // Icarus 11 may leave a continuous assignment from a word of an unpacked array of this module
+  // at X (docs/rtl.md "Simulators"). Only there: a process would renumber Yosys's cells, which
+  // mutation/reasons.json names.
+  always_comb begin
+    mon_x4_addr_o  = x_addr_q[4];
+    mon_x11_addr_o = x_addr_q[Last];
+  end
+`else
+  assign mon_x4_addr_o   = x_addr_q[4];
   assign mon_x11_addr_o  = x_addr_q[Last];
+`endif
 
   // ---------------------------------------------------------------------------------------
   // Counters (docs/datapath.md "Counters"); fragment events are counted in X4.
   // ---------------------------------------------------------------------------------------
-  localparam int unsigned NumCnt = 9;
+  localparam int NumCnt = 9;
 
   logic                    x4_valid, x4_pass, x4_color_on, reads_dest;
   logic [NumCnt-1:0]       cnt_inc;
@@ -412,7 +422,7 @@ module zb_rop
 
   // Tile beats: a tile's run (cleared at its setup) loads and reads each beat at most once, so
   // BeatAW + 1 bits hold them (the counters saturate beyond).
-  localparam int unsigned TileCntW = BeatAW + 1;
+  localparam int TileCntW = BeatAW + 1;
   logic [2*TileCntW-1:0] tile_cnt;
   zb_counters #(
     .NUM  (2),
@@ -431,6 +441,7 @@ module zb_rop
   // Assertions
   // ---------------------------------------------------------------------------------------
 `ifndef SYNTHESIS
+`ifndef ZB_NO_SVA
   // The tile port is used only while no fragment is in flight (its address and write would
   // collide with the pipeline's).
   TilePortIdle: assert property (@(posedge clk_i) disable iff (!rst_ni)
@@ -462,6 +473,7 @@ module zb_rop
   // Only the five blend codes are loaded.
   BlendCodeValid: assert property (@(posedge clk_i) disable iff (!rst_ni)
       state_we_i |-> (state_i.blend <= zb_pkg::BlendUnder));
+`endif
 `endif
 
 endmodule

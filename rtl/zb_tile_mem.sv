@@ -7,9 +7,9 @@
 // iCE40 RAM. zb_rop guarantees it (its interlock; the assertion NoReadWriteCollision in
 // zb_plane).
 module zb_tile_mem #(
-  parameter int unsigned WIDTH = 32,
-  parameter int unsigned WORDS = 4096,
-  localparam int unsigned AddrW = $clog2(WORDS)
+  parameter int WIDTH = 32,
+  parameter int WORDS = 4096,
+  localparam int AddrW = $clog2(WORDS)
 ) (
   input  logic             clk_i,
   input  logic             re_i,

@@ -4,14 +4,15 @@
 # synth`; profile: also perf, for `make profile-rtl`; view: Chromium and ImageMagick, to look at
 # HTML reports and waves headless and take screenshots). Always in: Yosys, its yosys-smtbmc and
 # z3 (`make test` runs the CI-sized `make formal`); GNU parallel, Slurm and munge (the regression
-# runner's tests, docs/regressions.md); GTKWave and Xvfb (the waves' test).
+# runner's tests, docs/regressions.md); GTKWave and Xvfb (the waves' test); Icarus Verilog (the
+# RTL's second simulator, docs/rtl.md "Simulators").
 set -euo pipefail
 
 packages=(
   build-essential cmake make
   libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev libbenchmark-dev
-  verilator zlib1g-dev libsystemc-dev
+  verilator iverilog zlib1g-dev libsystemc-dev
   clang libclang-rt-14-dev
   libtinyobjloader-dev libtinygltf-dev assimp-testmodels glmark2-data
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
