@@ -9,7 +9,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake make
-  libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev libfmt-dev
+  libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev libfmt-dev libssl-dev
   libgtest-dev libbenchmark-dev
   verilator zlib1g-dev libsystemc-dev
   clang libclang-rt-14-dev
