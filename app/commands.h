@@ -28,6 +28,7 @@ void add_trace_command(CLI::App& app);
 void add_info_commands(CLI::App& app);  // methods, scenes, plan
 void add_lab_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
+void add_conformance_command(CLI::App& app);  // export, check
 
 // What every subcommand that renders takes: the scene, its camera and the frame.
 struct FrameOptions {

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   zb::app::add_info_commands(app);
   zb::app::add_lab_command(app);
   zb::app::add_sweep_command(app);
+  zb::app::add_conformance_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -10,7 +10,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake make
-  libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev libfmt-dev
+  libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev libfmt-dev libssl-dev
   libgtest-dev libbenchmark-dev
   verilator iverilog zlib1g-dev libsystemc-dev
   clang libclang-rt-14-dev

@@ -142,9 +142,14 @@ std::vector<Fragment> random_stream(Rng& r, int w, int h, size_t n, int hot, dou
       spots.clear();
       const int k = 1 + int(r.below(uint32_t(hot)));
       const int bx = int(r.below(uint32_t(w))), by = int(r.below(uint32_t(h)));
-      for (int i = 0; i < k; ++i)  // neighbours, so the hot pixels share a tile mostly
-        spots.emplace_back(uint16_t(std::min(w - 1, bx + int(r.below(3)))),
-                           uint16_t(std::min(h - 1, by + int(r.below(2)))));
+      for (int i = 0; i < k; ++i) {  // neighbours, so the hot pixels share a tile mostly
+        // One draw per statement: as two arguments of one call their order was the compiler's
+        // (GCC drew y first, clang x), so a seed's stream differed by compiler. GCC's order is
+        // kept, so every seed's stimulus of a GCC build is unchanged.
+        const int dy = int(r.below(2));
+        const int dx = int(r.below(3));
+        spots.emplace_back(uint16_t(std::min(w - 1, bx + dx)), uint16_t(std::min(h - 1, by + dy)));
+      }
       run_left = 8 + r.below(120);
     }
     if (run_left) {

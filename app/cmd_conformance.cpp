@@ -1,0 +1,132 @@
+// zblend conformance export | check: the conformance kit's vectors and their checker
+// (docs/conformance.md; the library is conformance/).
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include <fmt/core.h>
+
+#include "check.h"
+#include "commands.h"
+#include "export.h"
+#include "suite.h"
+
+namespace zb::app {
+namespace {
+
+namespace cf = zb::conformance;
+
+struct ExportOptions {
+  std::string dir;
+  bool quick = false;
+  bool list = false;
+};
+
+struct CheckOptions {
+  std::string suite, out, tests;
+};
+
+void print_list(const std::vector<cf::TestSpec>& tests) {
+  fmt::print("{:<30} {:<8} {:<7} {:>6}  {}\n", "test", "config", "kind", "frame", "what");
+  for (const cf::TestSpec& t : tests)
+    fmt::print("{:<30} {:<8} {:<7} {:>6}  {}\n", t.name, t.config.name, cf::to_string(t.kind),
+               fmt::format("{}x{}", t.width, t.height),
+               t.kind == cf::TestKind::kScene ? fmt::format("scene {}, method {}", t.scene, t.method)
+                                              : fmt::format("seed {}", t.seed));
+  fmt::print("{} tests\n", tests.size());
+}
+
+void run_export(const ExportOptions& o) {
+  const std::vector<cf::TestSpec> tests = cf::suite_tests(o.quick);
+  if (o.list) {
+    if (!o.dir.empty())
+      throw UsageError(fmt::format("DIR: --list writes nothing; leave out '{}'", o.dir));
+    print_list(tests);
+    return;
+  }
+  if (o.dir.empty())
+    throw UsageError("DIR: needed, the directory to write the suite to (or --list to see the tests)");
+  check_outputs({{"DIR", o.dir, nullptr}});
+  if (const std::string w = cf::build_warning(); !w.empty())
+    fmt::print(stderr, "zblend conformance export: warning: {}\n", w);
+  const auto start = std::chrono::steady_clock::now();
+  cf::ExportSummary s;
+  try {
+    s = cf::export_suite(o.dir, tests);
+  } catch (const cf::ConformanceError& e) {
+    throw UsageError(e.what());
+  }
+  std::vector<std::string> configs;
+  for (const cf::TestSpec& t : tests)
+    if (configs.empty() || configs.back() != t.config.name) configs.push_back(t.config.name);
+  fmt::print("{}: {} tests in {} configs ({}), {} fragments, {:.1f} MB, {:.1f} s\n", o.dir, s.tests,
+             configs.size(), join(configs), s.fragments, double(s.bytes) / 1e6,
+             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+}
+
+std::vector<std::string> split_tests(const std::string& list) {
+  std::vector<std::string> names;
+  size_t start = 0;
+  while (start <= list.size()) {
+    const size_t comma = std::min(list.find(',', start), list.size());
+    const std::string name = list.substr(start, comma - start);
+    if (name.empty())
+      throw UsageError(fmt::format("--tests: '{}' has an empty name (give names separated by commas)", list));
+    names.push_back(name);
+    start = comma + 1;
+  }
+  return names;
+}
+
+void run_check(const CLI::App& cmd, const CheckOptions& o) {
+  const std::vector<std::string> only = cmd.count("--tests") ? split_tests(o.tests)
+                                                             : std::vector<std::string>{};
+  std::error_code ec;
+  if (!std::filesystem::is_directory(o.out, ec))
+    throw UsageError(fmt::format("OUT: '{}' is not a directory (give the one holding "
+                                 "<test>/got.<plane>.hex)", o.out));
+  std::vector<cf::TestResult> results;
+  try {
+    results = cf::check_suite(o.suite, o.out, only, [](const cf::TestResult& r) {
+      fmt::print("{}\n", r.line);
+      std::fflush(stdout);
+    });
+  } catch (const cf::ConformanceError& e) {
+    throw UsageError(e.what());
+  }
+  size_t failed = 0;
+  for (const cf::TestResult& r : results) failed += r.pass ? 0 : 1;
+  fmt::print("{} of {} tests pass\n", results.size() - failed, results.size());
+  if (failed)
+    throw VerificationError(fmt::format("{} of {} tests failed", failed, results.size()));
+}
+
+}  // namespace
+
+void add_conformance_command(CLI::App& app) {
+  CLI::App* cmd = app.add_subcommand(
+      "conformance", "The conformance kit's vectors: export a suite, check a DUT's planes");
+  cmd->require_subcommand(1, 1);
+
+  auto e = std::make_shared<ExportOptions>();
+  CLI::App* exp = cmd->add_subcommand(
+      "export", "Write the suite (streams, expected planes, manifest) to DIR, replacing an "
+                "earlier suite there");
+  exp->add_option("DIR", e->dir, "Directory to write (new, empty, or an earlier suite)");
+  exp->add_flag("--quick", e->quick, "Only the CI-sized subset (the same tests, names and files)");
+  exp->add_flag("--list", e->list, "List the tests instead of writing them");
+  exp->callback([e] { run_export(*e); });
+
+  auto c = std::make_shared<CheckOptions>();
+  CLI::App* chk = cmd->add_subcommand(
+      "check", "Compare a DUT's planes, OUT/<test>/got.<plane>.hex, with SUITE's signatures: a "
+               "line per test; exit 1 when any fails");
+  chk->add_option("SUITE", c->suite, "The suite's directory (zblend conformance export)")->required();
+  chk->add_option("OUT", c->out, "The DUT's output directory")->required();
+  chk->add_option("--tests", c->tests, "Only these tests, NAME,NAME,... (a CI slice)");
+  chk->callback([chk, c] { run_check(*chk, *c); });
+}
+
+}  // namespace zb::app

@@ -1,0 +1,214 @@
+// The C API over GoldenRop (zb_golden.h). Each call checks its arguments against the rules of
+// docs/datapath.md before the model sees them, so the model's own checks (which throw) are never
+// reached from here; a catch-all turns anything left into a status all the same.
+#include "zb_golden.h"
+
+#include <exception>
+#include <new>
+#include <string>
+
+#include <fmt/core.h>
+
+#include "geometry/geometry.h"
+#include "rop/rop.h"
+
+struct zb_golden {
+  zb::GoldenRop rop;
+  bool in_pass = false;
+  std::string error;  // the last call's, "" after a success
+};
+
+namespace {
+
+// A failed create has no handle to hold its error: this thread's, as errno and dlerror() do.
+thread_local std::string handleless_error;
+
+// A failed call's status and line; the line is what is wrong, then how to fix it.
+struct Failure {
+  int status;
+  std::string line;
+};
+
+uint32_t pack(zb::Rgba8 c) {
+  return uint32_t(c.r) | uint32_t(c.g) << 8 | uint32_t(c.b) << 16 | uint32_t(c.a) << 24;
+}
+zb::Rgba8 unpack(uint32_t w) {
+  return {uint8_t(w), uint8_t(w >> 8), uint8_t(w >> 16), uint8_t(w >> 24)};
+}
+
+template <class T>
+void put(T* out, T value) {
+  if (out) *out = value;
+}
+
+// Runs `body` (which returns an empty Failure line on success) with g's error cleared, and
+// turns a failure or any exception into a status and g's line. `call` names the function.
+template <class Body>
+int guarded(zb_golden* g, const char* call, Body body) {
+  if (!g) {
+    handleless_error = fmt::format("{}: the handle is NULL (create one with zb_golden_create)", call);
+    return ZB_EHANDLE;
+  }
+  g->error.clear();
+  Failure f{ZB_OK, ""};
+  try {
+    f = body(*g);
+  } catch (const std::bad_alloc&) {
+    f = {ZB_ENOMEM, "out of memory"};
+  } catch (const std::exception& e) {
+    f = {ZB_EINTERNAL, fmt::format("internal error of the golden model, please report it: {}", e.what())};
+  } catch (...) {
+    f = {ZB_EINTERNAL, "internal error of the golden model, please report it"};
+  }
+  if (f.status != ZB_OK) g->error = fmt::format("{}: {}", call, f.line);
+  return f.status;
+}
+
+const Failure kOk{ZB_OK, ""};
+
+Failure check_pixel(const zb::Framebuffer& fb, int x, int y) {
+  if (x < 0 || x >= fb.width || y < 0 || y >= fb.height)
+    return {ZB_EARG, fmt::format("pixel ({}, {}) is outside the {}x{} frame (x 0 to {}, y 0 to {})",
+                                 x, y, fb.width, fb.height, fb.width - 1, fb.height - 1)};
+  return kOk;
+}
+
+}  // namespace
+
+extern "C" {
+
+int zb_golden_create(zb_golden** out, int width, int height, int depth_bits,
+                     int coverage_samples, uint32_t clear_rgba) {
+  handleless_error.clear();
+  const auto fail = [&](int status, const std::string& line) {
+    handleless_error = "zb_golden_create: " + line;
+    return status;
+  };
+  if (!out) return fail(ZB_EARG, "out is NULL (pass the address of a zb_golden* to receive the handle)");
+  *out = nullptr;
+  if (width < 1 || width > zb::kMaxFrameSize || height < 1 || height > zb::kMaxFrameSize)
+    return fail(ZB_EARG, fmt::format("frame {}x{} is out of range (width and height 1 to {})",
+                                     width, height, zb::kMaxFrameSize));
+  if (depth_bits < zb::kMinDepthBits || depth_bits > zb::kMaxDepthBits)
+    return fail(ZB_EARG, fmt::format("depth_bits {} is out of range ({} to {})", depth_bits,
+                                     zb::kMinDepthBits, zb::kMaxDepthBits));
+  if (!zb::valid_coverage_samples(coverage_samples))
+    return fail(ZB_EARG, fmt::format("coverage_samples {} is not 1, 2, 4, 8 or 16", coverage_samples));
+  try {
+    auto* g = new zb_golden;
+    g->rop.begin_frame(width, height, depth_bits, unpack(clear_rgba), coverage_samples);
+    *out = g;
+    return ZB_OK;
+  } catch (const std::bad_alloc&) {
+    return fail(ZB_ENOMEM, fmt::format("out of memory for a {}x{} frame (choose a smaller one)",
+                                       width, height));
+  } catch (const std::exception& e) {
+    return fail(ZB_EINTERNAL, fmt::format("internal error of the golden model, please report it: {}", e.what()));
+  }
+}
+
+void zb_golden_destroy(zb_golden* g) { delete g; }
+
+int zb_golden_begin_pass(zb_golden* g, uint32_t state) {
+  return guarded(g, "zb_golden_begin_pass", [&](zb_golden& h) -> Failure {
+    if (h.in_pass)
+      return {ZB_EORDER, "a pass is already open (end it with zb_golden_end_pass first)"};
+    zb::RopState s;
+    if (state >> zb::kStateBits || !zb::unpack_state(uint16_t(state), s))
+      return {ZB_EARG, fmt::format("state 0x{:x} is not a pass state register (bits 13 and up "
+                                   "zero, blend [7:5] at most 4; docs/datapath.md \"The pass "
+                                   "state\")", state)};
+    h.rop.begin_pass(s);
+    h.in_pass = true;
+    return kOk;
+  });
+}
+
+int zb_golden_push(zb_golden* g, int x, int y, uint32_t z, uint32_t rgba, int coverage,
+                   uint32_t* wrote, uint32_t* depth, uint32_t* coverage_out, uint32_t* rgba_out) {
+  put<uint32_t>(wrote, 0);
+  put<uint32_t>(depth, 0);
+  put<uint32_t>(coverage_out, 0);
+  put<uint32_t>(rgba_out, 0);
+  return guarded(g, "zb_golden_push", [&](zb_golden& h) -> Failure {
+    if (!h.in_pass) return {ZB_EORDER, "no pass is open (start one with zb_golden_begin_pass)"};
+    const zb::Framebuffer& fb = h.rop.framebuffer();
+    if (Failure f = check_pixel(fb, x, y); f.status != ZB_OK) return f;
+    if (z > zb::depth_max(fb.depth_bits))
+      return {ZB_EARG, fmt::format("depth 0x{:x} exceeds the {}-bit depth (at most 0x{:x})", z,
+                                   fb.depth_bits, zb::depth_max(fb.depth_bits))};
+    if (coverage < 0 || coverage > fb.coverage_samples)
+      return {ZB_EARG, fmt::format("coverage {} is out of range (0 to the frame's {} samples)",
+                                   coverage, fb.coverage_samples)};
+    zb::Fragment f;
+    f.x = uint16_t(x);
+    f.y = uint16_t(y);
+    f.z = z;
+    f.color = unpack(rgba);
+    f.coverage = uint8_t(coverage);
+    const zb::PixelWrites w = h.rop.process(f);
+    put<uint32_t>(wrote, (w.depth ? ZB_WROTE_DEPTH : 0) | (w.coverage ? ZB_WROTE_COVERAGE : 0) |
+                             (w.color ? ZB_WROTE_COLOR : 0));
+    put<uint32_t>(depth, w.depth ? w.z : 0);
+    put<uint32_t>(coverage_out, w.coverage ? w.cov : 0);
+    put<uint32_t>(rgba_out, w.color ? pack(w.rgba) : 0);
+    return kOk;
+  });
+}
+
+int zb_golden_end_pass(zb_golden* g, uint64_t* fragments_in, uint64_t* fragments_passed,
+                       uint64_t* depth_reads, uint64_t* depth_writes, uint64_t* color_reads,
+                       uint64_t* color_writes) {
+  return guarded(g, "zb_golden_end_pass", [&](zb_golden& h) -> Failure {
+    if (!h.in_pass) return {ZB_EORDER, "no pass is open (start one with zb_golden_begin_pass)"};
+    const zb::PassStats s = h.rop.end_pass();
+    h.in_pass = false;
+    put(fragments_in, s.fragments_in);
+    put(fragments_passed, s.fragments_passed);
+    put(depth_reads, s.depth_reads);
+    put(depth_writes, s.depth_writes);
+    put(color_reads, s.color_reads);
+    put(color_writes, s.color_writes);
+    return kOk;
+  });
+}
+
+int zb_golden_frame_op(zb_golden* g, int kind, uint32_t value_rgba, uint32_t depth) {
+  return guarded(g, "zb_golden_frame_op", [&](zb_golden& h) -> Failure {
+    if (h.in_pass)
+      return {ZB_EORDER, "a pass is open: frame operations come between passes (end it with "
+                         "zb_golden_end_pass first)"};
+    if (kind < 0 || kind >= int(zb::kFrameOpKinds))
+      return {ZB_EARG, fmt::format("kind {} is not a frame operation (0 clear colour, 1 clear "
+                                   "depth, 2 copy depth to peel, 3 resolve under)", kind)};
+    zb::FrameOp op;
+    op.kind = zb::FrameOpKind(kind);
+    op.value = unpack(value_rgba);
+    op.depth = depth;  // apply_frame_op clamps it to ZMAX
+    h.rop.frame_op(op);
+    return kOk;
+  });
+}
+
+int zb_golden_read(zb_golden* g, int plane, int x, int y, uint32_t* value) {
+  return guarded(g, "zb_golden_read", [&](zb_golden& h) -> Failure {
+    if (!value) return {ZB_EARG, "value is NULL (pass the address of a uint32_t)"};
+    const zb::Framebuffer& fb = h.rop.framebuffer();
+    if (Failure f = check_pixel(fb, x, y); f.status != ZB_OK) return f;
+    const size_t i = fb.index(x, y);
+    switch (plane) {
+      case ZB_PLANE_COLOR: *value = pack(fb.color[i]); return kOk;
+      case ZB_PLANE_DEPTH: *value = fb.depth[i]; return kOk;
+      case ZB_PLANE_COVERAGE: *value = fb.coverage[i]; return kOk;
+      case ZB_PLANE_PEEL: *value = fb.peel[i]; return kOk;
+    }
+    return {ZB_EARG, fmt::format("plane {} is not a plane (0 colour, 1 depth, 2 coverage, 3 peel)",
+                                 plane)};
+  });
+}
+
+const char* zb_golden_last_error(const zb_golden* g) {
+  return g ? g->error.c_str() : handleless_error.c_str();
+}
+
+}  // extern "C"

@@ -1,0 +1,97 @@
+/* zb_golden.h: a C API to zblend's golden model of the per-pixel datapath (docs/conformance.md
+ * "The C API"; the bit-level rules are docs/datapath.md's). C99 and C++; nothing C++ crosses it.
+ *
+ * One handle is one frame: create it with the widths, then per pass: begin (the 13-bit pass
+ * state register), push fragments one by one (each returns the writes it made), end (the
+ * counters); frame operations between passes; read any pixel of any plane at any time.
+ *
+ * Every call that can fail returns a status (ZB_OK or a ZB_E* code), changes nothing when it
+ * fails, and leaves one line, what is wrong and how to fix it, for zb_golden_last_error. No call
+ * throws or aborts on bad input. Arguments are ints and pointers to ints, so each call maps onto
+ * a DPI-C import (conformance/sv/zb_golden_pkg.sv). A handle is not safe to share across threads
+ * without a lock; distinct handles are independent. */
+#ifndef ZB_GOLDEN_H_
+#define ZB_GOLDEN_H_
+
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct zb_golden zb_golden; /* opaque: one frame and its golden datapath */
+
+/* Status of every call that can fail. */
+enum {
+  ZB_OK = 0,
+  ZB_EARG = 1,      /* a bad argument: widths, pixel, depth, coverage, state word, plane, kind */
+  ZB_EORDER = 2,    /* the call does not fit the sequence: a push outside a pass, ... */
+  ZB_EHANDLE = 3,   /* a null handle */
+  ZB_ENOMEM = 4,    /* the frame does not fit in memory */
+  ZB_EINTERNAL = 5  /* a fault of the model itself (please report it) */
+};
+
+/* The planes of a frame (zb_golden_read), in the order of the conformance signatures. */
+enum { ZB_PLANE_COLOR = 0, ZB_PLANE_DEPTH = 1, ZB_PLANE_COVERAGE = 2, ZB_PLANE_PEEL = 3 };
+
+/* Bits of zb_golden_push's `wrote`: which planes the fragment wrote. */
+enum { ZB_WROTE_DEPTH = 1, ZB_WROTE_COVERAGE = 2, ZB_WROTE_COLOR = 4 };
+
+/* Frame operations (docs/datapath.md "Frame operations"), done between passes. */
+enum {
+  ZB_OP_CLEAR_COLOR = 0,        /* every colour := value */
+  ZB_OP_CLEAR_DEPTH = 1,        /* every depth := min(depth, ZMAX) */
+  ZB_OP_COPY_DEPTH_TO_PEEL = 2, /* peel := depth */
+  ZB_OP_RESOLVE_UNDER = 3       /* colour := min(255, c + m(value_c, 255 - A)) per channel */
+};
+
+/* Colours are packed RGBA8 words: r | g << 8 | b << 16 | a << 24 (frag_rgba_i's lane order). */
+
+/* A frame of width x height pixels (1 to 8192 each), depth_bits (8 to 32) wide depths and
+ * coverage_samples (1, 2, 4, 8 or 16) samples per pixel, cleared as a frame starts: colour
+ * clear_rgba, depth ZMAX = 2^depth_bits - 1, coverage 0, peel 0. On success *out is the handle;
+ * on failure *out is NULL and zb_golden_last_error(NULL) says why. */
+int zb_golden_create(zb_golden** out, int width, int height, int depth_bits,
+                     int coverage_samples, uint32_t clear_rgba);
+
+/* Frees the handle; NULL is allowed and does nothing. */
+void zb_golden_destroy(zb_golden* g);
+
+/* Starts a pass with the pass state register (docs/datapath.md "The pass state"): [0]
+ * depth_test, [3:1] depth_func, [4] depth_write, [7:5] blend (0 to 4), [11:8] color_mask, [12]
+ * peel_test; every other bit zero. Fails inside a pass. */
+int zb_golden_begin_pass(zb_golden* g, uint32_t state);
+
+/* One fragment through the datapath, in stream order: pixel (x, y), depth z (at most ZMAX),
+ * colour rgba, coverage count (0 to coverage_samples; read only by the coverage blend). The
+ * writes it made: *wrote holds ZB_WROTE_* bits, and *depth, *coverage_out, *rgba_out the values
+ * written to those planes (0 where not written). Any output pointer may be NULL. Fails outside
+ * a pass. */
+int zb_golden_push(zb_golden* g, int x, int y, uint32_t z, uint32_t rgba, int coverage,
+                   uint32_t* wrote, uint32_t* depth, uint32_t* coverage_out, uint32_t* rgba_out);
+
+/* Ends the pass; its counters (docs/datapath.md "Counters"; killed = in - passed). Any output
+ * pointer may be NULL. Fails outside a pass. */
+int zb_golden_end_pass(zb_golden* g, uint64_t* fragments_in, uint64_t* fragments_passed,
+                       uint64_t* depth_reads, uint64_t* depth_writes, uint64_t* color_reads,
+                       uint64_t* color_writes);
+
+/* A frame operation (ZB_OP_*) on the whole frame, between passes: value_rgba is read by the
+ * colour clear and the resolve (the background), depth by the depth clear (clamped to ZMAX, so
+ * 0xffffffff is always the far depth). Fails inside a pass. */
+int zb_golden_frame_op(zb_golden* g, int kind, uint32_t value_rgba, uint32_t depth);
+
+/* The value of pixel (x, y) of a plane (ZB_PLANE_*): a packed colour, a depth, a coverage
+ * count or a peel depth. Allowed inside a pass (the planes hold every write so far). */
+int zb_golden_read(zb_golden* g, int plane, int x, int y, uint32_t* value);
+
+/* The error of the last call on `g`: one line, "" when it succeeded. With NULL: the last error
+ * of a call in this thread that had no handle (a failed create, or a NULL handle passed). The
+ * text stays valid until the next call with the same handle (or NULL). Never NULL. */
+const char* zb_golden_last_error(const zb_golden* g);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* ZB_GOLDEN_H_ */

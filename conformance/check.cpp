@@ -1,0 +1,230 @@
+#include "check.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <set>
+#include <sstream>
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include "geometry/geometry.h"
+#include "sha256.h"
+#include "suite.h"
+#include "vectors.h"
+
+namespace zb::conformance {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct ManifestTest {
+  std::string name;
+  int width = 0, height = 0;
+  std::string signature_sha256;
+};
+
+// A test name is a directory of the suite: letters, digits, '-', '_' and '.', not first.
+bool valid_name(const std::string& s) {
+  if (s.empty() || s[0] == '.') return false;
+  return std::all_of(s.begin(), s.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.';
+  });
+}
+
+bool is_sha256(const std::string& s) {
+  return s.size() == 64 && std::all_of(s.begin(), s.end(), [](char c) {
+           return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f');
+         });
+}
+
+std::optional<std::string> read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<ManifestTest> read_manifest(const fs::path& suite) {
+  const fs::path path = suite / "manifest.json";
+  auto malformed = [&](const std::string& what) {
+    return ConformanceError(fmt::format("SUITE {}: {}", path.string(), what));
+  };
+  std::error_code ec;
+  if (!fs::is_directory(suite, ec))
+    throw ConformanceError(fmt::format("SUITE {}: not a directory (give the directory 'zblend "
+                                       "conformance export' wrote)", suite.string()));
+  const std::optional<std::string> text = read_text(path);
+  if (!text)
+    throw malformed(fmt::format("cannot read: {} (give the directory 'zblend conformance export' "
+                                "wrote)", std::strerror(errno)));
+  std::vector<ManifestTest> tests;
+  try {
+    const json j = json::parse(*text);
+    if (!j.is_object() || j.value("suite", "") != kSuiteName)
+      throw malformed(fmt::format("not a zblend conformance suite (\"suite\" is not \"{}\")", kSuiteName));
+    if (j.at("version") != kSuiteVersion)
+      throw malformed(fmt::format("version {} is not supported (this zblend reads {})",
+                                  j.at("version").dump(), kSuiteVersion));
+    std::set<std::string> seen;
+    for (const json& t : j.at("tests")) {
+      ManifestTest m;
+      m.name = t.at("name").get<std::string>();
+      m.width = t.at("width").get<int>();
+      m.height = t.at("height").get<int>();
+      m.signature_sha256 = t.at("signature_sha256").get<std::string>();
+      if (!valid_name(m.name)) throw malformed(fmt::format("test name '{}' is not a directory name", m.name));
+      if (!seen.insert(m.name).second) throw malformed(fmt::format("test '{}' is listed twice", m.name));
+      if (m.width < 1 || m.width > kMaxFrameSize || m.height < 1 || m.height > kMaxFrameSize)
+        throw malformed(fmt::format("test '{}': frame {}x{} is out of range", m.name, m.width, m.height));
+      if (!is_sha256(m.signature_sha256))
+        throw malformed(fmt::format("test '{}': signature_sha256 is not 64 hex digits", m.name));
+      tests.push_back(std::move(m));
+    }
+  } catch (const json::exception& e) {
+    throw malformed(e.what());
+  }
+  return tests;
+}
+
+// A file of hex words, one a line. `strict` (expect files): exactly `digits` lower-case digits
+// a line. Otherwise (a DUT's got files, $writememh's): 1 to `digits` digits of either case,
+// surrounding blanks, and blank lines and // comments skipped. Returns an error or "".
+std::string parse_words(const std::string& text, int digits, bool strict, const std::string& file,
+                        std::vector<uint32_t>& out) {
+  std::istringstream in(text);
+  std::string line;
+  for (size_t n = 1; std::getline(in, line); ++n) {
+    std::string w = line;
+    if (!strict) {
+      const size_t a = w.find_first_not_of(" \t\r"), b = w.find_last_not_of(" \t\r");
+      w = a == std::string::npos ? "" : w.substr(a, b - a + 1);
+      if (w.empty() || w.rfind("//", 0) == 0) continue;
+    }
+    const bool hex = !w.empty() && w.size() <= size_t(digits) &&
+                     (!strict || w.size() == size_t(digits)) &&
+                     std::all_of(w.begin(), w.end(), [&](char c) {
+                       return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') ||
+                              (!strict && c >= 'A' && c <= 'F');
+                     });
+    if (!hex)
+      return fmt::format("{} line {}: '{}' is not a hex word of {}{} digits", file, n,
+                         w.substr(0, 40), strict ? "" : "at most ", digits);
+    out.push_back(uint32_t(std::stoul(w, nullptr, 16)));
+  }
+  return "";
+}
+
+// One plane of one test: its state for the report line.
+struct PlaneCheck {
+  std::string state = "ok";  // "ok", "missing", "malformed", "N pixels differ"
+  std::string first;         // the first problem, "" when ok
+};
+
+PlaneCheck check_plane(const ManifestTest& t, Plane plane, const std::vector<uint32_t>& expect,
+                       const fs::path& got_path) {
+  PlaneCheck c;
+  const std::optional<std::string> text = read_text(got_path);
+  if (!text) {
+    c.state = "missing";
+    c.first = fmt::format("missing {}", got_path.string());
+    return c;
+  }
+  std::vector<uint32_t> got;
+  const std::string error = parse_words(*text, hex_digits(plane), false, got_path.string(), got);
+  if (error.empty() && got.size() != expect.size()) {
+    c.state = "malformed";
+    c.first = fmt::format("{}: {} words, expected {} ({}x{})", got_path.string(), got.size(),
+                          expect.size(), t.width, t.height);
+    return c;
+  }
+  if (!error.empty()) {
+    c.state = "malformed";
+    c.first = error;
+    return c;
+  }
+  size_t differ = 0;
+  for (size_t i = 0; i < expect.size(); ++i) {
+    if (got[i] == expect[i]) continue;
+    if (differ++ == 0)
+      c.first = fmt::format("{} pixel ({}, {}): expected {:0{}x}, got {:0{}x}", to_string(plane),
+                            i % size_t(t.width), i / size_t(t.width), expect[i], hex_digits(plane),
+                            got[i], hex_digits(plane));
+  }
+  if (differ) c.state = fmt::format("{} pixel{} differ{}", differ, differ == 1 ? "" : "s", differ == 1 ? "s" : "");
+  return c;
+}
+
+TestResult check_test(const fs::path& suite, const fs::path& out, const ManifestTest& t) {
+  // The expected planes, held to the manifest's hash first: a damaged suite is not a DUT failure.
+  std::string expect_text[std::size(kPlanes)];
+  Sha256 hash;
+  for (size_t p = 0; p < std::size(kPlanes); ++p) {
+    const fs::path path = suite / t.name / fmt::format("expect.{}.hex", to_string(kPlanes[p]));
+    std::optional<std::string> text = read_text(path);
+    if (!text)
+      throw ConformanceError(fmt::format("SUITE {}: cannot read: {} (export the suite again)",
+                                         path.string(), std::strerror(errno)));
+    hash.update(*text);
+    expect_text[p] = std::move(*text);
+  }
+  if (hash.hex() != t.signature_sha256)
+    throw ConformanceError(fmt::format("SUITE {}: the expect files of test '{}' do not match its "
+                                       "signature_sha256 (export the suite again)",
+                                       suite.string(), t.name));
+  TestResult r{t.name, true, ""};
+  std::string first, states;
+  for (size_t p = 0; p < std::size(kPlanes); ++p) {
+    const Plane plane = kPlanes[p];
+    std::vector<uint32_t> expect;
+    const fs::path expect_path = suite / t.name / fmt::format("expect.{}.hex", to_string(plane));
+    std::string error = parse_words(expect_text[p], hex_digits(plane), true, expect_path.string(), expect);
+    if (error.empty() && expect.size() != size_t(t.width) * size_t(t.height))
+      error = fmt::format("{}: {} words for a {}x{} frame", expect_path.string(), expect.size(),
+                          t.width, t.height);
+    if (!error.empty()) throw ConformanceError("SUITE " + error + " (export the suite again)");
+    const PlaneCheck c =
+        check_plane(t, plane, expect, out / t.name / fmt::format("got.{}.hex", to_string(plane)));
+    if (first.empty()) first = c.first;
+    states += fmt::format("{}{} {}", p ? ", " : "", to_string(plane), c.state);
+  }
+  r.pass = first.empty();
+  r.line = r.pass ? fmt::format("pass  {}", t.name)
+                  : fmt::format("FAIL  {}: {} [{}]", t.name, first, states);
+  return r;
+}
+
+}  // namespace
+
+std::vector<std::string> suite_test_names(const std::string& suite) {
+  std::vector<std::string> names;
+  for (const ManifestTest& t : read_manifest(suite)) names.push_back(t.name);
+  return names;
+}
+
+std::vector<TestResult> check_suite(const std::string& suite, const std::string& out,
+                                    const std::vector<std::string>& only,
+                                    const std::function<void(const TestResult&)>& report) {
+  const std::vector<ManifestTest> tests = read_manifest(suite);
+  for (const std::string& name : only)
+    if (std::none_of(tests.begin(), tests.end(), [&](const ManifestTest& t) { return t.name == name; }))
+      throw ConformanceError(fmt::format("--tests: '{}' is not a test of {} (its manifest.json "
+                                         "lists them)", name, suite));
+  std::vector<TestResult> results;
+  for (const ManifestTest& t : tests) {
+    if (!only.empty() && std::find(only.begin(), only.end(), t.name) == only.end()) continue;
+    results.push_back(check_test(suite, out, t));
+    if (report) report(results.back());
+  }
+  return results;
+}
+
+}  // namespace zb::conformance

@@ -1,0 +1,28 @@
+// zblend conformance check: a DUT's planes (OUT/<test>/got.<plane>.hex) against a suite's
+// expected signatures (docs/conformance.md "Checking signatures").
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace zb::conformance {
+
+struct TestResult {
+  std::string name;
+  bool pass = false;
+  std::string line;  // "pass  NAME", or "FAIL  NAME: the first problem [each plane's state]"
+};
+
+// The names of SUITE's tests, in its order. Throws ConformanceError on a malformed manifest.
+std::vector<std::string> suite_test_names(const std::string& suite);
+
+// Checks every test of SUITE (or those in `only`, in the suite's order) and reports each result
+// to `report` as it is decided. A malformed suite (manifest, or expect files that do not match
+// their signature_sha256) or a name in `only` that is not a test throws ConformanceError; a got
+// file that is missing or malformed fails its test.
+std::vector<TestResult> check_suite(const std::string& suite, const std::string& out,
+                                    const std::vector<std::string>& only,
+                                    const std::function<void(const TestResult&)>& report);
+
+}  // namespace zb::conformance

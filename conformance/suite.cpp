@@ -1,0 +1,154 @@
+#include "suite.h"
+
+#include <algorithm>
+
+#include "pipeline/passes.h"
+#include "pipeline/render.h"
+#include "rtl_params.h"
+#include "scene/builtin_scenes.h"
+#include "streams.h"
+
+namespace zb::conformance {
+namespace {
+
+// The configs, base first. Each other config changes one width of the base.
+const Config kBase{"d24-c16", 24, 16};
+const Config kCoverage4{"d24-c4", 24, 4};
+const Config kDepth16{"d16-c16", 16, 16};
+const Config kDepth32{"d32-c16", 32, 16};
+
+// Scenes: every built-in at a small frame. The other depth widths run the scenes and methods
+// where the width decides something: equal depths (coplanar, the peel's equal test), the edges'
+// depth offset in depth units (parts, hidden-line), coverage's nearer-or-equal cases.
+constexpr int kSceneWidth = 32, kSceneHeight = 24;
+const char* const kWidthScenes[] = {"cad", "parts", "coplanar"};
+const char* const kWidthMethods[] = {"three-pass", "coverage-aa", "hidden-line", "depth-peel-4"};
+
+// Synthetic streams: fixed seeds and sizes.
+constexpr uint64_t kHazardSeed = 1;
+constexpr int kHazardPasses = 4;
+constexpr size_t kHazardFragments = 300;  // per pass
+constexpr uint64_t kRandomSeed = 1;
+constexpr int kRandomWidth = 48, kRandomHeight = 40;
+constexpr int kRandomPasses = 24;
+constexpr size_t kRandomFragments = 150;  // per pass: many passes, many states
+
+// The CI-sized subset: one scene with four methods (a depth peel and coverage-aa among them),
+// one hazard, one random, one other depth width.
+const char* const kQuick[] = {"cad-three-pass", "cad-coverage-aa", "cad-depth-peel-2",
+                              "cad-hidden-line", "hazard", "random", "cad-three-pass-d16"};
+
+// A test's name: what it runs, then the widths where its config differs from the base.
+std::string named(const std::string& what, const Config& c) {
+  std::string name = what;
+  if (c.depth_bits != kBase.depth_bits) name += "-d" + std::to_string(c.depth_bits);
+  if (c.coverage_samples != kBase.coverage_samples) name += "-c" + std::to_string(c.coverage_samples);
+  return name;
+}
+
+TestSpec scene_test(const Config& c, const std::string& scene, const std::string& method) {
+  TestSpec t;
+  t.name = named(scene + "-" + method, c);
+  t.config = c;
+  t.scene = scene;
+  t.method = method;
+  t.width = kSceneWidth;
+  t.height = kSceneHeight;
+  return t;
+}
+
+TestSpec hazard_test(const Config& c) {
+  TestSpec t;
+  t.name = named("hazard", c);
+  t.config = c;
+  t.kind = TestKind::kHazard;
+  t.seed = kHazardSeed;
+  t.width = kRtlTileW;  // the stimulus's frame: one RTL tile
+  t.height = kRtlTileH;
+  return t;
+}
+
+TestSpec random_test(const Config& c) {
+  TestSpec t;
+  t.name = named("random", c);
+  t.config = c;
+  t.kind = TestKind::kRandom;
+  t.seed = kRandomSeed;
+  t.width = kRandomWidth;
+  t.height = kRandomHeight;
+  return t;
+}
+
+}  // namespace
+
+const char* to_string(TestKind k) {
+  switch (k) {
+    case TestKind::kScene: return "scene";
+    case TestKind::kHazard: return "hazard";
+    case TestKind::kRandom: return "random";
+  }
+  return "?";
+}
+
+std::vector<TestSpec> suite_tests(bool quick) {
+  std::vector<TestSpec> all;
+  for (const SceneInfo& s : builtin_scenes())
+    for (const PassPlan& p : pass_plans()) all.push_back(scene_test(kBase, s.name, p.name));
+  all.push_back(hazard_test(kBase));
+  all.push_back(random_test(kBase));
+  all.push_back(hazard_test(kCoverage4));
+  all.push_back(random_test(kCoverage4));
+  for (const Config* c : {&kDepth16, &kDepth32})
+    for (const char* scene : kWidthScenes)
+      for (const char* method : kWidthMethods) all.push_back(scene_test(*c, scene, method));
+  for (TestSpec& t : all)
+    t.quick = std::find(std::begin(kQuick), std::end(kQuick), t.name) != std::end(kQuick);
+  if (quick)
+    all.erase(std::remove_if(all.begin(), all.end(), [](const TestSpec& t) { return !t.quick; }),
+              all.end());
+  return all;
+}
+
+std::string build_warning() {
+  if (kRtlTileW == 64 && kRtlCoverageSamples == 16) return "";
+  return "this build's RTL tile is " + std::to_string(kRtlTileW) + " and its coverage samples " +
+         std::to_string(kRtlCoverageSamples) + " (a default build's: 64 and 16): its hazard tests "
+         "differ from a default build's suite";
+}
+
+Trace test_trace(const TestSpec& t) {
+  const Config& c = t.config;
+  Trace trace;
+  switch (t.kind) {
+    case TestKind::kScene: {
+      const PassPlan* plan = find_plan(t.method);
+      const std::optional<Scene> scene = builtin_scene(t.scene);
+      if (!plan || !scene)
+        throw ConformanceError("test " + t.name + ": no scene '" + t.scene + "' or method '" +
+                               t.method + "'");
+      const Viewport vp{t.width, t.height, c.depth_bits, c.coverage_samples};
+      trace = make_trace(rasterize_scene(*scene, vp), *plan);
+      break;
+    }
+    case TestKind::kHazard:
+      if (c.depth_bits != 24)  // the stimulus draws 24-bit depths
+        throw ConformanceError("test " + t.name + ": the hazard stream needs 24-bit depth");
+      trace = hazard_trace(t.seed, c.coverage_samples, kHazardPasses, kHazardFragments);
+      break;
+    case TestKind::kRandom:
+      trace = random_trace(t.seed, t.width, t.height, c.depth_bits, c.coverage_samples,
+                           kRandomPasses, kRandomFragments);
+      break;
+  }
+  // The stream carries a clear depth as the DUT gets it: clamped to the far depth, as
+  // apply_frame_op does.
+  auto clamp = [&](std::vector<FrameOp>& ops) {
+    for (FrameOp& op : ops)
+      if (op.kind == FrameOpKind::kClearDepth) op.depth = std::min(op.depth, depth_max(c.depth_bits));
+  };
+  for (TracePass& p : trace.passes) clamp(p.frame_ops);
+  clamp(trace.final_ops);
+  return trace;
+}
+
+}  // namespace zb::conformance

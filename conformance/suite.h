@@ -1,0 +1,55 @@
+// The conformance suite: which tests it holds, in which order, and each test's command stream
+// as a Trace (docs/conformance.md "The vectors"; the format is conformance_spec.md's, v1).
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "io/trace.h"
+
+namespace zb::conformance {
+
+// The manifest's "suite" and "version" (conformance_spec.md, format v1).
+constexpr const char* kSuiteName = "zblend-conformance";
+constexpr int kSuiteVersion = 1;
+
+// Bad input to the kit (a malformed suite, a path it cannot use, an unknown test): one line.
+struct ConformanceError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The widths a DUT is built with: one build per config.
+struct Config {
+  std::string name;  // "d24-c16"
+  int depth_bits = 24;
+  int coverage_samples = 16;
+};
+
+enum class TestKind { kScene, kHazard, kRandom };
+const char* to_string(TestKind k);  // "scene", "hazard", "random": the manifest's kind
+
+struct TestSpec {
+  std::string name;  // the test's directory
+  Config config;
+  TestKind kind = TestKind::kScene;
+  std::string scene, method;  // kScene: a built-in scene and a pass plan
+  uint64_t seed = 0;          // kHazard, kRandom
+  int width = 0, height = 0;
+  bool quick = false;         // in the CI-sized subset (export --quick)
+};
+
+// Every test, grouped by config (the base config d24-c16 first), in a fixed order; with
+// `quick`, the CI-sized subset, the same tests under the same names.
+std::vector<TestSpec> suite_tests(bool quick);
+
+// "" in a default build. Otherwise a warning: the hazard tests follow this build's RTL tile and
+// sample count (tb::HazardStimulus draws for them), so they differ from a default build's.
+std::string build_warning();
+
+// The test's frame, passes, fragments and frame operations (frame operations' values as the
+// stream carries them: the background substituted, clear depths clamped to the far depth).
+Trace test_trace(const TestSpec& t);
+
+}  // namespace zb::conformance

@@ -1,0 +1,320 @@
+/* test_capi: the golden model's C API, from C99 (so zb_golden.h is proved to be C).
+ * First every error path: the status, one line naming the call, and nothing changed. Then
+ * exported tests replayed through the API, read straight from their stream.hex (a decoder of
+ * the format independent of the exporter's encoder): every push's reported writes must be what
+ * the planes then hold, every pass's counters must add up, and the final planes must equal the
+ * test's expect files, which the exporter computed with GoldenRop.
+ *
+ * Usage: test_capi SUITE [TEST...]   (no TEST: every test directory of SUITE) */
+#define _POSIX_C_SOURCE 200809L /* opendir */
+
+#include <dirent.h>
+#include <inttypes.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "zb_golden.h"
+
+static int failures;
+
+#define CHECK(cond, ...)                                             \
+  do {                                                               \
+    if (!(cond)) {                                                   \
+      ++failures;                                                    \
+      fprintf(stderr, "test_capi: line %d: FAIL: ", __LINE__);       \
+      fprintf(stderr, __VA_ARGS__);                                  \
+      fputc('\n', stderr);                                           \
+    }                                                                \
+  } while (0)
+
+/* The call returned `want`, and the error it left (on g, or the thread's for NULL) is one line
+ * starting with the call's name. The lines are printed: the log shows what users read. */
+static void expect_error(int line, int got, int want, const zb_golden* g, const char* call) {
+  const char* e = zb_golden_last_error(g);
+  if (got != want || e == NULL || strncmp(e, call, strlen(call)) != 0 || strchr(e, '\n') != NULL ||
+      strlen(e) <= strlen(call) + 2) {
+    ++failures;
+    fprintf(stderr, "test_capi: line %d: FAIL: %s: status %d (want %d), error '%s'\n", line, call,
+            got, want, e ? e : "(null)");
+    return;
+  }
+  printf("error path, line %d: %s\n", line, e);
+}
+#define EXPECT_ERROR(call_expr, want, g, name) expect_error(__LINE__, (call_expr), (want), (g), (name))
+
+static uint32_t read_plane(zb_golden* g, int plane, int x, int y) {
+  uint32_t v = 0xdeadbeefu;
+  CHECK(zb_golden_read(g, plane, x, y, &v) == ZB_OK, "read plane %d (%d, %d): %s", plane, x, y,
+        zb_golden_last_error(g));
+  return v;
+}
+
+/* A coverage pass: depth test on, less, depth write, blend 3, every channel. */
+#define STATE_COVERAGE (1u | 1u << 1 | 1u << 4 | 3u << 5 | 15u << 8)
+
+static void test_errors(void) {
+  zb_golden* g = NULL;
+  uint32_t wrote = 0, v = 0;
+  uint64_t in = 0;
+
+  /* create: the widths and the out pointer; the error is the thread's. */
+  EXPECT_ERROR(zb_golden_create(NULL, 8, 4, 24, 16, 0), ZB_EARG, NULL, "zb_golden_create");
+  EXPECT_ERROR(zb_golden_create(&g, 0, 4, 24, 16, 0), ZB_EARG, NULL, "zb_golden_create");
+  CHECK(g == NULL, "a failed create leaves the handle NULL");
+  EXPECT_ERROR(zb_golden_create(&g, 8193, 4, 24, 16, 0), ZB_EARG, NULL, "zb_golden_create");
+  EXPECT_ERROR(zb_golden_create(&g, 8, -1, 24, 16, 0), ZB_EARG, NULL, "zb_golden_create");
+  EXPECT_ERROR(zb_golden_create(&g, 8, 4, 7, 16, 0), ZB_EARG, NULL, "zb_golden_create");
+  EXPECT_ERROR(zb_golden_create(&g, 8, 4, 33, 16, 0), ZB_EARG, NULL, "zb_golden_create");
+  EXPECT_ERROR(zb_golden_create(&g, 8, 4, 24, 0, 0), ZB_EARG, NULL, "zb_golden_create");
+  EXPECT_ERROR(zb_golden_create(&g, 8, 4, 24, 3, 0), ZB_EARG, NULL, "zb_golden_create");
+  EXPECT_ERROR(zb_golden_create(&g, 8, 4, 24, 32, 0), ZB_EARG, NULL, "zb_golden_create");
+
+  /* A NULL handle, on every call that takes one. */
+  EXPECT_ERROR(zb_golden_begin_pass(NULL, STATE_COVERAGE), ZB_EHANDLE, NULL, "zb_golden_begin_pass");
+  EXPECT_ERROR(zb_golden_push(NULL, 0, 0, 0, 0, 0, &wrote, NULL, NULL, NULL), ZB_EHANDLE, NULL,
+               "zb_golden_push");
+  EXPECT_ERROR(zb_golden_end_pass(NULL, &in, NULL, NULL, NULL, NULL, NULL), ZB_EHANDLE, NULL,
+               "zb_golden_end_pass");
+  EXPECT_ERROR(zb_golden_frame_op(NULL, ZB_OP_CLEAR_COLOR, 0, 0), ZB_EHANDLE, NULL,
+               "zb_golden_frame_op");
+  EXPECT_ERROR(zb_golden_read(NULL, ZB_PLANE_COLOR, 0, 0, &v), ZB_EHANDLE, NULL, "zb_golden_read");
+  zb_golden_destroy(NULL);
+
+  /* An 8x4 frame, 16-bit depth, 4 samples. */
+  CHECK(zb_golden_create(&g, 8, 4, 16, 4, 0x11223344u) == ZB_OK && g != NULL, "create: %s",
+        zb_golden_last_error(NULL));
+  if (g == NULL) return;
+  CHECK(strcmp(zb_golden_last_error(NULL), "") == 0, "a good create clears the thread's error");
+
+  /* Calls out of order. */
+  EXPECT_ERROR(zb_golden_push(g, 0, 0, 0, 0, 0, &wrote, NULL, NULL, NULL), ZB_EORDER, g, "zb_golden_push");
+  EXPECT_ERROR(zb_golden_end_pass(g, &in, NULL, NULL, NULL, NULL, NULL), ZB_EORDER, g, "zb_golden_end_pass");
+
+  /* Bad state words: bits above 12, blend codes 5 to 7. */
+  EXPECT_ERROR(zb_golden_begin_pass(g, 1u << 13), ZB_EARG, g, "zb_golden_begin_pass");
+  EXPECT_ERROR(zb_golden_begin_pass(g, 5u << 5), ZB_EARG, g, "zb_golden_begin_pass");
+  EXPECT_ERROR(zb_golden_begin_pass(g, 7u << 5), ZB_EARG, g, "zb_golden_begin_pass");
+  EXPECT_ERROR(zb_golden_begin_pass(g, 0xffffffffu), ZB_EARG, g, "zb_golden_begin_pass");
+  CHECK(zb_golden_begin_pass(g, STATE_COVERAGE) == ZB_OK, "begin: %s", zb_golden_last_error(g));
+  CHECK(strcmp(zb_golden_last_error(g), "") == 0, "a good call clears the handle's error");
+  EXPECT_ERROR(zb_golden_begin_pass(g, STATE_COVERAGE), ZB_EORDER, g, "zb_golden_begin_pass");
+
+  /* Bad fragments: pixel outside the frame, depth above 16 bits, coverage outside 0..4. */
+  EXPECT_ERROR(zb_golden_push(g, -1, 0, 0, 0, 0, &wrote, NULL, NULL, NULL), ZB_EARG, g, "zb_golden_push");
+  EXPECT_ERROR(zb_golden_push(g, 8, 0, 0, 0, 0, &wrote, NULL, NULL, NULL), ZB_EARG, g, "zb_golden_push");
+  EXPECT_ERROR(zb_golden_push(g, 0, -1, 0, 0, 0, &wrote, NULL, NULL, NULL), ZB_EARG, g, "zb_golden_push");
+  EXPECT_ERROR(zb_golden_push(g, 0, 4, 0, 0, 0, &wrote, NULL, NULL, NULL), ZB_EARG, g, "zb_golden_push");
+  EXPECT_ERROR(zb_golden_push(g, 0, 0, 0x10000u, 0, 0, &wrote, NULL, NULL, NULL), ZB_EARG, g, "zb_golden_push");
+  EXPECT_ERROR(zb_golden_push(g, 0, 0, 0, 0, -1, &wrote, NULL, NULL, NULL), ZB_EARG, g, "zb_golden_push");
+  EXPECT_ERROR(zb_golden_push(g, 0, 0, 0, 0, 5, &wrote, NULL, NULL, NULL), ZB_EARG, g, "zb_golden_push");
+  CHECK(wrote == 0, "a failed push reports no writes");
+  EXPECT_ERROR(zb_golden_frame_op(g, ZB_OP_CLEAR_COLOR, 0, 0), ZB_EORDER, g, "zb_golden_frame_op");
+
+  /* The failures changed nothing; a good push with every output NULL is counted. */
+  CHECK(read_plane(g, ZB_PLANE_COLOR, 0, 0) == 0x11223344u, "colour after failed calls");
+  CHECK(read_plane(g, ZB_PLANE_COVERAGE, 0, 0) == 0, "coverage after failed calls");
+  CHECK(zb_golden_push(g, 0, 0, 100, 0xff0000ffu, 4, NULL, NULL, NULL, NULL) == ZB_OK, "push: %s",
+        zb_golden_last_error(g));
+  CHECK(zb_golden_end_pass(g, &in, NULL, NULL, NULL, NULL, NULL) == ZB_OK && in == 1,
+        "end_pass: %" PRIu64 " fragments in, want 1 (%s)", in, zb_golden_last_error(g));
+  CHECK(read_plane(g, ZB_PLANE_COVERAGE, 0, 0) == 4 && read_plane(g, ZB_PLANE_DEPTH, 0, 0) == 100,
+        "a full-coverage nearer fragment sets coverage 4 and depth 100");
+
+  /* Frame operations and reads. */
+  EXPECT_ERROR(zb_golden_frame_op(g, -1, 0, 0), ZB_EARG, g, "zb_golden_frame_op");
+  EXPECT_ERROR(zb_golden_frame_op(g, 4, 0, 0), ZB_EARG, g, "zb_golden_frame_op");
+  EXPECT_ERROR(zb_golden_read(g, -1, 0, 0, &v), ZB_EARG, g, "zb_golden_read");
+  EXPECT_ERROR(zb_golden_read(g, 4, 0, 0, &v), ZB_EARG, g, "zb_golden_read");
+  EXPECT_ERROR(zb_golden_read(g, ZB_PLANE_PEEL, 8, 0, &v), ZB_EARG, g, "zb_golden_read");
+  EXPECT_ERROR(zb_golden_read(g, ZB_PLANE_PEEL, 0, 4, &v), ZB_EARG, g, "zb_golden_read");
+  EXPECT_ERROR(zb_golden_read(g, ZB_PLANE_COLOR, 0, 0, NULL), ZB_EARG, g, "zb_golden_read");
+  CHECK(zb_golden_frame_op(g, ZB_OP_CLEAR_DEPTH, 0, 0xffffffffu) == ZB_OK, "clear depth: %s",
+        zb_golden_last_error(g));
+  CHECK(read_plane(g, ZB_PLANE_DEPTH, 7, 3) == 0xffffu, "a depth clear is clamped to ZMAX");
+  CHECK(strcmp(zb_golden_last_error(g), "") == 0, "the error is cleared by a good call");
+  zb_golden_destroy(g);
+}
+
+/* A 128-bit stream word as four 32-bit lanes, w[0] = bits [31:0]. */
+typedef struct {
+  uint32_t w[4];
+} word128;
+
+static int read_word(FILE* f, word128* out) {
+  char line[80];
+  int i;
+  if (!fgets(line, sizeof line, f) || strlen(line) != 33 || line[32] != '\n') return 0;
+  for (i = 0; i < 4; ++i) {
+    char lane[9];
+    char* end = NULL;
+    memcpy(lane, line + 8 * i, 8);
+    lane[8] = '\0';
+    out->w[3 - i] = (uint32_t)strtoul(lane, &end, 16);
+    if (end != lane + 8) return 0;
+  }
+  return 1;
+}
+
+static const char* const kPlaneNames[4] = {"color", "depth", "coverage", "peel"};
+
+/* One push, held to the planes: a plane it reports written holds the value it reports, the
+ * others (and the peel plane always) are unchanged. */
+static void push_checked(zb_golden* g, const char* test, uint64_t n, int x, int y, uint32_t z,
+                         uint32_t rgba, int coverage) {
+  uint32_t before[4], after[4], wrote = 0, wd = 0, wc = 0, wrgba = 0;
+  int p;
+  for (p = 0; p < 4; ++p) before[p] = read_plane(g, p, x, y);
+  if (zb_golden_push(g, x, y, z, rgba, coverage, &wrote, &wd, &wc, &wrgba) != ZB_OK) {
+    CHECK(0, "%s: word %" PRIu64 ": push: %s", test, n, zb_golden_last_error(g));
+    return;
+  }
+  for (p = 0; p < 4; ++p) after[p] = read_plane(g, p, x, y);
+  CHECK((wrote & ZB_WROTE_COLOR) ? after[0] == wrgba : (after[0] == before[0] && wrgba == 0),
+        "%s: word %" PRIu64 ": colour of (%d, %d): reported %08x (wrote %u), plane %08x", test, n,
+        x, y, wrgba, wrote, after[0]);
+  CHECK((wrote & ZB_WROTE_DEPTH) ? after[1] == wd : (after[1] == before[1] && wd == 0),
+        "%s: word %" PRIu64 ": depth of (%d, %d): reported %x (wrote %u), plane %x", test, n, x,
+        y, wd, wrote, after[1]);
+  CHECK((wrote & ZB_WROTE_COVERAGE) ? after[2] == wc : (after[2] == before[2] && wc == 0),
+        "%s: word %" PRIu64 ": coverage of (%d, %d): reported %u (wrote %u), plane %u", test, n,
+        x, y, wc, wrote, after[2]);
+  CHECK(after[3] == before[3], "%s: word %" PRIu64 ": a push changed the peel plane", test, n);
+}
+
+/* Replays SUITE/TEST/stream.hex through the API and compares the planes with the expect files. */
+static void replay(const char* suite, const char* test) {
+  char path[4096];
+  FILE* f;
+  word128 word;
+  zb_golden* g = NULL;
+  uint64_t count, n, pass_fragments = 0, fragments = 0;
+  int width = 0, height = 0, ended = 0, in_pass = 0, p;
+  const int failures_before = failures;
+
+  snprintf(path, sizeof path, "%s/%s/stream.hex", suite, test);
+  f = fopen(path, "r");
+  CHECK(f != NULL, "cannot open %s", path);
+  if (!f) return;
+  CHECK(read_word(f, &word) && word.w[1] == 0 && word.w[2] == 0 && word.w[3] == 0,
+        "%s: line 1 is not a count", path);
+  count = word.w[0];
+  for (n = 0; n < count && !ended; ++n) {
+    uint32_t op;
+    if (!read_word(f, &word)) {
+      CHECK(0, "%s: word %" PRIu64 " is not 32 hex digits", path, n);
+      break;
+    }
+    op = word.w[3] >> 24;
+    CHECK((n == 0) == (op == 0x01), "%s: word %" PRIu64 ": FRAME must come first, and only there", path, n);
+    if (op != 0x01 && g == NULL) break;
+    switch (op) {
+      case 0x01: /* FRAME */
+        width = (int)(word.w[0] & 0xffffu);
+        height = (int)(word.w[0] >> 16);
+        CHECK(zb_golden_create(&g, width, height, (int)(word.w[1] & 0xffu),
+                               (int)((word.w[1] >> 8) & 0xffu), word.w[2]) == ZB_OK,
+              "%s: create: %s", path, zb_golden_last_error(NULL));
+        break;
+      case 0x02: /* PASS */
+        CHECK(!in_pass && zb_golden_begin_pass(g, word.w[0]) == ZB_OK, "%s: word %" PRIu64 ": begin: %s",
+              path, n, zb_golden_last_error(g));
+        in_pass = 1;
+        pass_fragments = 0;
+        break;
+      case 0x03: /* FRAG */
+        push_checked(g, test, n, (int)(word.w[0] & 0xffffu), (int)(word.w[0] >> 16), word.w[1],
+                     word.w[2], (int)(word.w[3] & 0xffu));
+        ++pass_fragments;
+        ++fragments;
+        break;
+      case 0x04: { /* END_PASS */
+        uint64_t in = 0, passed = 0, dr = 0, dw = 0, cr = 0, cw = 0;
+        CHECK(zb_golden_end_pass(g, &in, &passed, &dr, &dw, &cr, &cw) == ZB_OK, "%s: end: %s",
+              path, zb_golden_last_error(g));
+        CHECK(in == pass_fragments && passed <= in && dw <= passed && cw <= passed && cr <= passed &&
+                  dr <= in,
+              "%s: word %" PRIu64 ": counters in %" PRIu64 " (sent %" PRIu64 "), passed %" PRIu64
+              ", depth %" PRIu64 "/%" PRIu64 ", colour %" PRIu64 "/%" PRIu64,
+              path, n, in, pass_fragments, passed, dr, dw, cr, cw);
+        in_pass = 0;
+        break;
+      }
+      case 0x05: /* FRAME_OP */
+        CHECK(zb_golden_frame_op(g, (int)(word.w[0] & 0xfu), word.w[1], word.w[2]) == ZB_OK,
+              "%s: word %" PRIu64 ": frame op: %s", path, n, zb_golden_last_error(g));
+        break;
+      case 0x06: /* END */
+        CHECK(n + 1 == count, "%s: END is word %" PRIu64 " of %" PRIu64, path, n, count);
+        ended = 1;
+        break;
+      default:
+        CHECK(0, "%s: word %" PRIu64 ": opcode 0x%02x is unknown", path, n, op);
+        ended = 1;
+    }
+  }
+  CHECK(ended && !in_pass, "%s: no END, or a pass left open", path);
+  fclose(f);
+  if (g == NULL) return;
+
+  for (p = 0; p < 4; ++p) {
+    int x, y, differ = 0;
+    snprintf(path, sizeof path, "%s/%s/expect.%s.hex", suite, test, kPlaneNames[p]);
+    f = fopen(path, "r");
+    CHECK(f != NULL, "cannot open %s", path);
+    if (!f) continue;
+    for (y = 0; y < height; ++y)
+      for (x = 0; x < width; ++x) {
+        unsigned int want = 0;
+        const uint32_t got = read_plane(g, p, x, y);
+        if (fscanf(f, "%x", &want) != 1) {
+          CHECK(0, "%s: too short", path);
+          x = width, y = height;
+          break;
+        }
+        if (got != want && differ++ == 0)
+          CHECK(0, "%s: %s pixel (%d, %d): expect file %x, C API %x", test, kPlaneNames[p], x, y,
+                want, got);
+      }
+    CHECK(differ == 0, "%s: %d %s pixels differ", test, differ, kPlaneNames[p]);
+    fclose(f);
+  }
+  zb_golden_destroy(g);
+  printf("%s: %s: %" PRIu64 " words, %" PRIu64 " fragments, %dx%d x 4 planes\n", test,
+         failures == failures_before ? "equal" : "FAILED", count, fragments, width, height);
+}
+
+static int is_test_dir(const char* suite, const char* name) {
+  char path[4096];
+  FILE* f;
+  if (name[0] == '.') return 0;
+  snprintf(path, sizeof path, "%s/%s/stream.hex", suite, name);
+  f = fopen(path, "r");
+  if (f) fclose(f);
+  return f != NULL;
+}
+
+int main(int argc, char** argv) {
+  int i, tests = 0;
+  if (argc < 2) {
+    fprintf(stderr, "usage: test_capi SUITE [TEST...]\n");
+    return 2;
+  }
+  test_errors();
+  if (argc > 2) {
+    for (i = 2; i < argc; ++i, ++tests) replay(argv[1], argv[i]);
+  } else {
+    DIR* d = opendir(argv[1]);
+    struct dirent* e;
+    CHECK(d != NULL, "cannot open the suite %s", argv[1]);
+    while (d && (e = readdir(d)) != NULL)
+      if (is_test_dir(argv[1], e->d_name)) {
+        replay(argv[1], e->d_name);
+        ++tests;
+      }
+    if (d) closedir(d);
+  }
+  CHECK(tests > 0, "no test replayed: the suite %s holds none", argv[1]);
+  printf("test_capi: %d tests replayed, %d failures\n", tests, failures);
+  return failures ? 1 : 0;
+}

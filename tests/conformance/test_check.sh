@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# zblend conformance check: passes when the got files are the expect files; fails, naming the
+# test, plane, pixel and both values, when one word of one got file changes; names a missing got
+# file; --tests checks a slice; a damaged suite or an unknown test is exit 2.
+set -u
+zblend=$(realpath "${1:?usage: test_check.sh PATH/TO/zblend SUITE}")
+suite=$(realpath "${2:?usage: test_check.sh PATH/TO/zblend SUITE}")
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+bad() { echo "FAIL: $*"; fail=1; }
+
+# The expect files as a DUT's got files.
+out=$tmp/out
+tests=0
+for d in "$suite"/*/; do
+  name=$(basename "$d")
+  mkdir -p "$out/$name"
+  for p in color depth coverage peel; do cp "$d/expect.$p.hex" "$out/$name/got.$p.hex"; done
+  tests=$((tests + 1))
+done
+
+"$zblend" conformance check "$suite" "$out" >"$tmp/pass.log" 2>&1; rc=$?
+[[ $rc -eq 0 ]] || bad "check of the expect files: exit $rc: $(grep -v '^pass' "$tmp/pass.log" | head -3)"
+[[ $(grep -c '^pass  ' "$tmp/pass.log") -eq $tests ]] || bad "not one pass line per test ($tests)"
+grep -q "^$tests of $tests tests pass$" "$tmp/pass.log" || bad "no summary: $(tail -1 "$tmp/pass.log")"
+
+# A DUT's $writememh may differ in case and leading zeros, with // comments: still a pass.
+g=$out/random/got.color.hex
+{ echo "// written by a DUT"; tr 'a-f' 'A-F' <"$g" | sed 's/^0*\(.\)/\1/'; } >"$tmp/g" && cp "$tmp/g" "$g"
+"$zblend" conformance check "$suite" "$out" --tests random >/dev/null 2>&1 ||
+  bad "upper case, no leading zeros and a comment fail the check"
+cp "$suite/random/expect.color.hex" "$g"
+
+# One word of one got file changed: the 100th depth word of cad-three-pass, pixel (99 % 32,
+# 99 / 32) = (3, 3) of its 32x24 frame.
+g=$out/cad-three-pass/got.depth.hex
+want=$(sed -n 100p "$g")
+sed -i '100s/.*/00abcdef/' "$g"
+"$zblend" conformance check "$suite" "$out" >"$tmp/fail.log" 2>"$tmp/fail.err"; rc=$?
+[[ $rc -eq 1 ]] || bad "one changed word: exit $rc, want 1"
+line="FAIL  cad-three-pass: depth pixel (3, 3): expected $want, got 00abcdef [color ok, depth 1 pixel differs, coverage ok, peel ok]"
+grep -qxF "$line" "$tmp/fail.log" || bad "no line '$line' in: $(grep FAIL "$tmp/fail.log")"
+[[ $(grep -c '^FAIL' "$tmp/fail.log") -eq 1 ]] || bad "more than one test failed: $(grep FAIL "$tmp/fail.log")"
+grep -qx "zblend: FAILED: 1 of $tests tests failed" "$tmp/fail.err" || bad "stderr: $(cat "$tmp/fail.err")"
+
+# A slice: only the named tests are checked, in the suite's order.
+"$zblend" conformance check "$suite" "$out" --tests random,cad-three-pass >"$tmp/slice.log" 2>/dev/null; rc=$?
+[[ $rc -eq 1 && $(cut -d: -f1 "$tmp/slice.log") == $'FAIL  cad-three-pass\npass  random\n1 of 2 tests pass' ]] ||
+  bad "--tests slice: exit $rc: $(cat "$tmp/slice.log")"
+"$zblend" conformance check "$suite" "$out" --tests random >/dev/null 2>&1 || bad "--tests random fails"
+
+# A missing got file fails its test, naming the file.
+rm "$out/hazard/got.peel.hex"
+"$zblend" conformance check "$suite" "$out" --tests hazard >"$tmp/missing.log" 2>/dev/null; rc=$?
+[[ $rc -eq 1 ]] && grep -qF "FAIL  hazard: missing $out/hazard/got.peel.hex" "$tmp/missing.log" ||
+  bad "missing got file: exit $rc: $(cat "$tmp/missing.log")"
+# A short got file fails its test, saying so.
+head -5 "$suite/hazard/expect.peel.hex" >"$out/hazard/got.peel.hex"
+"$zblend" conformance check "$suite" "$out" --tests hazard 2>/dev/null | grep -q "got.peel.hex: 5 words, expected 4096 (64x64)" ||
+  bad "a short got file is not named"
+
+# Bad input: exit 2, one line on stderr.
+expect2() {  # NAME PATTERN ARGS...
+  local name=$1 pattern=$2; shift 2
+  local err rc
+  err=$("$zblend" conformance check "$@" 2>&1 >/dev/null); rc=$?
+  [[ $rc -eq 2 && $(wc -l <<<"$err") -eq 1 ]] && grep -qE -- "$pattern" <<<"$err" ||
+    bad "$name: exit $rc, stderr: $err"
+}
+expect2 "unknown test" "--tests: 'nope' is not a test of" "$suite" "$out" --tests nope
+expect2 "empty test name" "--tests: 'random,' has an empty name" "$suite" "$out" --tests random,
+expect2 "no OUT" "OUT: '$tmp/none' is not a directory" "$suite" "$tmp/none"
+expect2 "no suite" "SUITE $tmp/manifest.json: cannot read" "$tmp" "$out"
+cp -r "$suite" "$tmp/damaged"
+sed -i '1s/.*/00000000/' "$tmp/damaged/random/expect.color.hex"
+expect2 "a changed expect file" "the expect files of test 'random' do not match its signature_sha256" \
+  "$tmp/damaged" "$out" --tests random
+echo '{"suite": "zblend-conformance", "version": 2, "tests": []}' >"$tmp/damaged/manifest.json"
+expect2 "a later version" "version 2 is not supported" "$tmp/damaged" "$out"
+echo '{"suite": "zblend-conformance", "version": 1, "tests": [{"name": "../x"}]}' >"$tmp/damaged/manifest.json"
+expect2 "a test without its fields" "manifest.json: .*key 'width' not found|is not a directory name" "$tmp/damaged" "$out"
+echo 'not json' >"$tmp/damaged/manifest.json"
+expect2 "not JSON" "manifest.json: .*parse error" "$tmp/damaged" "$out"
+
+[[ $fail -eq 0 ]] && echo "check: $tests tests pass on the expect files; a changed word, a missing and a short file fail; bad suites are exit 2"
+exit $fail

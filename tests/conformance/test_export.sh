@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# zblend conformance export: byte-for-byte reproducible (two exports, diff -r), each test's
+# signature_sha256 as sha256sum computes it over its four expect files, each stream's count line
+# and manifest counts as the files hold them, --quick a subset of the full suite, file for file,
+# and an export over an earlier suite replacing it with nothing left beside it.
+set -u
+zblend=$(realpath "${1:?usage: test_export.sh PATH/TO/zblend}")
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+bad() { echo "FAIL: $*"; fail=1; }
+
+"$zblend" conformance export "$tmp/a" >"$tmp/a.log" || bad "export a: $(cat "$tmp/a.log")"
+"$zblend" conformance export "$tmp/b" >/dev/null || bad "export b"
+diff -r "$tmp/a" "$tmp/b" >"$tmp/diff" || bad "two exports differ: $(head -5 "$tmp/diff")"
+cat "$tmp/a.log"
+
+# name, frame and counts of every test, from the manifest (python3 reads the JSON only).
+python3 - "$tmp/a/manifest.json" >"$tmp/tests" <<'PY' || bad "manifest unreadable"
+import json, sys
+m = json.load(open(sys.argv[1]))
+assert m["suite"] == "zblend-conformance" and m["version"] == 1
+configs = {c["name"] for c in m["configs"]}
+for t in m["tests"]:
+    assert t["config"] in configs, t["name"]
+    print(t["name"], t["width"] * t["height"], t["words"], t["signature_sha256"])
+PY
+tests=0
+while read -r name pixels words sha; do
+  tests=$((tests + 1))
+  d="$tmp/a/$name"
+  got=$(cat "$d/expect.color.hex" "$d/expect.depth.hex" "$d/expect.coverage.hex" \
+            "$d/expect.peel.hex" | sha256sum | cut -d' ' -f1)
+  [[ $got == "$sha" ]] || bad "$name: sha256sum $got, manifest $sha"
+  for p in color depth coverage peel; do
+    n=$(wc -l <"$d/expect.$p.hex")
+    [[ $n -eq $pixels ]] || bad "$name: expect.$p.hex has $n lines for $pixels pixels"
+  done
+  lines=$(wc -l <"$d/stream.hex")
+  count=$((16#$(head -1 "$d/stream.hex")))
+  [[ $count -eq $words && $lines -eq $((words + 1)) ]] ||
+    bad "$name: count line $count, $lines lines, manifest words $words"
+  [[ $(sed -n 2p "$d/stream.hex") == 01* && $(tail -1 "$d/stream.hex") == 06* ]] ||
+    bad "$name: the stream does not run FRAME to END"
+  grep -qvE '^[0-9a-f]{32}$' "$d/stream.hex" && bad "$name: a stream line is not 32 lower-case hex digits"
+done <"$tmp/tests"
+[[ $tests -gt 100 ]] || bad "only $tests tests in the suite"
+echo "export: $tests tests, hashes and counts as the files hold them"
+
+"$zblend" conformance export --quick "$tmp/q" >/dev/null || bad "export --quick"
+quick=0
+for d in "$tmp/q"/*/; do
+  name=$(basename "$d")
+  quick=$((quick + 1))
+  diff -r "$d" "$tmp/a/$name" >/dev/null || bad "quick test $name differs from the full suite's"
+done
+[[ $quick -ge 5 && $quick -le 10 ]] || bad "--quick has $quick tests, want a handful"
+
+# Over an earlier suite: replaced, the same bytes, no temporary sibling left.
+echo stale >"$tmp/b/hazard/stale.txt"
+"$zblend" conformance export "$tmp/b" >/dev/null || bad "export over an earlier suite"
+diff -r "$tmp/a" "$tmp/b" >/dev/null || bad "export over an earlier suite left it different"
+leftover=$(ls -A "$tmp" | grep '^\.' || true)
+[[ -z $leftover ]] || bad "left beside the suite: $leftover"
+
+[[ $fail -eq 0 ]] && echo "export: reproducible, $quick quick tests equal to the full suite's"
+exit $fail
