@@ -153,8 +153,9 @@ class Progress:
               f"about {left:.0f} s left", file=sys.stderr, flush=True)
 
 
-def gather(group, tests, a, started=None):
-    """Reads OUT/results; writes junit.xml, summary.json, summary.html. Returns the exit code."""
+def gather(group, tests, a, started=None, why=None):
+    """Reads OUT/results; writes junit.xml, summary.json, summary.html. Returns the exit code.
+    why: what is known of a test that left no result, by name (parallel: its joblog line)."""
     out = a.out
     results = []
     for t in tests:
@@ -165,7 +166,8 @@ def gather(group, tests, a, started=None):
         else:
             results.append({"name": t["name"], "passed": False, "exit": "no result",
                             "seconds": 0.0, "command": shlex.join(command(t, a)),
-                            "log": "", "report": "no result: the test never ran or its job died",
+                            "log": "", "report": "no result: " + (why or {}).get(
+                                t["name"], "the test never ran or its job died"),
                             "host": ""})
     waves = {}
     wp = os.path.join(out, "waves.json")
@@ -356,19 +358,46 @@ def cmd_parallel(group, tests, a):
         usage_error("GNU parallel is missing: run scripts/setup.sh (Debian package 'parallel')")
     ensure_trees(tests, a)
     started = time.monotonic()
+    if not a.resume_failed:  # else a job that dies (a host down) would show an earlier result
+        shutil.rmtree(os.path.join(a.out, "results"), ignore_errors=True)
     os.makedirs(a.out, exist_ok=True)
     joblog = os.path.join(a.out, "joblog")
     cmd = ["parallel", "--will-cite", "--joblog", joblog, "--halt", "never", "--line-buffer", "-j",
            str(a.jobs)]
-    if a.sshloginfile:
-        cmd += ["--sshloginfile", a.sshloginfile]
+    if a.sshloginfile:  # parallel runs from the repository: a relative FILE is the caller's
+        special = a.sshloginfile in (".", "..", "-")  # GNU parallel's own lists and stdin
+        cmd += ["--sshloginfile", a.sshloginfile if special else os.path.abspath(a.sshloginfile)]
     if a.resume_failed:
         cmd += ["--resume-failed"]
     cmd += [shlex.join(one_command(group, a, "{}")), ":::", *map(str, range(len(tests)))]
     print(f"regress: {group}: {len(tests)} tests through GNU parallel; joblog {joblog}",
           file=sys.stderr, flush=True)
     subprocess.run(cmd, cwd=ROOT)
-    return gather(group, tests, a, started)
+    why = {tests[i]["name"]: w for i, w in job_endings(joblog).items() if 0 <= i < len(tests)}
+    return gather(group, tests, a, started, why)
+
+
+def job_endings(joblog):
+    """GNU parallel's joblog: how each job last ended, by test index (its sequence number less
+    one: the jobs' arguments are the indices in order), e.g. 'its job on root@node7 exited 255'."""
+    ends = {}
+    try:
+        with open(joblog) as f:
+            rows = [ln.split("\t") for ln in f.read().splitlines()[1:]]
+    except OSError:
+        return ends
+    for cols in rows:
+        if len(cols) < 9 or not cols[0].isdigit():
+            continue
+        sshlogin, code, sig = cols[1], cols[6], cols[7]
+        # An sshlogin may be a whole ssh command; its last word is the host.
+        host = "this machine" if sshlogin == ":" else sshlogin.split()[-1]
+        w = f"its job on {host} " + (f"was killed by signal {sig}" if sig != "0" else
+                                     f"exited {code}")
+        if code == "255" and sshlogin != ":":
+            w += " (ssh's own failure: host down or login refused?)"
+        ends[int(cols[0]) - 1] = w
+    return ends
 
 
 def cmd_slurm(group, tests, a):

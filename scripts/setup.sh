@@ -3,9 +3,13 @@
 # Usage: setup.sh [synth|profile|view]   (synth: also nextpnr-ice40 and IceStorm, for `make
 # synth`; profile: also perf, for `make profile-rtl`; view: Chromium and ImageMagick, to look at
 # HTML reports and waves headless and take screenshots). Always in: Yosys, its yosys-smtbmc and
-# z3 (`make test` runs the CI-sized `make formal`); GNU parallel, Slurm and munge (the regression
-# runner's tests, docs/regressions.md); GTKWave and Xvfb (the waves' test); Icarus Verilog (the
-# RTL's second simulator, docs/rtl.md "Simulators").
+# z3 (`make test` runs the CI-sized `make formal`); GNU parallel, Slurm and munge, and OpenSSH's
+# server and iproute2 (the regression runner's tests, docs/regressions.md: the ssh test starts its
+# own sshds in network namespaces, scripts/ssh_hosts.sh); GTKWave and Xvfb (the waves' test);
+# Icarus Verilog (the RTL's second simulator, docs/rtl.md "Simulators"; the conformance kit);
+# OpenSSL's libcrypto (the conformance signatures' SHA-256).
+# A system sshd that the openssh-server package starts on install is stopped and disabled again:
+# nothing here needs it, and this machine should not gain an open ssh port from a setup script.
 set -euo pipefail
 
 packages=(
@@ -18,7 +22,7 @@ packages=(
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
   python3-matplotlib
   yosys z3
-  parallel slurm-wlm munge
+  parallel slurm-wlm munge openssh-server openssh-client iproute2
   gtkwave xvfb xauth
 )
 if [[ ${1:-} == synth ]]; then
@@ -48,7 +52,21 @@ else
   echo "setup: error: missing packages (${missing[*]}) and not root; run 'apt-get install ${missing[*]}' as root" >&2
   exit 2
 fi
+# The package's postinst starts and enables ssh.service where it can (under systemd, or sysv init
+# without a policy-rc.d that refuses). Undo that: we installed it only for its sshd binary.
+no_system_sshd() {
+  if [[ -d /run/systemd/system ]]; then
+    "${sudo[@]}" systemctl disable --now ssh.service ssh.socket >/dev/null 2>&1 || true
+  elif [[ -x /etc/init.d/ssh ]]; then
+    "${sudo[@]}" /etc/init.d/ssh stop >/dev/null 2>&1 || true
+    "${sudo[@]}" update-rc.d ssh disable >/dev/null 2>&1 || true
+  fi
+  if [[ -s /run/sshd.pid ]] && kill -0 "$(cat /run/sshd.pid)" 2>/dev/null; then
+    echo "setup: warning: a system sshd still runs (/run/sshd.pid); nothing here uses it" >&2
+  fi
+}
 export DEBIAN_FRONTEND=noninteractive
 "${sudo[@]}" apt-get update -qq
 "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+[[ " ${missing[*]} " == *" openssh-server "* ]] && no_system_sshd
 echo "setup: done"
