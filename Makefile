@@ -6,7 +6,7 @@ ZBLEND     := $(BUILD)/zblend
 RUN_SIZE   ?= --width 640 --height 480
 
 .DEFAULT_GOAL := build
-.PHONY: help setup build run test test-asan regress mutate bench bench-verilator profile-rtl synth formal systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
+.PHONY: help setup build run test test-asan regress conformance mutate bench bench-verilator profile-rtl synth formal systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
 
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | awk -F'\t' '{printf "%-16s %s\n", $$1, $$2}'
@@ -46,6 +46,7 @@ regress: build ## Run GROUP (default nightly) of tb/regressions.json: out/regres
 	python3 scripts/regress.py run $(GROUP) -j $(JOBS) --build $(BUILD) --out out/regress/$(GROUP) $(REGRESS_ARGS)
 
 bench: build ## Benchmarks: datapath, golden vs llvmpipe, memory, RTL, cost growth: out/bench/
+	@cmake --build $(BUILD) -j $(JOBS) --target zblend_bench zblend_bench_rtl zblend_window_sweep
 	@/usr/bin/python3 scripts/bench.py --build $(BUILD) --out out/bench
 
 profile-rtl: ## Where the RTL simulation's time goes, per module (perf, --prof-cfuncs): out/profile/modules.csv
@@ -79,6 +80,20 @@ MUTATE_ARGS ?=
 
 mutate: build ## Mutation score: zb_rop's 1200 Yosys mutants, smoke group, equivalence proofs, full group: out/mutate/
 	python3 scripts/mutate.py --build $(BUILD) --out out/mutate -j $(JOBS) $(MUTATE_ARGS)
+
+# The conformance kit (docs/conformance.md): the whole suite exported, run on zb_rop under
+# Verilator and Icarus Verilog, then under Verilator with the golden model in lock-step through
+# DPI-C. make test runs a CI-sized part of it (ctest -L conformance).
+CONF_DIR ?= out/conformance
+CONF_LIBS = $(BUILD)/conformance/libzbgolden_dpi.a $(BUILD)/conformance/libzbgolden_c.a \
+            $(BUILD)/cmodel/libzbmodel.a
+
+conformance: build ## The conformance suite on zb_rop under Verilator, Icarus and DPI-C lock-step: out/conformance/
+	$(ZBLEND) conformance export $(CONF_DIR)/suite
+	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim verilator --out $(CONF_DIR)/verilator -j $(JOBS)
+	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim icarus --out $(CONF_DIR)/icarus -j $(JOBS)
+	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim verilator --out $(CONF_DIR)/lockstep \
+	  -j $(JOBS) --gap 20 --lockstep --golden-libs $(CONF_LIBS)
 
 # Only zblend is built, its log shown only if the build fails; render makes out/waves/.
 waves: setup $(BUILD)/CMakeCache.txt ## Render `cad` on the RTL with a waveform and its GTKWave save file: out/waves/cad.fst, .gtkw

@@ -1,0 +1,424 @@
+// zb_conf_tb: the conformance testbench (docs/conformance.md). It needs no C++: it reads one
+// test's command stream ($readmemh, conformance_spec in docs/conformance.md "The vectors"), keeps
+// the frame's planes, and for every pass and every tile the pass touches loads the tile into
+// the DUT, streams that tile's fragments, waits for the DUT to drain and stores the tile back;
+// frame operations are the host's, done here on the frame. At the end it writes the planes as
+// signatures (got.<plane>.hex) for `zblend conformance check`.
+//
+// Plusargs: +stream=FILE (required) +out=DIR (existing; default .) +gap=P (percent of cycles
+// with no fragment offered, default 0) +seed=N (the gaps' pattern).
+// With ZB_CONF_LOCKSTEP defined, the golden model runs beside it through DPI-C
+// (zb_conf_scoreboard.sv) and every write the DUT makes is compared at its cycle.
+module zb_conf_tb #(
+  parameter int DEPTH_BITS  = 24,
+  parameter int COV_SAMPLES = 16,
+  parameter int TILE_W      = 64,
+  parameter int TILE_H      = 64,
+  parameter int BEAT        = 8,
+  parameter int MAX_WORDS   = 1 << 18,  // the longest command stream
+  parameter int MAX_PIXELS  = 1 << 16   // the largest frame
+);
+
+  localparam int Words = TILE_W * TILE_H;
+
+  localparam logic [7:0] OpFrame   = 8'h01;
+  localparam logic [7:0] OpPass    = 8'h02;
+  localparam logic [7:0] OpFrag    = 8'h03;
+  localparam logic [7:0] OpEndPass = 8'h04;
+  localparam logic [7:0] OpFrameOp = 8'h05;
+  localparam logic [7:0] OpEnd     = 8'h06;
+
+  // A 10 ns clock, as the waves of the C++ testbench.
+  logic clk = 1'b0;
+  logic rst_n = 1'b0;
+  /* verilator lint_off BLKSEQ */  // a clock generator, not a flop
+  always #5 clk = ~clk;
+  /* verilator lint_on BLKSEQ */
+
+  // ---------------------------------------------------------------------------------------
+  // The DUT behind its adapter, and the signals the host drives.
+  // ---------------------------------------------------------------------------------------
+  logic        state_we = 1'b0;
+  logic [12:0] state = '0;
+  logic [15:0] tile_x0 = '0, tile_y0 = '0;
+  logic        ld_valid = 1'b0, ld_ready;
+  logic [31:0] ld_color = '0, ld_depth = '0, ld_peel = '0;
+  logic [7:0]  ld_cov = '0;
+  logic        frag_valid = 1'b0, frag_ready;
+  logic [15:0] frag_x = '0, frag_y = '0;
+  logic [31:0] frag_z = '0, frag_rgba = '0;
+  logic [7:0]  frag_cov = '0;
+  logic        idle, st_start = 1'b0, st_valid;
+  logic [31:0] st_color, st_depth, st_peel;
+  logic [7:0]  st_cov;
+  logic        ret_d_valid, ret_dwe, ret_vwe, ret_c_valid, ret_cwe;
+  logic [31:0] ret_d_pixel, ret_wdepth, ret_c_pixel, ret_wcolor;
+  logic [7:0]  ret_wcov;
+
+  zb_conf_adapter #(
+    .DEPTH_BITS (DEPTH_BITS),
+    .COV_SAMPLES(COV_SAMPLES),
+    .TILE_W     (TILE_W),
+    .TILE_H     (TILE_H),
+    .BEAT       (BEAT)
+  ) u_dut (
+    .clk_i        (clk),
+    .rst_ni       (rst_n),
+    .state_we_i   (state_we),
+    .state_i      (state),
+    .tile_x0_i    (tile_x0),
+    .tile_y0_i    (tile_y0),
+    .ld_valid_i   (ld_valid),
+    .ld_ready_o   (ld_ready),
+    .ld_color_i   (ld_color),
+    .ld_depth_i   (ld_depth),
+    .ld_cov_i     (ld_cov),
+    .ld_peel_i    (ld_peel),
+    .frag_valid_i (frag_valid),
+    .frag_ready_o (frag_ready),
+    .frag_x_i     (frag_x),
+    .frag_y_i     (frag_y),
+    .frag_z_i     (frag_z),
+    .frag_rgba_i  (frag_rgba),
+    .frag_cov_i   (frag_cov),
+    .idle_o       (idle),
+    .st_start_i   (st_start),
+    .st_valid_o   (st_valid),
+    .st_color_o   (st_color),
+    .st_depth_o   (st_depth),
+    .st_cov_o     (st_cov),
+    .st_peel_o    (st_peel),
+    .ret_d_valid_o(ret_d_valid),
+    .ret_d_pixel_o(ret_d_pixel),
+    .ret_dwe_o    (ret_dwe),
+    .ret_wdepth_o (ret_wdepth),
+    .ret_vwe_o    (ret_vwe),
+    .ret_wcov_o   (ret_wcov),
+    .ret_c_valid_o(ret_c_valid),
+    .ret_c_pixel_o(ret_c_pixel),
+    .ret_cwe_o    (ret_cwe),
+    .ret_wcolor_o (ret_wcolor)
+  );
+
+  // The handshakes of the edge just past, read by the host at the falling edge after it: the
+  // host drives at falling edges, so a flop's output never changes under its read.
+  logic frag_took = 1'b0, ld_took = 1'b0;
+  always @(posedge clk) begin
+    frag_took <= frag_valid && frag_ready;
+    ld_took   <= ld_valid && ld_ready;
+  end
+
+`ifdef ZB_CONF_LOCKSTEP
+  zb_conf_scoreboard #(.TILE_W(TILE_W), .TILE_H(TILE_H)) u_sb (
+    .clk_i        (clk),
+    .ret_d_valid_i(ret_d_valid),
+    .ret_d_pixel_i(ret_d_pixel),
+    .ret_dwe_i    (ret_dwe),
+    .ret_wdepth_i (ret_wdepth),
+    .ret_vwe_i    (ret_vwe),
+    .ret_wcov_i   (ret_wcov),
+    .ret_c_valid_i(ret_c_valid),
+    .ret_c_pixel_i(ret_c_pixel),
+    .ret_cwe_i    (ret_cwe),
+    .ret_wcolor_i (ret_wcolor)
+  );
+`endif
+
+  // ---------------------------------------------------------------------------------------
+  // The test: its stream and the frame.
+  // ---------------------------------------------------------------------------------------
+  logic [127:0] words [MAX_WORDS + 1];
+  logic [31:0]  fb_color [MAX_PIXELS];
+  logic [31:0]  fb_depth [MAX_PIXELS];
+  logic [7:0]   fb_cov   [MAX_PIXELS];
+  logic [31:0]  fb_peel  [MAX_PIXELS];
+  int unsigned  width, height, count;
+  string        stream_path, out_dir;
+  int           gap_pct, seed;
+  int unsigned  n_passes, n_frags, n_tiles;
+
+  function automatic logic [7:0] opcode(input logic [127:0] w);
+    return w[127:120];
+  endfunction
+
+  function automatic logic [31:0] depth_max();
+    return DEPTH_BITS >= 32 ? 32'hffff_ffff : (32'h1 << DEPTH_BITS) - 32'h1;
+  endfunction
+
+  // docs/datapath.md "Numerics": m(x, y) = (t + (t >> 8) + 0x80) >> 8, t = x * y.
+  function automatic logic [7:0] mul_unorm8(input logic [7:0] x, input logic [7:0] y);
+    logic [16:0] t;
+    t = 17'(x) * 17'(y);
+    return 8'((t + (t >> 8) + 17'h80) >> 8);
+  endfunction
+
+  // Frame operation "resolve under" on one channel: min(255, c + m(bg, 255 - A)).
+  function automatic logic [7:0] resolve_under(input logic [7:0] c, input logic [7:0] bg,
+                                               input logic [7:0] a);
+    logic [8:0] v;
+    v = 9'(c) + 9'(mul_unorm8(bg, 8'd255 - a));
+    return v > 9'd255 ? 8'd255 : v[7:0];
+  endfunction
+
+  function automatic void fail(input string what);
+    $display("zb_conf: FAILED: %s: %s", stream_path, what);
+    $fatal(1, "zb_conf: %s", what);
+  endfunction
+
+  // The host's rule of docs/datapath.md "Frame operations", on the whole frame.
+  task automatic frame_op(input logic [127:0] w);
+    logic [3:0]  kind;
+    logic [31:0] value, depth, c;
+    kind  = w[3:0];
+    value = w[63:32];
+    depth = w[95:64];
+    for (int unsigned p = 0; p < width * height; p++) begin
+      unique case (kind)
+        4'd0: fb_color[p] = value;
+        4'd1: fb_depth[p] = depth > depth_max() ? depth_max() : depth;
+        4'd2: fb_peel[p]  = fb_depth[p];
+        4'd3: begin
+          c = fb_color[p];
+          fb_color[p] = {resolve_under(c[31:24], value[31:24], c[31:24]),
+                         resolve_under(c[23:16], value[23:16], c[31:24]),
+                         resolve_under(c[15:8],  value[15:8],  c[31:24]),
+                         resolve_under(c[7:0],   value[7:0],   c[31:24])};
+        end
+        default: fail($sformatf("frame operation of unknown kind %0d", kind));
+      endcase
+    end
+`ifdef ZB_CONF_LOCKSTEP
+    u_sb.frame_op(kind, value, depth);
+`endif
+  endtask
+
+  // The gaps' pattern: xorshift32, the same on every simulator.
+  logic [31:0] rng;
+  function automatic int chance_pct();
+    rng = rng ^ (rng << 13);
+    rng = rng ^ (rng >> 17);
+    rng = rng ^ (rng << 5);
+    return int'(rng % 32'd100);
+  endfunction
+
+  function automatic bit in_tile(input logic [127:0] w, input int unsigned x0,
+                                 input int unsigned y0);
+    int unsigned x, y;
+    x = 32'(w[15:0]);
+    y = 32'(w[31:16]);
+    return x >= x0 && x < x0 + TILE_W && y >= y0 && y < y0 + TILE_H;
+  endfunction
+
+  // Loads the frame's pixels of the tile at (x0, y0); pixels off the frame load as zero.
+  task automatic load_tile(input int unsigned x0, input int unsigned y0);
+    int unsigned x, y, p;
+    for (int unsigned k = 0; k < Words; k++) begin
+      x = x0 + k % TILE_W;
+      y = y0 + k / TILE_W;
+      p = y * width + x;
+      ld_valid = 1'b1;
+      if (x < width && y < height) begin
+        ld_color = fb_color[p];
+        ld_depth = fb_depth[p];
+        ld_cov   = fb_cov[p];
+        ld_peel  = fb_peel[p];
+      end else begin
+        ld_color = '0;
+        ld_depth = '0;
+        ld_cov   = '0;
+        ld_peel  = '0;
+      end
+      @(negedge clk);
+      while (!ld_took) @(negedge clk);
+    end
+    ld_valid = 1'b0;
+  endtask
+
+  // Offers the pass's fragments in [first, last) that fall in the tile, in stream order.
+  task automatic stream_tile(input int unsigned first, input int unsigned last,
+                             input int unsigned x0, input int unsigned y0);
+    logic [127:0] w;
+    for (int unsigned k = first; k < last; k++) begin
+      w = words[k];
+      if (in_tile(w, x0, y0)) begin
+        while (gap_pct > 0 && chance_pct() < gap_pct) begin
+        frag_valid = 1'b0;
+        @(negedge clk);
+        end
+        frag_valid = 1'b1;
+        frag_x     = w[15:0];
+        frag_y     = w[31:16];
+        frag_z     = w[63:32];
+        frag_rgba  = w[95:64];
+        frag_cov   = w[103:96];
+`ifdef ZB_CONF_LOCKSTEP
+        u_sb.accept(k - first, frag_x, frag_y, frag_z, frag_rgba, frag_cov);
+`endif
+        @(negedge clk);
+        while (!frag_took) @(negedge clk);
+        n_frags++;
+      end
+    end
+    frag_valid = 1'b0;
+  endtask
+
+  // Reads the tile back into the frame (its pixels on the frame).
+  task automatic store_tile(input int unsigned x0, input int unsigned y0);
+    int unsigned k, x, y;
+    st_start = 1'b1;
+    @(negedge clk);
+    st_start = 1'b0;
+    k = 0;
+    while (k < Words) begin
+      @(negedge clk);
+      if (st_valid) begin
+        x = x0 + k % TILE_W;
+        y = y0 + k / TILE_W;
+        if (x < width && y < height) begin
+          fb_color[y * width + x] = st_color;
+          fb_depth[y * width + x] = st_depth;
+          fb_cov[y * width + x]   = st_cov;
+          fb_peel[y * width + x]  = st_peel;
+        end
+        k++;
+      end
+    end
+    while (!idle) @(negedge clk);
+  endtask
+
+  task automatic wait_idle;
+    int unsigned waited;
+    waited = 0;
+    @(negedge clk);
+    while (!idle) begin
+      @(negedge clk);
+      waited++;
+      if (waited > 1000000) fail("the DUT stayed busy for 10^6 cycles after its last fragment");
+    end
+  endtask
+
+  // One pass: the fragments are words[first .. last - 1]; every tile with one of them is
+  // loaded, streamed and stored.
+  task automatic run_pass(input logic [12:0] pass_state, input int unsigned first,
+                          input int unsigned last);
+    bit touched;
+`ifdef ZB_CONF_LOCKSTEP
+    u_sb.begin_pass(pass_state);
+`endif
+    for (int unsigned y0 = 0; y0 < height; y0 += TILE_H) begin
+      for (int unsigned x0 = 0; x0 < width; x0 += TILE_W) begin
+        touched = 1'b0;
+        for (int unsigned k = first; k < last && !touched; k++) touched = in_tile(words[k], x0, y0);
+        if (touched) begin
+          n_tiles++;
+          tile_x0  = 16'(x0);
+          tile_y0  = 16'(y0);
+          state    = pass_state;
+          state_we = 1'b1;
+          @(negedge clk);
+          state_we = 1'b0;
+`ifdef ZB_CONF_LOCKSTEP
+          u_sb.begin_tile(x0, y0);
+`endif
+          load_tile(x0, y0);
+          stream_tile(first, last, x0, y0);
+          wait_idle();
+`ifdef ZB_CONF_LOCKSTEP
+          u_sb.end_tile();
+`endif
+          store_tile(x0, y0);
+        end
+      end
+    end
+`ifdef ZB_CONF_LOCKSTEP
+    u_sb.end_pass();
+`endif
+  endtask
+
+  task automatic write_plane(input string name);
+    int fd;
+    fd = $fopen({out_dir, "/got.", name, ".hex"}, "w");
+    if (fd == 0) fail($sformatf("cannot write %s/got.%s.hex (does the folder exist?)", out_dir, name));
+    for (int unsigned p = 0; p < width * height; p++) begin
+      if (name == "color")         $fdisplay(fd, "%08x", fb_color[p]);
+      else if (name == "depth")    $fdisplay(fd, "%08x", fb_depth[p]);
+      else if (name == "coverage") $fdisplay(fd, "%02x", fb_cov[p]);
+      else                         $fdisplay(fd, "%08x", fb_peel[p]);
+    end
+    $fclose(fd);
+  endtask
+
+  initial begin : run
+    logic [127:0] w;
+    int unsigned  pc, first;
+    if (!$value$plusargs("stream=%s", stream_path))
+      $fatal(1, "zb_conf: no +stream=FILE: name a test's stream.hex (docs/conformance.md)");
+    if (!$value$plusargs("out=%s", out_dir)) out_dir = ".";
+    if (!$value$plusargs("gap=%d", gap_pct)) gap_pct = 0;
+    if (!$value$plusargs("seed=%d", seed)) seed = 1;
+    rng = 32'(seed) ^ 32'h9e37_79b9;
+    if (rng == 0) rng = 32'h1;
+    for (int unsigned k = 0; k <= MAX_WORDS; k++) words[k] = '0;
+    // The count line first, then exactly the words it announces: no simulator warns of a short
+    // file, and a stream longer than MAX_WORDS is refused before it is read.
+    $readmemh(stream_path, words, 0, 0);
+    count = words[0][31:0];
+    if (count < 2 || count > MAX_WORDS)
+      fail($sformatf("%0d command words (is the file a stream.hex?): a stream holds 2 to %0d (MAX_WORDS)",
+                     count, MAX_WORDS));
+    $readmemh(stream_path, words, 0, count);
+    w = words[1];
+    if (opcode(w) != OpFrame) fail("the first command is not FRAME");
+    width  = 32'(w[15:0]);
+    height = 32'(w[31:16]);
+    if (w[39:32] != 8'(DEPTH_BITS) || w[47:40] != 8'(COV_SAMPLES))
+      fail($sformatf("the test needs DEPTH_BITS=%0d COV_SAMPLES=%0d; this DUT has %0d and %0d",
+                     w[39:32], w[47:40], DEPTH_BITS, COV_SAMPLES));
+    if (width * height > MAX_PIXELS || width == 0 || height == 0)
+      fail($sformatf("frame %0dx%0d: 1 to %0d pixels (MAX_PIXELS)", width, height, MAX_PIXELS));
+    for (int unsigned p = 0; p < width * height; p++) begin
+      fb_color[p] = w[95:64];
+      fb_depth[p] = depth_max();
+      fb_cov[p]   = '0;
+      fb_peel[p]  = '0;
+    end
+`ifdef ZB_CONF_LOCKSTEP
+    u_sb.begin_frame(width, height, DEPTH_BITS, COV_SAMPLES, w[95:64]);
+`endif
+    n_passes = 0;
+    n_frags  = 0;
+    n_tiles  = 0;
+    repeat (2) @(negedge clk);
+    rst_n = 1'b1;
+    @(negedge clk);
+
+    pc = 2;
+    while (opcode(words[pc]) != OpEnd) begin
+      if (pc > count) fail("no END command");
+      w = words[pc];
+      if (opcode(w) == OpFrameOp) begin
+        frame_op(w);
+        pc++;
+      end else if (opcode(w) == OpPass) begin
+        first = pc + 1;
+        pc = first;
+        while (pc <= count && opcode(words[pc]) == OpFrag) pc++;
+        if (opcode(words[pc]) != OpEndPass) fail($sformatf("word %0d: a pass not ended by END_PASS", pc));
+        run_pass(w[12:0], first, pc);
+        n_passes++;
+        pc++;
+      end else begin
+        fail($sformatf("word %0d: opcode %02x where a pass, a frame operation or END belongs",
+                       pc, opcode(w)));
+      end
+    end
+    write_plane("color");
+    write_plane("depth");
+    write_plane("coverage");
+    write_plane("peel");
+    $display("zb_conf: done: %s: %0dx%0d, %0d passes, %0d fragments, %0d tile loads, %0d cycles",
+             stream_path, width, height, n_passes, n_frags, n_tiles, $time / 10);
+    $finish;
+  end
+
+endmodule

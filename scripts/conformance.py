@@ -1,0 +1,203 @@
+#!/usr/bin/env python3
+"""Runs a conformance suite on a DUT under a simulator (make conformance, docs/conformance.md).
+
+  conformance.py --suite DIR --sim verilator|icarus --out DIR [--tests a,b] [-j N]
+                 [--dut FILE ...] [--define NAME ...] [--plusarg ARG ...] [--param N=V ...] [--gap P]
+                 [--lockstep --golden-libs LIB ...]
+
+For each of the suite's configurations (depth bits, coverage samples) the testbench
+conformance/sv/zb_conf_tb.sv is built once with the DUT (by default zb_rop and its adapter,
+conformance/sv/zb_conf_adapter.sv); each test runs it on its stream.hex and writes
+OUT/<test>/got.<plane>.hex and sim.log; then `zblend conformance check` compares the signatures
+and names the first differing pixel. Exit 0 when every test matches, 1 on a mismatch or a
+simulation that failed, 2 on bad usage.
+"""
+import argparse
+import concurrent.futures
+import json
+import os
+import shlex
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SV = os.path.join(ROOT, "conformance", "sv")
+
+
+def usage_error(msg):
+    print(f"conformance.py: error: {msg}", file=sys.stderr)
+    sys.exit(2)
+
+
+def rtl_sources():
+    """zb_rop's sources, the package first, and its adapter."""
+    rtl = os.path.join(ROOT, "rtl")
+    files = sorted(os.path.join(rtl, f) for f in os.listdir(rtl) if f.endswith(".sv"))
+    pkg = os.path.join(rtl, "zb_pkg.sv")
+    return [pkg] + [f for f in files if f != pkg] + [os.path.join(SV, "zb_conf_adapter.sv")]
+
+
+def load_suite(suite, only):
+    path = os.path.join(suite, "manifest.json")
+    try:
+        with open(path) as f:
+            m = json.load(f)
+    except (OSError, ValueError) as e:
+        usage_error(f"{path}: {e} (write a suite with `zblend conformance export DIR`)")
+    if m.get("suite") != "zblend-conformance" or m.get("version") != 1:
+        usage_error(f"{path}: not a version 1 zblend conformance suite")
+    configs = {c["name"]: c for c in m["configs"]}
+    tests = m["tests"]
+    if only:
+        names = {t["name"] for t in tests}
+        unknown = [n for n in only if n not in names]
+        if unknown:
+            usage_error(f"--tests: no test {', '.join(unknown)} in {path}")
+        tests = [t for t in tests if t["name"] in only]
+    return configs, tests
+
+
+def build(sim, config, a, bdir):
+    """Builds the testbench for one configuration; returns the command that runs it."""
+    params = {"DEPTH_BITS": config["depth_bits"], "COV_SAMPLES": config["coverage_samples"]}
+    params.update(a.params)
+    sources = a.dut or rtl_sources()
+    tb = [os.path.join(SV, "zb_conf_tb.sv")]
+    defines = list(a.define)
+    if a.lockstep:
+        defines.append("ZB_CONF_LOCKSTEP")
+        tb = [os.path.join(SV, "zb_golden_pkg.sv"),
+              os.path.join(SV, "zb_conf_scoreboard.sv")] + tb
+    os.makedirs(bdir, exist_ok=True)
+    if sim == "verilator":
+        # zblend's sources lint clean (-Wall, their waivers); a team's DUT warns without failing.
+        cmd = ["verilator", "--binary", "--timing", "--assert", "-Wall", "--top-module",
+               "zb_conf_tb", "-Mdir", bdir, "-o", "zb_conf_tb", "-j", str(a.jobs)]
+        cmd += ["-Wno-fatal"] if a.dut else [os.path.join(ROOT, "rtl", "lint_waivers.vlt")]
+        cmd += [os.path.join(SV, "zb_conf.vlt")]
+        cmd += [os.path.join(SV, "zb_golden_pkg.vlt")] if a.lockstep else []
+        cmd += [f"-G{k}={v}" for k, v in params.items()]
+        cmd += [f"+define+{d}" for d in defines]
+        cmd += sources + tb + list(a.golden_libs)
+        if a.golden_libs:
+            cmd += ["-LDFLAGS", "-lfmt -lpthread"]
+        run_cmd = [os.path.join(bdir, "zb_conf_tb")]
+    else:
+        if a.lockstep:
+            usage_error("--lockstep needs DPI-C: run it under --sim verilator")
+        vvp = os.path.join(bdir, "zb_conf_tb.vvp")
+        cmd = ["iverilog", "-g2012", "-o", vvp, "-s", "zb_conf_tb"]
+        cmd += [f"-Pzb_conf_tb.{k}={v}" for k, v in params.items()]
+        cmd += [f"-D{d}" for d in defines]
+        cmd += sources + tb
+        run_cmd = ["vvp", "-n", vvp]
+    t0 = time.time()
+    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    with open(os.path.join(bdir, "build.log"), "w") as f:
+        f.write(shlex.join(cmd) + "\n" + p.stdout)
+    if p.returncode != 0:
+        print(p.stdout[-4000:], file=sys.stderr)
+        print(f"conformance: FAILED to build the {sim} testbench for {config['name']}: "
+              f"{shlex.join(cmd)}", file=sys.stderr)
+        sys.exit(1)
+    print(f"conformance: {sim} testbench for {config['name']} built in {time.time() - t0:.0f} s",
+          file=sys.stderr, flush=True)
+    return run_cmd
+
+
+def run_test(test, run_cmd, a):
+    d = os.path.join(a.out, test["name"])
+    os.makedirs(d, exist_ok=True)
+    for plane in ("color", "depth", "coverage", "peel"):
+        try:
+            os.remove(os.path.join(d, f"got.{plane}.hex"))
+        except FileNotFoundError:
+            pass
+    cmd = run_cmd + [f"+stream={os.path.join(a.suite, test['name'], 'stream.hex')}",
+                     f"+out={d}", f"+gap={a.gap}", f"+seed={a.seed}"] + list(a.plusarg)
+    t0 = time.time()
+    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    with open(os.path.join(d, "sim.log"), "w") as f:
+        f.write(shlex.join(cmd) + "\n" + p.stdout)
+    # Icarus's $fatal exits 0 on some versions: a run counts only with its done line.
+    ok = p.returncode == 0 and "zb_conf: done:" in p.stdout
+    first = next((ln for ln in p.stdout.splitlines()
+                  if ln.startswith(("zb_conf: FAILED", "zb_conf: MISMATCH", "%Error"))), "")
+    return test["name"], ok, time.time() - t0, first
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter,
+                                 epilog=__doc__.split("\n\n", 1)[1])
+    ap.add_argument("--suite", required=True, help="a suite written by `zblend conformance export`")
+    ap.add_argument("--sim", required=True, choices=["verilator", "icarus"])
+    ap.add_argument("--out", required=True, help="got signatures, logs and the builds")
+    ap.add_argument("--tests", default="", help="comma-separated test names (default: all)")
+    ap.add_argument("-j", "--jobs", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--dut", nargs="+", default=[],
+                    help="the DUT's sources and its adapter (default: rtl/*.sv, zb_conf_adapter.sv)")
+    ap.add_argument("--define", action="append", default=[],
+                    help="a preprocessor define, e.g. ZB_INJECT_BLEND_BUG")
+    ap.add_argument("--plusarg", action="append", default=[], help="given to every run, e.g. +zb_bug_window")
+    ap.add_argument("--param", action="append", default=[], metavar="NAME=VALUE",
+                    help="a parameter of zb_conf_tb, e.g. TILE_W=32 (the DUT's tile, given to the adapter)")
+    ap.add_argument("--gap", type=int, default=0, help="percent of cycles with no fragment offered")
+    ap.add_argument("--seed", type=int, default=1, help="the gaps' pattern")
+    ap.add_argument("--lockstep", action="store_true",
+                    help="the golden model as a DPI-C scoreboard beside the DUT (verilator)")
+    ap.add_argument("--golden-libs", nargs="+", default=[],
+                    help="with --lockstep: the C API's libraries to link")
+    ap.add_argument("--zblend", default=os.path.join(ROOT, "build", "zblend"),
+                    help="the zblend command that checks the signatures")
+    a = ap.parse_args()
+    if not 0 <= a.gap <= 95:
+        usage_error(f"--gap {a.gap}: choose 0 to 95 (percent)")
+    if a.jobs < 1:
+        usage_error(f"-j {a.jobs}: at least 1")
+    if a.lockstep and not a.golden_libs:
+        usage_error("--lockstep needs --golden-libs (the C API's static libraries)")
+    a.params = {}
+    for p in a.param:
+        name, eq, value = p.partition("=")
+        if not eq or not name.isidentifier() or not value.isdigit():
+            usage_error(f"--param {p!r}: give NAME=VALUE, e.g. TILE_W=32")
+        if name in ("DEPTH_BITS", "COV_SAMPLES"):
+            usage_error(f"--param {name}: set by each test's configuration in the suite")
+        a.params[name] = int(value)
+    a.suite = os.path.abspath(a.suite)
+    a.out = os.path.abspath(a.out)
+    only = [t for t in a.tests.split(",") if t]
+    configs, tests = load_suite(a.suite, only)
+
+    by_config = {}
+    for t in tests:
+        by_config.setdefault(t["config"], []).append(t)
+    runs = []
+    for name, group in by_config.items():
+        run_cmd = build(a.sim, configs[name], a, os.path.join(a.out, "build", f"{a.sim}-{name}"))
+        runs += [(t, run_cmd) for t in group]
+
+    failed = 0
+    t0 = time.time()
+    with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as pool:
+        futures = [pool.submit(run_test, t, c, a) for t, c in runs]
+        for i, f in enumerate(concurrent.futures.as_completed(futures), 1):
+            name, ok, secs, first = f.result()
+            failed += not ok
+            print(f"conformance: [{i}/{len(runs)}] {'ok' if ok else 'FAILED'} {name} {secs:.1f} s"
+                  + (f": {first}" if first else ""), file=sys.stderr, flush=True)
+    print(f"conformance: {len(runs)} simulations on {a.sim} in {time.time() - t0:.0f} s, "
+          f"{failed} failed to finish", file=sys.stderr)
+    check = [a.zblend, "conformance", "check", a.suite, a.out]
+    if only:
+        check += ["--tests", ",".join(only)]
+    rc = subprocess.run(check).returncode
+    if rc == 2:
+        sys.exit(2)
+    sys.exit(1 if rc != 0 or failed else 0)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# The SystemVerilog conformance testbench (conformance/sv) on zb_rop, through
+# scripts/conformance.py, on a suite exported by the conformance_export fixture.
+#   test_sv_tb.sh pass SIM SUITE OUT ZBLEND TESTS [ARGS...]   every listed test matches
+#   test_sv_tb.sh bug  SIM SUITE OUT ZBLEND TEST  [ARGS...]   with the blend defect in the RTL,
+#       the run fails and the checker names the first differing pixel of that test
+#   test_sv_tb.sh lockstep-bug SIM SUITE OUT ZBLEND TEST LIBS...   the DPI-C lock-step run stops
+#       at the first wrong write, naming the fragment, the pixel and both values
+# ARGS go to conformance.py (e.g. --param TILE_W=32, --lockstep --golden-libs ...).
+set -u
+mode=${1:?usage: test_sv_tb.sh pass|bug|lockstep-bug SIM SUITE OUT ZBLEND TESTS [ARGS...]}
+sim=$2 suite=$3 out=$4 zblend=$5 tests=$6
+shift 6
+root=$(cd "$(dirname "$0")/../.." && pwd)
+fail() { echo "FAIL: $*" >&2; [[ -f $out/log.txt ]] && tail -n 30 "$out/log.txt" >&2; exit 1; }
+rm -rf "$out"
+mkdir -p "$out"
+run() {
+  python3 "$root/scripts/conformance.py" --suite "$suite" --sim "$sim" --out "$out" --tests "$tests" \
+    --zblend "$zblend" -j 2 "$@" >"$out/log.txt" 2>&1
+}
+
+n=$(tr ',' '\n' <<<"$tests" | grep -c .)
+case $mode in
+  pass)
+    run "$@" || fail "conformance.py exited $? on zb_rop under $sim"
+    grep -q "^$n of $n tests pass$" "$out/log.txt" || fail "the checker did not pass all $n tests"
+    for t in ${tests//,/ }; do
+      grep -q "^zb_conf: done: " "$out/$t/sim.log" || fail "$t: the simulation did not finish"
+      if [[ " $* " == *" --lockstep "* ]]; then
+        c=$(sed -n 's/^zb_conf: lock-step: \([0-9]*\) retires compared.*/\1/p' "$out/$t/sim.log")
+        [[ -n $c && $c -gt 0 ]] || fail "$t: the lock-step scoreboard compared no write"
+      fi
+    done
+    echo "ok: $n tests of the suite match on zb_rop under $sim"
+    ;;
+  bug)
+    run --define ZB_INJECT_BLEND_BUG "$@"
+    rc=$?
+    [[ $rc == 1 ]] || fail "conformance.py exited $rc on the defective RTL, want 1"
+    line=$(grep "^FAIL  $tests: color pixel (" "$out/log.txt") ||
+      fail "the checker did not name the first differing colour pixel of $tests"
+    echo "ok: the defect caught under $sim: $line"
+    ;;
+  lockstep-bug)
+    run --define ZB_INJECT_BLEND_BUG --lockstep --golden-libs "$@"
+    rc=$?
+    [[ $rc == 1 ]] || fail "the lock-step run exited $rc on the defective RTL, want 1"
+    log=$out/$tests/sim.log
+    grep -q "^zb_conf: MISMATCH at cycle [0-9]*: pass [0-9]* fragment [0-9]*, pixel ([0-9]*, [0-9]*), X11:" "$log" ||
+      fail "no MISMATCH line naming the cycle, pass, fragment, pixel and stage in $log"
+    grep -q "^zb_conf:   rtl    colour write 1 (rgba 0x" "$log" || fail "the RTL's value is not reported"
+    grep -q "^zb_conf:   golden colour write 1 (rgba 0x" "$log" || fail "the golden value is not reported"
+    grep -q "^zb_conf: done:" "$log" && fail "the run went on past the first wrong write"
+    echo "ok: the lock-step run stopped at the first wrong write: $(grep -m1 MISMATCH "$log")"
+    ;;
+  *) echo "usage: test_sv_tb.sh pass|bug|lockstep-bug ..." >&2; exit 2 ;;
+esac
