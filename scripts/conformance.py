@@ -166,6 +166,11 @@ def main():
         if name in ("DEPTH_BITS", "COV_SAMPLES"):
             usage_error(f"--param {name}: set by each test's configuration in the suite")
         a.params[name] = int(value)
+    a.golden_libs = [os.path.abspath(f) for f in a.golden_libs]
+    for f in a.golden_libs:
+        if not os.path.isfile(f):
+            usage_error(f"--golden-libs: no file {f} (build it: cmake --build build "
+                        "--target zbgolden_dpi)")
     a.suite = os.path.abspath(a.suite)
     a.out = os.path.abspath(a.out)
     only = [t for t in a.tests.split(",") if t]
