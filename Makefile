@@ -194,7 +194,7 @@ fuzz-ci: fuzz-build ## The fuzzers FUZZ_CI_SECONDS each, from the seeds only (pa
 	@rm -rf out/fuzz-ci
 	@JOBS=$(JOBS) scripts/fuzz.sh $(FUZZ_BUILD) $(FUZZ_CI_SECONDS) out/fuzz-ci out/fuzz/crashes
 
-lint: setup ## Verilator lint of the RTL (-Wall), for every parameter set of rtl/lint_sets.txt
+lint: setup ## Verilator lint (-Wall) and Icarus elaboration of the RTL for every set of rtl/lint_sets.txt; the conformance testbench
 	@scripts/lint_rtl.sh --all
 
 clean: ## Remove build trees and outputs
