@@ -15,6 +15,7 @@ simulation that failed, 2 on bad usage.
 import argparse
 import concurrent.futures
 import json
+import math
 import os
 import shlex
 import subprocess
@@ -23,6 +24,67 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SV = os.path.join(ROOT, "conformance", "sv")
+
+
+# The waves' save file: the testbench's signals by role (zb_conf_tb.sv), hex for buses.
+WAVE_GROUPS = [
+    ("testbench: pass, fragment offered (index in the pass), tile, pass state",
+     ["n_passes", "frag_index", "tile_x0[15:0]", "tile_y0[15:0]", "state[12:0]"]),
+    ("fragments", ["clk", "frag_valid", "frag_ready", "frag_x[15:0]", "frag_y[15:0]",
+                   "frag_z[31:0]", "frag_rgba[31:0]", "frag_cov[7:0]", "idle"]),
+    ("tile load and store", ["ld_valid", "ld_ready", "ld_color[31:0]", "st_start", "st_valid",
+                             "st_color[31:0]", "st_depth[31:0]"]),
+    ("retire port (lock-step)", ["ret_d_valid", "ret_d_pixel[31:0]", "ret_dwe", "ret_wdepth[31:0]",
+                                 "ret_vwe", "ret_wcov[7:0]", "ret_c_valid", "ret_c_pixel[31:0]",
+                                 "ret_cwe", "ret_wcolor[31:0]"]),
+]
+
+
+def mismatch_cycle(log_path):
+    """The cycle of the first wrong write a lock-step run's log names, or None."""
+    try:
+        with open(log_path) as f:
+            for ln in f:
+                if ln.startswith("zb_conf: MISMATCH at cycle "):
+                    return int(ln.split()[4].rstrip(":"))
+    except OSError:
+        pass
+    return None
+
+
+def write_save_file(fst, sim):
+    """FST's GTKWave save file beside it: the signals by group, and when the run's sim.log names
+    a lock-step mismatch, marker A at the first wrong write's cycle (c * 10 ns)."""
+    top = "TOP.zb_conf_tb." if sim == "verilator" else "zb_conf_tb."
+    gtkw = os.path.splitext(fst)[0] + ".gtkw"
+    log = os.path.join(os.path.dirname(fst), "sim.log")
+    cycle = mismatch_cycle(log)
+    # At the start of the cycle whose retire port shows the wrong write (the run stops at its
+    # edge, the file's last time).
+    marker = "-1" if cycle is None else str(cycle * 10 * 1000)
+    # The view: the window before the wrong write, or the whole run (its done line's cycles).
+    span = 31
+    if cycle is None:
+        with open(log) as f:
+            done = [ln.split(", ")[-1].split()[0] for ln in f if ln.startswith("zb_conf: done:")]
+        span = int(done[0]) if done else 1000
+    # GTKWave draws 2^-zoom ps per 200 pixels; the wave pane is about 850 pixels wide.
+    zoom = -math.log2(max(1, span * 10000 * 200 / 850))
+    with open(gtkw, "w") as f:
+        f.write(f"[*] zblend conformance testbench; 10 ns clock\n[dumpfile] \"{fst}\"\n")
+        f.write(f"[savefile] \"{gtkw}\"\n[size] 1600 900\n[pos] -1 -1\n")
+        f.write(f"*{zoom:.6f} {marker}" + " -1" * 26 + "\n")
+        if marker != "-1":
+            f.write("[markername] Afirst wrong write\n")
+        f.write("[sst_width] 260\n[signals_width] 330\n")
+        for title, names in WAVE_GROUPS:
+            f.write(f"@800200\n-{title}\n")
+            for n in names:
+                # Buses in hex, the testbench's counts (ints) in decimal.
+                flag = "@22" if "[" in n else "@24" if n in ("n_passes", "frag_index") else "@28"
+                f.write(f"{flag}\n{top}{n}\n")
+            f.write(f"@1000200\n-{title}\n")
+    return gtkw
 
 
 def usage_error(msg):
@@ -72,8 +134,9 @@ def build(sim, config, a, bdir):
     os.makedirs(bdir, exist_ok=True)
     if sim == "verilator":
         # zblend's sources lint clean (-Wall, their waivers); a team's DUT warns without failing.
-        cmd = ["verilator", "--binary", "--timing", "--assert", "-Wall", "--top-module",
-               "zb_conf_tb", "-Mdir", bdir, "-o", "zb_conf_tb", "-j", str(a.jobs)]
+        cmd = ["verilator", "--binary", "--timing", "--assert", "-Wall", "--timescale", "1ns/1ps",
+               "--top-module", "zb_conf_tb", "-Mdir", bdir, "-o", "zb_conf_tb", "-j", str(a.jobs)]
+        cmd += ["--trace-fst", "--trace-structs"] if a.waves else []
         cmd += ["-Wno-fatal"] if a.dut else [os.path.join(ROOT, "rtl", "lint_waivers.vlt")]
         cmd += [os.path.join(SV, "zb_conf.vlt")]
         cmd += [os.path.join(SV, "zb_golden_pkg.vlt")] if a.lockstep else []
@@ -90,8 +153,8 @@ def build(sim, config, a, bdir):
         cmd = ["iverilog", "-g2012", "-o", vvp, "-s", "zb_conf_tb"]
         cmd += [f"-Pzb_conf_tb.{k}={v}" for k, v in params.items()]
         cmd += [f"-D{d}" for d in defines]
-        cmd += sources + tb
-        run_cmd = ["vvp", "-n", vvp]
+        cmd += [os.path.join(SV, "zb_conf_timescale.sv")] + sources + tb
+        run_cmd = ["vvp", "-n", vvp] + (["-fst"] if a.waves else [])
     t0 = time.time()
     p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     with open(os.path.join(bdir, "build.log"), "w") as f:
@@ -114,17 +177,38 @@ def run_test(test, run_cmd, a):
             os.remove(os.path.join(d, f"got.{plane}.hex"))
         except FileNotFoundError:
             pass
+    # A lock-step run that failed here before: its waves start 30 cycles before the wrong write.
+    first_wrong = mismatch_cycle(os.path.join(d, "sim.log"))
     cmd = run_cmd + [f"+stream={os.path.join(a.suite, test['name'], 'stream.hex')}",
                      f"+out={d}", f"+gap={a.gap}", f"+seed={a.seed}"] + list(a.plusarg)
+    if a.waves:
+        cmd.append(f"+dump={os.path.join(d, 'waves.fst')}")
+        if first_wrong is not None:
+            cmd.append(f"+dump_from={max(0, first_wrong - 30)}")
     t0 = time.time()
     p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     with open(os.path.join(d, "sim.log"), "w") as f:
         f.write(shlex.join(cmd) + "\n" + p.stdout)
+    if a.waves:
+        write_save_file(os.path.join(d, "waves.fst"), a.sim)
     # Icarus's $fatal exits 0 on some versions: a run counts only with its done line.
     ok = p.returncode == 0 and "zb_conf: done:" in p.stdout
     first = next((ln for ln in p.stdout.splitlines()
                   if ln.startswith(("zb_conf: FAILED", "zb_conf: MISMATCH", "%Error"))), "")
     return test["name"], ok, time.time() - t0, first
+
+
+def strip_option(argv, name):
+    """argv without `name VALUE` and `name=VALUE`."""
+    out, skip = [], False
+    for x in argv:
+        if skip:
+            skip = False
+        elif x == name:
+            skip = True
+        elif not x.startswith(name + "="):
+            out.append(x)
+    return out
 
 
 def main():
@@ -149,6 +233,8 @@ def main():
                     help="the golden model as a DPI-C scoreboard beside the DUT (verilator)")
     ap.add_argument("--golden-libs", nargs="+", default=[],
                     help="with --lockstep: the C API's libraries to link")
+    ap.add_argument("--waves", action="store_true",
+                    help="every run writes OUT/<test>/waves.fst (the testbench built with tracing)")
     ap.add_argument("--zblend", default=os.path.join(ROOT, "build", "zblend"),
                     help="the zblend command that checks the signatures")
     a = ap.parse_args()
@@ -181,16 +267,20 @@ def main():
         by_config.setdefault(t["config"], []).append(t)
     runs = []
     for name, group in by_config.items():
-        run_cmd = build(a.sim, configs[name], a, os.path.join(a.out, "build", f"{a.sim}-{name}"))
+        kind = f"{a.sim}{'-waves' if a.waves else ''}-{name}"
+        run_cmd = build(a.sim, configs[name], a, os.path.join(a.out, "build", kind))
         runs += [(t, run_cmd) for t in group]
 
     failed = 0
+    unfinished = set()
     t0 = time.time()
     with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as pool:
         futures = [pool.submit(run_test, t, c, a) for t, c in runs]
         for i, f in enumerate(concurrent.futures.as_completed(futures), 1):
             name, ok, secs, first = f.result()
             failed += not ok
+            if not ok:
+                unfinished.add(name)
             print(f"conformance: [{i}/{len(runs)}] {'ok' if ok else 'FAILED'} {name} {secs:.1f} s"
                   + (f": {first}" if first else ""), file=sys.stderr, flush=True)
     print(f"conformance: {len(runs)} simulations on {a.sim} in {time.time() - t0:.0f} s, "
@@ -198,10 +288,23 @@ def main():
     check = [a.zblend, "conformance", "check", a.suite, a.out]
     if only:
         check += ["--tests", ",".join(only)]
-    rc = subprocess.run(check).returncode
-    if rc == 2:
+    p = subprocess.run(check, stdout=subprocess.PIPE, text=True)
+    sys.stdout.write(p.stdout)
+    if p.returncode == 2:
         sys.exit(2)
-    sys.exit(1 if rc != 0 or failed else 0)
+    bad = sorted({ln.split()[1].rstrip(":") for ln in p.stdout.splitlines() if ln.startswith("FAIL ")}
+                 | unfinished)
+    if bad and not a.waves:
+        # The same run again, only the failing tests, with waves: one command to paste.
+        again = [sys.argv[0]] + [x for x in sys.argv[1:]]
+        again = strip_option(again, "--tests") + ["--tests", ",".join(bad), "--waves"]
+        print(f"conformance: reproduce with waves: python3 {shlex.join(again)}", file=sys.stderr)
+    elif bad:
+        for t in bad:
+            w = os.path.join(a.out, t, "waves")
+            print(f"conformance: waves: gtkwave {w}.gtkw  ({w}.fst, its save file beside it)",
+                  file=sys.stderr)
+    sys.exit(1 if p.returncode != 0 or failed else 0)
 
 
 if __name__ == "__main__":

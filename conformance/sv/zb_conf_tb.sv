@@ -6,7 +6,9 @@
 // signatures (got.<plane>.hex) for `zblend conformance check`.
 //
 // Plusargs: +stream=FILE (required) +out=DIR (existing; default .) +gap=P (percent of cycles
-// with no fragment offered, default 0) +seed=N (the gaps' pattern).
+// with no fragment offered, default 0) +seed=N (the gaps' pattern) +dump=FILE (waves of the
+// run: Verilator built with --trace-fst, or Icarus's vvp run with -fst) +dump_from=C (the waves
+// start at cycle C: GTKWave opens a file at its first time).
 // With ZB_CONF_LOCKSTEP defined, the golden model runs beside it through DPI-C
 // (zb_conf_scoreboard.sv) and every write the DUT makes is compared at its cycle.
 module zb_conf_tb #(
@@ -136,6 +138,7 @@ module zb_conf_tb #(
   string        stream_path, out_dir;
   int           gap_pct, seed;
   int unsigned  n_passes, n_frags, n_tiles;
+  int unsigned  frag_index;  // the fragment offered: its index in the pass (the waves' marker)
 
   function automatic logic [7:0] opcode(input logic [127:0] w);
     return w[127:120];
@@ -246,13 +249,14 @@ module zb_conf_tb #(
         @(negedge clk);
         end
         frag_valid = 1'b1;
+        frag_index = k - first;
         frag_x     = w[15:0];
         frag_y     = w[31:16];
         frag_z     = w[63:32];
         frag_rgba  = w[95:64];
         frag_cov   = w[103:96];
 `ifdef ZB_CONF_LOCKSTEP
-        u_sb.accept(k - first, frag_x, frag_y, frag_z, frag_rgba, frag_cov);
+        u_sb.accept(frag_index, frag_x, frag_y, frag_z, frag_rgba, frag_cov);
 `endif
         @(negedge clk);
         while (!frag_took) @(negedge clk);
@@ -347,6 +351,17 @@ module zb_conf_tb #(
     end
     $fclose(fd);
   endtask
+
+  initial begin : waves
+    string path;
+    int    from;
+    if ($value$plusargs("dump=%s", path)) begin
+      if (!$value$plusargs("dump_from=%d", from)) from = 0;
+      $dumpfile(path);
+      if (from > 0) #(from * 10);
+      $dumpvars(0, zb_conf_tb);
+    end
+  end
 
   initial begin : run
     logic [127:0] w;

@@ -52,7 +52,20 @@ case $mode in
     grep -q "^zb_conf:   rtl    colour write 1 (rgba 0x" "$log" || fail "the RTL's value is not reported"
     grep -q "^zb_conf:   golden colour write 1 (rgba 0x" "$log" || fail "the golden value is not reported"
     grep -q "^zb_conf: done:" "$log" && fail "the run went on past the first wrong write"
-    echo "ok: the lock-step run stopped at the first wrong write: $(grep -m1 MISMATCH "$log")"
+    c=$(sed -n 's/^zb_conf: MISMATCH at cycle \([0-9]*\):.*/\1/p' "$log")
+    # The printed command reproduces it with waves: the FST starts 30 cycles before the wrong
+    # write, its save file puts marker A at that cycle.
+    again=$(sed -n 's/^conformance: reproduce with waves: //p' "$out/log.txt")
+    [[ -n $again ]] || fail "no reproduce command printed"
+    (cd "$root" && eval "$again") >"$out/again.txt" 2>&1 && fail "the reproduce command passed"
+    grep -q "^zb_conf: MISMATCH at cycle $c:" "$log" || fail "the reproduce command did not fail at cycle $c"
+    fst=$out/$tests/waves.fst
+    [[ -s $fst && -s ${fst%.fst}.gtkw ]] || fail "no waves.fst and waves.gtkw in $out/$tests"
+    first=$(fst2vcd "$fst" 2>/dev/null | grep -m1 '^#[0-9]')
+    [[ $first == "#$(( (c - 30) * 10000 ))" ]] || fail "the FST starts at $first, want #$(( (c - 30) * 10000 ))"
+    grep -q "^\*[-0-9.]* $(( c * 10000 )) " "${fst%.fst}.gtkw" || fail "marker A is not at cycle $c"
+    grep -q "^\[markername\] Afirst wrong write$" "${fst%.fst}.gtkw" || fail "marker A is not named"
+    echo "ok: the lock-step run stopped at the first wrong write: $(grep -m1 MISMATCH "$log"); reproduced with waves"
     ;;
   *) echo "usage: test_sv_tb.sh pass|bug|lockstep-bug ..." >&2; exit 2 ;;
 esac
