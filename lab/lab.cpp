@@ -373,9 +373,43 @@ std::string summary_csv(const std::vector<MethodSummary>& summaries) {
   return csv;
 }
 
+namespace {
+
+// The mean of `parts` (one method's rows or family means), scenes added up; RTL cycles only
+// when every part has them.
+LineSummary line_mean(const std::string& scene, const std::vector<LineSummary>& parts) {
+  LineSummary mean;
+  mean.scene = scene;
+  mean.method = parts.front().method;
+  double cycles = 0;
+  bool all_rtl = true;
+  for (const LineSummary& s : parts) {
+    mean.scenes += s.scenes;
+    mean.edge_pixels += s.edge_pixels;
+    mean.hidden_drawn += s.hidden_drawn;
+    mean.visible_missing += s.visible_missing;
+    mean.fragments += s.fragments;
+    all_rtl = all_rtl && s.rtl_cycles.has_value();
+    if (s.rtl_cycles) cycles += *s.rtl_cycles;
+  }
+  const double n = double(parts.size());
+  mean.edge_pixels /= n;
+  mean.hidden_drawn /= n;
+  mean.visible_missing /= n;
+  mean.fragments /= n;
+  if (all_rtl) mean.rtl_cycles = cycles / n;
+  return mean;
+}
+
+}  // namespace
+
 std::vector<LineSummary> line_summary(const std::vector<LabRow>& rows) {
   std::vector<LineSummary> out;
-  std::vector<std::string> methods;
+  std::vector<std::string> methods, families;
+  std::vector<std::string> family_of;  // per scene row of `out`
+  auto note = [](std::vector<std::string>& v, const std::string& s) {
+    if (std::find(v.begin(), v.end(), s) == v.end()) v.push_back(s);
+  };
   for (const LabRow& r : rows) {
     if (!r.lines) continue;
     LineSummary s;
@@ -388,34 +422,21 @@ std::vector<LineSummary> line_summary(const std::vector<LabRow>& rows) {
     if (r.rtl_cycles) s.rtl_cycles = double(*r.rtl_cycles);
     s.fragments = double(r.golden.fragments_in);
     out.push_back(s);
-    if (std::find(methods.begin(), methods.end(), r.method) == methods.end())
-      methods.push_back(r.method);
+    family_of.push_back(r.family);
+    note(methods, r.method);
+    note(families, r.family);
   }
+  // Each family counts once, as in summarize: its scenes' mean, then the mean of those.
   const size_t per_scene = out.size();
   for (const std::string& m : methods) {
-    LineSummary mean;
-    mean.scene = kAllFamilies;
-    mean.method = m;
-    double cycles = 0;
-    bool all_rtl = true;
-    for (size_t i = 0; i < per_scene; ++i) {
-      const LineSummary& s = out[i];
-      if (s.method != m) continue;
-      ++mean.scenes;
-      mean.edge_pixels += s.edge_pixels;
-      mean.hidden_drawn += s.hidden_drawn;
-      mean.visible_missing += s.visible_missing;
-      mean.fragments += s.fragments;
-      all_rtl = all_rtl && s.rtl_cycles.has_value();
-      if (s.rtl_cycles) cycles += *s.rtl_cycles;
+    std::vector<LineSummary> family_means;
+    for (const std::string& f : families) {
+      std::vector<LineSummary> scenes;
+      for (size_t i = 0; i < per_scene; ++i)
+        if (out[i].method == m && family_of[i] == f) scenes.push_back(out[i]);
+      if (!scenes.empty()) family_means.push_back(line_mean(f, scenes));
     }
-    const double n = double(mean.scenes);
-    mean.edge_pixels /= n;
-    mean.hidden_drawn /= n;
-    mean.visible_missing /= n;
-    mean.fragments /= n;
-    if (all_rtl) mean.rtl_cycles = cycles / n;
-    out.push_back(mean);
+    out.push_back(line_mean(kAllFamilies, family_means));
   }
   return out;
 }

@@ -140,8 +140,8 @@ std::vector<MethodSummary> summarize(const std::vector<LabRow>& rows);
 // lab_summary.csv, the input of scripts/lab_charts.py.
 std::string summary_csv(const std::vector<MethodSummary>& summaries);
 
-// A hidden-line method on one scene, or its mean over the scenes ("all"): the error shares
-// against the exact line reference and the cost.
+// A hidden-line method on one scene, or its mean over the scene families ("all"): the error
+// shares against the exact line reference and the cost.
 struct LineSummary {
   std::string scene;              // kAllFamilies for the mean
   std::string method;
@@ -154,8 +154,8 @@ struct LineSummary {
   double cost() const { return rtl_cycles ? *rtl_cycles : fragments; }
 };
 
-// The rows with line errors, scene by scene in order, then per method the mean over its
-// scenes (each scene once).
+// The rows with line errors, scene by scene in order, then per method the mean over the
+// families of its scenes' means (each family once, as summarize's "all").
 std::vector<LineSummary> line_summary(const std::vector<LabRow>& rows);
 
 // lab_lines.csv, the input of the hidden-line chart (scripts/lab_charts.py).

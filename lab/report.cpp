@@ -131,9 +131,10 @@ Table line_table(const ReportInput& in, Format f) {
            in.rtl ? "RTL cycles" : "fragments"},
           {}};
   for (const LineSummary& s : in.line_summaries)
-    t.rows.push_back({text(f, s.scene == kAllFamilies ? "mean of " + std::to_string(s.scenes) +
-                                                            " scenes"
-                                                      : s.scene),
+    t.rows.push_back({text(f, s.scene == kAllFamilies
+                                  ? "mean of " + std::to_string(s.scenes) +
+                                        " scenes (each family once)"
+                                  : s.scene),
                       text(f, s.method), fmt::format("{:.0f}", s.edge_pixels),
                       fmt::format("{:.2f}%", 100.0 * s.hidden_drawn),
                       fmt::format("{:.2f}%", 100.0 * s.visible_missing), count_text(s.cost())});

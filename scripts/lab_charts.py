@@ -203,7 +203,7 @@ def hidden_line_chart(lines_csv, out_path):
     bx.xaxis.set_major_formatter(EngFormatter(sep=""))
     bx.set_xlabel(cost_label(means, "cost") + ", log")
     bx.set_ylabel("mean share over the scenes (%)")
-    bx.set_title(f"Mean of {len(names)} scenes against cost")
+    bx.set_title(f"Mean of {len(names)} scenes (each family once) against cost")
     bx.grid(True, which="both", alpha=0.3)
     bx.legend(fontsize=7)
     fig.suptitle("Hidden-line methods against the exact line reference")
