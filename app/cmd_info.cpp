@@ -9,6 +9,7 @@
 #include "pipeline/passes.h"
 #include "scene/scene_suite.h"
 #include "scene/builtin_scenes.h"
+#include "offset_plan.h"
 #include "sizing.h"
 #include "sizing_report.h"
 
@@ -92,6 +93,8 @@ struct SizingCommand {
   int height = 480;
   int max_error = 0;
   std::string json;
+  double max_hidden_drawn = 0;     // percent, with --max-visible-missing: the offset search
+  double max_visible_missing = 0;
 };
 
 void run_sizing(const SizingCommand& c) {
@@ -118,22 +121,64 @@ void run_sizing(const SizingCommand& c) {
                                         r.choice.beyond_rounding, r.choice.method));
 }
 
-// The plan command's two forms: --method alone, or --scene with --max-error.
+// zblend plan --scene S --max-hidden-drawn P --max-visible-missing Q: the hidden-line depth
+// offset for the scene (lab/offset_plan.h).
+void run_offset_plan(const SizingCommand& c) {
+  for (const auto& [name, v] : {std::pair{"--max-hidden-drawn", c.max_hidden_drawn},
+                                std::pair{"--max-visible-missing", c.max_visible_missing}})
+    if (!(v >= 0 && v <= 100))
+      throw UsageError(fmt::format("{}: {} is out of range (0 to 100, percent of the edge "
+                                   "pixels)", name, v));
+  const Viewport vp = check_viewport(c.width, c.height, kDefaultDepthBits);
+  const Scene scene = resolve_scene(c.scene, c.camera);
+  print_warnings("zblend plan", scene);
+  OffsetPlanOptions o;
+  o.viewport = vp;
+  o.max_hidden_drawn = c.max_hidden_drawn / 100;
+  o.max_visible_missing = c.max_visible_missing / 100;
+  o.progress = [](const std::string& line) { fmt::print(stderr, "{}\n", line); };
+  const OffsetPlan plan = plan_offset(scene, o);
+  fmt::print("{}", offset_plan_text(c.scene, o, plan));
+  if (!plan.found)
+    throw VerificationError(fmt::format(
+        "no offset meets --max-hidden-drawn {} and --max-visible-missing {}", c.max_hidden_drawn,
+        c.max_visible_missing));
+}
+
+// The plan command's three forms: --method alone; --scene with --max-error; --scene with
+// --max-hidden-drawn and --max-visible-missing.
 void run_plan_command(const CLI::App& cmd, const std::string& method, const SizingCommand& c) {
+  const char* scene_options[] = {"--max-error", "--max-hidden-drawn", "--max-visible-missing",
+                                 "--camera", "--width", "--height", "--json"};
   if (cmd.count("--method")) {
     if (cmd.count("--scene"))
       throw UsageError("--method, --scene: give one of them (--method M: a method's passes; "
                        "--scene S --max-error E: a model sized to the scene)");
-    for (const char* o : {"--max-error", "--camera", "--width", "--height", "--json"})
+    for (const char* o : scene_options)
       if (cmd.count(o)) throw UsageError(fmt::format("{}: goes with --scene, not --method", o));
     print_plan(method);
     return;
   }
   if (!cmd.count("--scene")) {
-    for (const char* o : {"--max-error", "--camera", "--width", "--height", "--json"})
+    for (const char* o : scene_options)
       if (cmd.count(o)) throw UsageError(fmt::format("--scene: needed with {}", o));
     throw UsageError("give --method M (a method's passes) or --scene S --max-error E (a model "
                      "sized to the scene)");
+  }
+  const bool offset = cmd.count("--max-hidden-drawn") || cmd.count("--max-visible-missing");
+  if (offset) {
+    if (cmd.count("--max-error"))
+      throw UsageError("--max-error, --max-hidden-drawn: give one of them (--max-error: a model "
+                       "sized to the scene; --max-hidden-drawn and --max-visible-missing: the "
+                       "hidden-line offset)");
+    if (cmd.count("--json"))
+      throw UsageError("--json: goes with --max-error, not the hidden-line offset");
+    for (const char* o : {"--max-hidden-drawn", "--max-visible-missing"})
+      if (!cmd.count(o))
+        throw UsageError(fmt::format("{}: needed with the other bound of the hidden-line offset "
+                                     "(both in percent of the edge pixels)", o));
+    run_offset_plan(c);
+    return;
   }
   if (!cmd.count("--max-error"))
     throw UsageError("--max-error: needed with --scene (the error bound, 0 to 255)");
@@ -148,7 +193,9 @@ void add_info_commands(CLI::App& app) {
   app.add_subcommand("scenes", "List the built-in scenes and the lab's scene suite by family")
       ->callback(print_scenes);
   auto* plan = app.add_subcommand(
-      "plan", "Show the passes of a method and their pipeline state (--method), or size a model "
+      "plan", "Show the passes of a method and their pipeline state (--method), pick the "
+              "hidden-line depth offset for a scene (--scene, --max-hidden-drawn, "
+              "--max-visible-missing), or size a model "
               "to a scene (--scene, --max-error): the cheapest method and narrowest depth bits, "
               "coverage samples and tile size within the error, verified (docs/sizing.md)");
   auto method = std::make_shared<std::string>();
@@ -161,6 +208,13 @@ void add_info_commands(CLI::App& app) {
                    "With --scene: the bound E, 8-bit units (0 to 255), on the largest channel "
                    "error against 'reference' beyond the 8-bit blend's rounding (0: as close as "
                    "compositing every layer in order gets)");
+  plan->add_option("--max-hidden-drawn", sizing->max_hidden_drawn,
+                   "With --scene and --max-visible-missing: pick the hidden-line depth offset "
+                   "whose hidden edge pixels drawn stay within this share (percent of the exact "
+                   "line reference's edge pixels)");
+  plan->add_option("--max-visible-missing", sizing->max_visible_missing,
+                   "With --scene and --max-hidden-drawn: the bound on visible edge pixels "
+                   "missing (percent)");
   plan->add_option("--camera", sizing->camera,
                    "With --scene: camera eye=x,y,z,at=x,y,z,fov=deg[,up=x,y,z]");
   plan->add_option("--width,-W", sizing->width, "With --scene: frame width in pixels")

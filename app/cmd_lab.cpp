@@ -261,9 +261,17 @@ void run_lab(const LabCommandOptions& o) {
     in.rows.insert(in.rows.end(), runs[i].rows.begin(), runs[i].rows.end());
   }
   in.summaries = lab::summarize(in.rows);
+  in.line_summaries = lab::line_summary(in.rows);
   const fs::path dir = o.out_dir;
   write(dir / "lab.csv", lab::lab_csv(in.rows));
   write(dir / "lab_summary.csv", lab::summary_csv(in.summaries));
+  std::error_code stale;
+  if (in.line_summaries.empty()) {  // no hidden-line method ran: no stale file or chart
+    fs::remove(dir / "lab_lines.csv", stale);
+    fs::remove(dir / lab::hidden_line_chart_path(), stale);
+  }
+  else
+    write(dir / "lab_lines.csv", lab::line_summary_csv(in.line_summaries));
 
   if (!o.no_charts) {
     std::error_code ec;
@@ -273,7 +281,8 @@ void run_lab(const LabCommandOptions& o) {
       throw std::runtime_error("scripts/lab_charts.py failed (its message above)");
   }
   std::vector<std::string> candidates = {lab::main_chart_path(), lab::main_bytes_chart_path(),
-                                         lab::tile_beat_chart_path()};
+                                         lab::tile_beat_chart_path(),
+                                         lab::hidden_line_chart_path()};
   for (const lab::ReportScene& s : in.scenes) candidates.push_back(lab::family_chart_path(s.family));
   for (const std::string& c : candidates) {
     std::error_code ec;

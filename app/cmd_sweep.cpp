@@ -18,7 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-const std::vector<std::string> kSweeps = {"orbit", "depth", "layers", "alpha", "samples", "all"};
+const std::vector<std::string> kSweeps = {"orbit",   "depth",  "layers", "alpha",
+                                          "samples", "offset", "all"};
 
 struct SweepOptions {
   std::string name;
@@ -77,6 +78,7 @@ class SweepRun {
     if (all || o_.name == "layers") layers();
     if (all || o_.name == "alpha") alpha();
     if (all || o_.name == "samples") samples();
+    if (all || o_.name == "offset") offset();
     r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     if (all) write("sweeps.md", lab::sweeps_markdown(r));
     note(fmt::format("sweep {}: {:.0f} s, written to {}", o_.name, r.seconds, o_.out_dir));
@@ -152,6 +154,13 @@ class SweepRun {
     emit("samples", lab::method_csv("samples", r.samples_rows));
   }
 
+  void offset() {
+    lab::SweepResults& r = results_;
+    r.offset.viewport = size_or(r.offset.viewport);
+    r.offset_rows = lab::offset_sweep(r.offset, progress());
+    emit("offset", lab::offset_csv(r.offset_rows));
+  }
+
   const SweepOptions& o_;
   std::string python_;
   std::string script_;
@@ -171,7 +180,8 @@ void add_sweep_command(CLI::App& app) {
   auto o = std::make_shared<SweepOptions>();
   CLI::App* cmd = app.add_subcommand(
       "sweep", "Stability sweeps: camera orbit, depth separation against depth bits, layer "
-               "count, alpha, coverage samples; NAME.csv and NAME.png each (docs/sweeps.md)");
+               "count, alpha, coverage samples, hidden-line depth offset against face tilt; "
+               "NAME.csv and NAME.png each (docs/sweeps.md)");
   cmd->add_option("name", o->name, "Sweep: " + join(kSweeps, ", ") +
                                        " ('all' also writes sweeps.md)");
   cmd->add_option("--out-dir", o->out_dir, "Output directory")->capture_default_str();

@@ -9,7 +9,9 @@
 
 #include <fmt/core.h>
 
+#include "geometry/frame_geometry.h"
 #include "pipeline/passes.h"
+#include "reference/line_reference.h"
 #include "reference/reference.h"
 #include "pipeline/render.h"
 #include "rop/rop.h"
@@ -49,12 +51,18 @@ std::string error_cells(const ImageError& e) {
 }  // namespace
 
 const char* to_string(FairReference r) {
-  return r == FairReference::kExact ? "exact" : "supersampled";
+  switch (r) {
+    case FairReference::kExact: return "exact";
+    case FairReference::kSupersampled: return "supersampled";
+    case FairReference::kLines: return "lines";
+  }
+  return "?";
 }
 
 FairReference fair_reference(const std::string& method) {
   const PassPlan* plan = find_plan(method);
   if (!plan) return FairReference::kExact;
+  if (plan_draws_edges(*plan)) return FairReference::kLines;
   const bool aa = std::any_of(plan->passes.begin(), plan->passes.end(),
                               [](const PassState& p) { return is_coverage_pass(p.rop); });
   return aa ? FairReference::kSupersampled : FairReference::kExact;
@@ -83,6 +91,7 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
     reference_ms = std::min(reference_ms, ms_since(t));
   }
   run.reference_ss = render_reference_supersampled(scene, vp, o.supersample);
+  std::optional<LineVisibility> lines;  // the line reference, when a method draws edges
 
   for (const std::string& m : o.methods) {
     LabRow row;
@@ -139,8 +148,19 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
     row.error = compare_images(image, run.reference);
     row.error_ss = compare_images(image, run.reference_ss);
     row.fair = fair_reference(m);
-    run.error_images.push_back(
-        error_image(image, row.fair == FairReference::kExact ? run.reference : run.reference_ss));
+    if (row.fair == FairReference::kLines) {
+      if (!lines) lines = line_visibility(rs);
+      const bool dim = dims_hidden_edges(*find_plan(m));
+      const Framebuffer exact_lines = line_reference_image(
+          *lines, vp, rs.background, kEdgeColor, dim ? std::optional<Rgba8>(kHiddenEdgeColor)
+                                                     : std::nullopt);
+      row.error_lines = compare_images(image, exact_lines);
+      row.lines = compare_lines(image, *lines, kEdgeColor);
+      run.error_images.push_back(error_image(image, exact_lines));
+    } else {
+      run.error_images.push_back(error_image(
+          image, row.fair == FairReference::kExact ? run.reference : run.reference_ss));
+    }
     run.images.push_back(std::move(image));
     run.rows.push_back(std::move(row));
   }
@@ -157,7 +177,7 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
       "ss_delta_e_mean,ss_delta_e_max,fair_reference,fair_delta_e_mean,fair_rmse,"
       "model_stream_cycles";
   for (const int beat : kLabBeats) csv += fmt::format(",tile_cycles_beat{}", beat);
-  csv += "\n";
+  csv += ",edge_pixels,hidden_drawn,visible_missing,hidden_drawn_share,visible_missing_share\n";
   for (const LabRow& r : rows) {
     const PassStats& s = r.golden;
     const std::string cost =
@@ -176,10 +196,15 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
     } else {
       model = std::string(kLabBeats.size(), ',');
     }
-    csv += fmt::format("{},{},{},{},{:.3f},{},{},{},{},{:.4f},{:.4f},{}\n", r.scene, r.family,
+    const std::string lines =
+        r.lines ? fmt::format("{},{},{},{:.6f},{:.6f}", r.lines->edge_pixels,
+                              r.lines->hidden_drawn, r.lines->visible_missing,
+                              r.lines->hidden_drawn_share(), r.lines->visible_missing_share())
+                : ",,,,";
+    csv += fmt::format("{},{},{},{},{:.3f},{},{},{},{},{:.4f},{:.4f},{},{}\n", r.scene, r.family,
                        r.method, cost, r.host_ms, rtl, error_cells(r.error),
                        error_cells(r.error_ss), to_string(r.fair), r.fair_error().delta_e_mean,
-                       r.fair_error().rmse, model);
+                       r.fair_error().rmse, model, lines);
   }
   return csv;
 }
@@ -305,7 +330,7 @@ std::vector<MethodSummary> summarize(const std::vector<LabRow>& rows) {
     if (std::find(v.begin(), v.end(), s) == v.end()) v.push_back(s);
   };
   for (const LabRow& r : rows) {
-    if (!r.has_cost) continue;
+    if (!r.has_cost || r.fair == FairReference::kLines) continue;
     note(families, r.family);
     note(methods, r.method);
   }
@@ -316,7 +341,9 @@ std::vector<MethodSummary> summarize(const std::vector<LabRow>& rows) {
     for (const std::string& method : methods) {
       std::vector<const LabRow*> group;
       for (const LabRow& r : rows)
-        if (r.has_cost && r.method == method && r.family == family) group.push_back(&r);
+        if (r.has_cost && r.fair != FairReference::kLines && r.method == method &&
+            r.family == family)
+          group.push_back(&r);
       if (!group.empty()) out.push_back(summarize_group(family, group));
     }
     mark_pareto(out.begin() + static_cast<std::ptrdiff_t>(begin), out.end());
@@ -343,6 +370,86 @@ std::string summary_csv(const std::vector<MethodSummary>& summaries) {
                        s.rtl_cycles ? fmt::format("{:.1f}", *s.rtl_cycles) : "", s.cost(),
                        s.rtl_cycles ? "rtl_cycles" : "fragments", int(s.pareto_cost),
                        int(s.pareto_bytes));
+  return csv;
+}
+
+namespace {
+
+// The mean of `parts` (one method's rows or family means), scenes added up; RTL cycles only
+// when every part has them.
+LineSummary line_mean(const std::string& scene, const std::vector<LineSummary>& parts) {
+  LineSummary mean;
+  mean.scene = scene;
+  mean.method = parts.front().method;
+  double cycles = 0;
+  bool all_rtl = true;
+  for (const LineSummary& s : parts) {
+    mean.scenes += s.scenes;
+    mean.edge_pixels += s.edge_pixels;
+    mean.hidden_drawn += s.hidden_drawn;
+    mean.visible_missing += s.visible_missing;
+    mean.fragments += s.fragments;
+    all_rtl = all_rtl && s.rtl_cycles.has_value();
+    if (s.rtl_cycles) cycles += *s.rtl_cycles;
+  }
+  const double n = double(parts.size());
+  mean.edge_pixels /= n;
+  mean.hidden_drawn /= n;
+  mean.visible_missing /= n;
+  mean.fragments /= n;
+  if (all_rtl) mean.rtl_cycles = cycles / n;
+  return mean;
+}
+
+}  // namespace
+
+std::vector<LineSummary> line_summary(const std::vector<LabRow>& rows) {
+  std::vector<LineSummary> out;
+  std::vector<std::string> methods, families;
+  std::vector<std::string> family_of;  // per scene row of `out`
+  auto note = [](std::vector<std::string>& v, const std::string& s) {
+    if (std::find(v.begin(), v.end(), s) == v.end()) v.push_back(s);
+  };
+  for (const LabRow& r : rows) {
+    if (!r.lines) continue;
+    LineSummary s;
+    s.scene = r.scene;
+    s.method = r.method;
+    s.scenes = 1;
+    s.edge_pixels = double(r.lines->edge_pixels);
+    s.hidden_drawn = r.lines->hidden_drawn_share();
+    s.visible_missing = r.lines->visible_missing_share();
+    if (r.rtl_cycles) s.rtl_cycles = double(*r.rtl_cycles);
+    s.fragments = double(r.golden.fragments_in);
+    out.push_back(s);
+    family_of.push_back(r.family);
+    note(methods, r.method);
+    note(families, r.family);
+  }
+  // Each family counts once, as in summarize: its scenes' mean, then the mean of those.
+  const size_t per_scene = out.size();
+  for (const std::string& m : methods) {
+    std::vector<LineSummary> family_means;
+    for (const std::string& f : families) {
+      std::vector<LineSummary> scenes;
+      for (size_t i = 0; i < per_scene; ++i)
+        if (out[i].method == m && family_of[i] == f) scenes.push_back(out[i]);
+      if (!scenes.empty()) family_means.push_back(line_mean(f, scenes));
+    }
+    out.push_back(line_mean(kAllFamilies, family_means));
+  }
+  return out;
+}
+
+std::string line_summary_csv(const std::vector<LineSummary>& summaries) {
+  std::string csv =
+      "scene,method,scenes,edge_pixels,hidden_drawn,visible_missing,fragments,rtl_cycles,cost,"
+      "cost_unit\n";
+  for (const LineSummary& s : summaries)
+    csv += fmt::format("{},{},{},{:.1f},{:.6f},{:.6f},{:.1f},{},{:.1f},{}\n", s.scene, s.method,
+                       s.scenes, s.edge_pixels, s.hidden_drawn, s.visible_missing, s.fragments,
+                       s.rtl_cycles ? fmt::format("{:.1f}", *s.rtl_cycles) : "", s.cost(),
+                       s.rtl_cycles ? "rtl_cycles" : "fragments");
   return csv;
 }
 

@@ -11,6 +11,7 @@
 #include "rop/backend.h"
 #include "rop/framebuffer.h"
 #include "geometry/geometry.h"
+#include "metrics/line_metrics.h"
 #include "metrics/metrics.h"
 #include "scene/scene.h"
 
@@ -33,8 +34,10 @@ struct LabOptions {
 };
 
 // The reference a method's error is judged against in the charts: anti-aliased methods (a
-// plan with a coverage pass) against the supersampled one, every other against the exact one.
-enum class FairReference { kExact, kSupersampled };
+// plan with a coverage pass) against the supersampled one, the hidden-line methods (a plan
+// that draws edges) against the exact line reference (reference/line_reference.h), every
+// other against the exact one.
+enum class FairReference { kExact, kSupersampled, kLines };
 const char* to_string(FairReference r);
 FairReference fair_reference(const std::string& method);
 
@@ -69,7 +72,15 @@ struct LabRow {
   ImageError error;               // against the exact reference
   ImageError error_ss;            // against the supersampled reference
   FairReference fair = FairReference::kExact;
-  const ImageError& fair_error() const { return fair == FairReference::kExact ? error : error_ss; }
+  // kLines: the error against the line reference's picture in the method's style, and the
+  // edge pixels' error shares (metrics/line_metrics.h).
+  ImageError error_lines;
+  std::optional<LineError> lines;
+  const ImageError& fair_error() const {
+    return fair == FairReference::kExact ? error
+                                         : fair == FairReference::kSupersampled ? error_ss
+                                                                                : error_lines;
+  }
 };
 
 // One scene's outcome: a row and an image per method, the two references, and the error
@@ -122,10 +133,32 @@ struct MethodSummary {
 constexpr const char* kAllFamilies = "all";
 
 // Per family (in order of first appearance), then "all"; methods without cost (the reference)
-// are left out. Pareto flags are set within each family.
+// and the hidden-line methods (judged against another reference, line_summary) are left out.
+// Pareto flags are set within each family.
 std::vector<MethodSummary> summarize(const std::vector<LabRow>& rows);
 
 // lab_summary.csv, the input of scripts/lab_charts.py.
 std::string summary_csv(const std::vector<MethodSummary>& summaries);
+
+// A hidden-line method on one scene, or its mean over the scene families ("all"): the error
+// shares against the exact line reference and the cost.
+struct LineSummary {
+  std::string scene;              // kAllFamilies for the mean
+  std::string method;
+  size_t scenes = 0;
+  double edge_pixels = 0;
+  double hidden_drawn = 0;        // shares of the reference's edge pixels
+  double visible_missing = 0;
+  std::optional<double> rtl_cycles;
+  double fragments = 0;
+  double cost() const { return rtl_cycles ? *rtl_cycles : fragments; }
+};
+
+// The rows with line errors, scene by scene in order, then per method the mean over the
+// families of its scenes' means (each family once, as summarize's "all").
+std::vector<LineSummary> line_summary(const std::vector<LabRow>& rows);
+
+// lab_lines.csv, the input of the hidden-line chart (scripts/lab_charts.py).
+std::string line_summary_csv(const std::vector<LineSummary>& summaries);
 
 }  // namespace zb::lab

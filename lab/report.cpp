@@ -124,6 +124,23 @@ Table summary_table(const ReportInput& in, const std::string& family, Format f) 
   return t;
 }
 
+// The hidden-line methods per scene and their means: error shares against the exact line
+// reference, and cost.
+Table line_table(const ReportInput& in, Format f) {
+  Table t{{"scene", "method", "edge pixels", "hidden drawn", "visible missing",
+           in.rtl ? "RTL cycles" : "fragments"},
+          {}};
+  for (const LineSummary& s : in.line_summaries)
+    t.rows.push_back({text(f, s.scene == kAllFamilies
+                                  ? "mean of " + std::to_string(s.scenes) +
+                                        " scenes (each family once)"
+                                  : s.scene),
+                      text(f, s.method), fmt::format("{:.0f}", s.edge_pixels),
+                      fmt::format("{:.2f}%", 100.0 * s.hidden_drawn),
+                      fmt::format("{:.2f}%", 100.0 * s.visible_missing), count_text(s.cost())});
+  return t;
+}
+
 // One scene: a row per method with its image, its error image and its numbers.
 Table scene_table(const ReportInput& in, const ReportScene& sc, Format f) {
   const bool md = f == Format::kMarkdown;
@@ -222,6 +239,20 @@ std::string body(const ReportInput& in, Format f) {
       in.rtl ? "RTL cycles" : "fragments"));
   out += table(f, summary_table(in, kAllFamilies, f));
 
+  if (!in.line_summaries.empty()) {
+    out += heading(f, 2, "Hidden-line methods against the exact line reference", "hidden-line");
+    if (has(in.charts, hidden_line_chart_path()))
+      out += para(f, image(f, hidden_line_chart_path(), "hidden-line error shares", 900));
+    out += para(f, "Every tessellation edge's pixels, by the line rule the methods draw with, "
+                   "decided visible or hidden against the exact depth of the faces not adjacent "
+                   "to the edge (docs/lab.md, \"Hidden-line error\"). Hidden drawn: hidden edge "
+                   "pixels drawn in the visible style; visible missing: visible ones not drawn "
+                   "in it (for hidden-line-dim, drawn dimmed); both as shares of the reference's "
+                   "edge pixels. These methods are left out of the charts above: a wireframe's "
+                   "error against a shaded image measures nothing.");
+    out += table(f, line_table(in, f));
+  }
+
   if (has(in.charts, tile_beat_chart_path())) {
     out += heading(f, 2, "Tile traffic against the tile port's width", "tile-beat");
     out += para(f, image(f, tile_beat_chart_path(), "tile cycles against beat width", 800));
@@ -304,6 +335,7 @@ std::string reference_ss_path(const std::string& scene) {
 std::string main_chart_path() { return "charts/main.png"; }
 std::string main_bytes_chart_path() { return "charts/main-bytes.png"; }
 std::string tile_beat_chart_path() { return "charts/tile-beat.png"; }
+std::string hidden_line_chart_path() { return "charts/hidden-line.png"; }
 std::string family_chart_path(const std::string& family) {
   return "charts/family-" + path_name(family) + ".png";
 }

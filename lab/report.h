@@ -25,6 +25,7 @@ struct ReportInput {
   std::vector<ReportScene> scenes;        // in report order
   std::vector<LabRow> rows;               // every scene's rows
   std::vector<MethodSummary> summaries;   // summarize(rows)
+  std::vector<LineSummary> line_summaries;  // line_summary(rows)
   std::vector<std::string> charts;        // relative paths of the charts that exist
   std::string sweeps_markdown;            // sweeps/sweeps.md, or empty
   std::vector<std::string> sweep_images;  // relative paths under sweeps/
@@ -42,6 +43,7 @@ std::string reference_ss_path(const std::string& scene);
 std::string main_chart_path();        // delta E against cost, every scene
 std::string main_bytes_chart_path();  // delta E against bytes, every scene
 std::string tile_beat_chart_path();   // tile cycles against the tile port's width
+std::string hidden_line_chart_path(); // the hidden-line methods against the line reference
 std::string family_chart_path(const std::string& family);
 
 // Markdown links and images whose target is a relative path get `dir` put in front, so that

@@ -43,4 +43,18 @@ std::string method_csv(const char* x_name, const std::vector<MethodRow>& rows) {
   return out;
 }
 
+std::string offset_csv(const std::vector<OffsetRow>& rows) {
+  std::string out =
+      "knob,value,default,scene,tilt_deg,edge_pixels,hidden_drawn,visible_missing,"
+      "hidden_drawn_share,visible_missing_share\n";
+  for (const OffsetRow& r : rows)
+    out += fmt::format("{},{},{},{},{},{},{},{},{:.6f},{:.6f}\n", r.knob,
+                       std::isinf(r.value) ? std::string("inf") : fmt::format("{}", r.value),
+                       int(r.is_default), r.scene,
+                       std::isnan(r.tilt) ? std::string() : fmt::format("{:g}", r.tilt),
+                       r.error.edge_pixels, r.error.hidden_drawn, r.error.visible_missing,
+                       r.error.hidden_drawn_share(), r.error.visible_missing_share());
+  return out;
+}
+
 }  // namespace zb::lab

@@ -9,6 +9,7 @@
 
 #include "rop/framebuffer.h"
 #include "geometry/geometry.h"
+#include "metrics/line_metrics.h"
 #include "metrics/metrics.h"
 #include "pipeline/render.h"
 #include "scene/scene.h"
@@ -144,11 +145,65 @@ Scene separate_triangles_scene();
 std::vector<MethodRow> samples_sweep(const Scene& scene, const SamplesOptions& o,
                                      const SweepProgress& progress = {});
 
+// --- the hidden-line depth offset (sweep_offset.cpp) ---
+
+// One depth offset the sweep tries: which knob it moves (units, slope, clamp: the polygon
+// offset around kEdgeSlopeOffset; faces: the units of the offset from the edge's own faces)
+// and that knob's value (units, the slope factor, the clamp in units with infinity for none).
+struct OffsetSetting {
+  std::string knob;
+  double value = 0;
+  DepthOffset offset;
+};
+
+// The settings of the sweep and of zblend plan's offset search, knob by knob, each knob's
+// values ascending.
+std::vector<OffsetSetting> offset_settings();
+
+// True when `o` is the hidden-line plans' offset (kEdgeOffset).
+bool is_default_offset(const DepthOffset& o);
+
+// An opaque plate (a box of half size 0.8 x 0.8 x 0.06, as parts' plates) whose large face is
+// tilted `deg` degrees away from the eye about a horizontal axis, with an opaque ball behind
+// it: the plate's front edges must stay visible on its face at every tilt, its back edges and
+// the ball's silhouette must stay hidden where the plate covers them.
+Scene tilted_plate_scene(float deg);
+
+struct OffsetOptions {
+  std::vector<double> tilts;          // empty: default_tilts()
+  std::vector<std::string> scenes{"cad", "parts"};  // built-ins measured at every setting too
+  Viewport viewport{320, 240};
+};
+
+// 0 to 80 degrees in steps of 10, then 85, 87, 88, 89, 89.5 and 89.9.
+std::vector<double> default_tilts();
+
+struct OffsetRow {
+  std::string knob;
+  double value = 0;
+  bool is_default = false;
+  std::string scene;   // "tilt" for tilted_plate_scene, else the built-in's name
+  double tilt = 0;     // degrees; NaN for the built-ins
+  LineError error;     // hidden-line with this offset against the exact line reference
+};
+
+// hidden-line with every setting on tilted_plate_scene at every tilt and on the built-ins,
+// against the exact line reference (hidden-line-dim classifies every edge pixel the same way).
+std::vector<OffsetRow> offset_sweep(const OffsetOptions& o, const SweepProgress& progress = {});
+
+// The mean over the tilts of hidden drawn plus visible missing, for one knob's value.
+double offset_tilt_error(const std::vector<OffsetRow>& rows, const std::string& knob, double value);
+
+// A knob's knee: its smallest value whose offset_tilt_error is within 0.1 % of the edge pixels
+// of the least over its values.
+double offset_knee(const std::vector<OffsetRow>& rows, const std::string& knob);
+
 // --- output (sweep_csv.cpp, sweep_summary.cpp) ---
 
 std::string orbit_csv(const std::vector<OrbitRow>& rows);
 std::string depth_csv(const std::vector<DepthRow>& rows);
 std::string method_csv(const char* x_name, const std::vector<MethodRow>& rows);
+std::string offset_csv(const std::vector<OffsetRow>& rows);
 
 // What a run of `zblend sweep all` found, for DIR/sweeps.md.
 struct SweepResults {
@@ -164,6 +219,8 @@ struct SweepResults {
   std::string samples_scene;
   SamplesOptions samples;
   std::vector<MethodRow> samples_rows;
+  OffsetOptions offset;
+  std::vector<OffsetRow> offset_rows;
   double seconds = 0;                 // wall time of the whole run
 };
 

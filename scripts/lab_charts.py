@@ -8,7 +8,9 @@ front is computed and tested in C++, lab/lab.cpp) and writes OUT_DIR/main.png (e
 error against cycles or fragments), OUT_DIR/main-bytes.png (against memory bytes) and
 OUT_DIR/family-FAMILY.png for each family. From lab.csv beside the summary, OUT_DIR/tile-beat.png:
 tile cycles as a share of streaming cycles against the tile port's width, over every scene, per
-method (BEAT, zb_rop's width, is marked). Each PNG is written beside its target and renamed.
+method (BEAT, zb_rop's width, is marked). From lab_lines.csv, OUT_DIR/hidden-line.png: the
+hidden-line methods against the exact line reference, per scene and on average against cost.
+Each PNG is written beside its target and renamed.
 """
 import csv
 import os
@@ -157,6 +159,58 @@ def tile_beat_chart(lab_csv, beat, out_path):
     save(fig, out_path)
 
 
+def hidden_line_chart(lines_csv, out_path):
+    """Left: per scene, each hidden-line method's hidden edge pixels drawn and visible ones
+    missing (shares of the reference's edge pixels). Right: their means against cost."""
+    with open(lines_csv, newline="") as f:
+        rows = list(csv.DictReader(f))
+    scenes = [r for r in rows if r["scene"] != "all"]
+    means = [r for r in rows if r["scene"] == "all"]
+    if not scenes:
+        return
+    methods = []
+    for r in scenes:
+        if r["method"] not in methods:
+            methods.append(r["method"])
+    names = []
+    for r in scenes:
+        if r["scene"] not in names:
+            names.append(r["scene"])
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(14, 5.5), dpi=110,
+                                 gridspec_kw={"width_ratios": [2.2, 1]})
+    width = 0.8 / (2 * len(methods))
+    colours = plt.get_cmap("tab10").colors
+    for k, m in enumerate(methods):
+        by_scene = {r["scene"]: r for r in scenes if r["method"] == m}
+        for j, (key, label, hatch) in enumerate((("hidden_drawn", "hidden drawn", ""),
+                                                  ("visible_missing", "visible missing", "//"))):
+            xs = [i + (2 * k + j - len(methods) + 0.5) * width for i in range(len(names))]
+            ys = [100 * float(by_scene[n][key]) if n in by_scene else 0 for n in names]
+            ax.bar(xs, ys, width, color=colours[k % 10], hatch=hatch, alpha=0.85 if j else 1,
+                   edgecolor="black", linewidth=0.3, label=f"{m}: {label}")
+    ax.set_xticks(range(len(names)))
+    ax.set_xticklabels(names, rotation=30, ha="right", fontsize=8)
+    ax.set_ylabel("share of the reference's edge pixels (%)")
+    ax.set_title("Per scene")
+    ax.grid(True, axis="y", alpha=0.3)
+    ax.legend(fontsize=7)
+    for k, r in enumerate(means):
+        c = float(r["cost"])
+        for key, marker in (("hidden_drawn", "o"), ("visible_missing", "s")):
+            bx.scatter([c], [100 * float(r[key])], color=colours[k % 10], marker=marker, s=48,
+                       label=f"{r['method']}: {key.replace('_', ' ')}")
+    bx.set_xscale("log")
+    bx.xaxis.set_major_formatter(EngFormatter(sep=""))
+    bx.set_xlabel(cost_label(means, "cost") + ", log")
+    bx.set_ylabel("mean share over the scenes (%)")
+    bx.set_title(f"Mean of {len(names)} scenes (each family once) against cost")
+    bx.grid(True, which="both", alpha=0.3)
+    bx.legend(fontsize=7)
+    fig.suptitle("Hidden-line methods against the exact line reference")
+    fig.tight_layout()
+    save(fig, out_path)
+
+
 def main(argv):
     if len(argv) not in (3, 4):
         print(__doc__.strip().splitlines()[2], file=sys.stderr)
@@ -179,6 +233,9 @@ def main(argv):
                   f"Family '{family}' ({scenes} scene{'s' if scenes != 1 else ''}): "
                   "error against cost",
                   os.path.join(out_dir, f"family-{path_name(family)}.png"))
+    lines_csv = os.path.join(os.path.dirname(argv[1]), "lab_lines.csv")
+    if os.path.exists(lines_csv):
+        hidden_line_chart(lines_csv, os.path.join(out_dir, "hidden-line.png"))
     lab_csv = os.path.join(os.path.dirname(argv[1]), "lab.csv")
     if os.path.exists(lab_csv):
         tile_beat_chart(lab_csv, int(argv[3]) if len(argv) == 4 else 0,

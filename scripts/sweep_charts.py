@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Charts one sweep of `zblend sweep` from its CSV (docs/sweeps.md).
 
-usage: sweep_charts.py NAME CSV PNG, NAME one of orbit, depth, layers, alpha, samples.
+usage: sweep_charts.py NAME CSV PNG, NAME one of orbit, depth, layers, alpha, samples, offset.
 The PNG is written beside its target and renamed, so a failed run leaves no partial file.
 """
 import csv
@@ -123,12 +123,94 @@ def chart_samples(rows, fig):
     fig.suptitle("Samples: error against the supersampled reference by coverage samples")
 
 
+def value_label(v):
+    """A knob's value as a tick label: 'none' for no clamp, 2^k for the large powers of two."""
+    if v == "inf":
+        return "none"
+    x = float(v)
+    if x >= 1024 and x == int(x) and int(x) & (int(x) - 1) == 0:
+        return f"2^{int(x).bit_length() - 1}"
+    return v
+
+
+def chart_offset(rows, fig):
+    """Per knob: the tilted plate's mean shares over the tilts, and each built-in's, against
+    the knob's value (a category axis: the values include 0 and 'none'). Last panel: against
+    the tilt, the first polygon offset and the plans' default."""
+    knobs = []
+    for r in rows:
+        if r["knob"] not in knobs:
+            knobs.append(r["knob"])
+    scenes = []
+    for r in rows:
+        if r["scene"] != "tilt" and r["scene"] not in scenes:
+            scenes.append(r["scene"])
+    axes = list(fig.subplots(2, 3).flat)
+    shares = (("hidden_drawn_share", "hidden drawn", "#d62728"),
+              ("visible_missing_share", "visible missing", "#1f77b4"))
+    for ax, knob in zip(axes, knobs):
+        sel = [r for r in rows if r["knob"] == knob]
+        values = []
+        for r in sel:
+            if r["value"] not in values:
+                values.append(r["value"])
+        xs = range(len(values))
+        for key, label, colour in shares:
+            tilt = [[100 * float(r[key]) for r in sel if r["value"] == v and r["scene"] == "tilt"]
+                    for v in values]
+            ax.plot(xs, [sum(t) / len(t) for t in tilt], marker="o", color=colour,
+                    label=f"plate, mean of tilts: {label}")
+            for i, sc in enumerate(scenes):
+                ys = [100 * float(r[key]) for v in values for r in sel
+                      if r["value"] == v and r["scene"] == sc]
+                ax.plot(xs, ys, marker=".", color=colour, alpha=0.6,
+                        linestyle=["--", ":", "-."][i % 3], label=f"{sc}: {label}")
+        for i, v in enumerate(values):
+            if any(r["default"] == "1" for r in sel if r["value"] == v):
+                ax.axvline(i, color="green", lw=1.5, alpha=0.6, label="the plans' default")
+        ax.set_xticks(list(xs))
+        ax.set_xticklabels([value_label(v) for v in values], rotation=45, fontsize=7)
+        ax.set_yscale("symlog", linthresh=0.1)
+        ax.set_ylim(bottom=0)
+        ax.set_xlabel({"units": "constant (units), slope 1.0, no clamp",
+                       "slope": "slope factor, 2 units, no clamp",
+                       "clamp": "clamp (units), 2 units + 1.0 x slope",
+                       "faces": "units beyond the edge's own faces"}.get(knob, knob))
+        ax.set_ylabel("share of edge pixels (%)")
+        ax.grid(True, alpha=0.3)
+    ax = axes[len(knobs)]
+    default = [(r["knob"], r["value"]) for r in rows if r["default"] == "1"][:1]
+    for (knob, value), style, name in ((("slope", "1"), "--", "2 + 1.0 x slope"),
+                                       *((d, "-", "the plans' default") for d in default)):
+        sel = [r for r in rows if r["knob"] == knob and r["value"] == value and r["scene"] == "tilt"]
+        for key, label, colour in shares:
+            ax.plot([float(r["tilt_deg"]) for r in sel], [100 * float(r[key]) for r in sel],
+                    marker=".", color=colour, linestyle=style, label=f"{name}: {label}")
+    ax.set_yscale("symlog", linthresh=0.1)
+    ax.set_ylim(bottom=0)
+    ax.set_xlabel("plate tilt (degrees)")
+    ax.set_ylabel("share of edge pixels (%)")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    handles, labels = axes[0].get_legend_handles_labels()
+    for extra in axes[1:len(knobs)]:
+        for h, l in zip(*extra.get_legend_handles_labels()):
+            if l not in labels:
+                handles.append(h)
+                labels.append(l)
+    axes[-1].axis("off")
+    axes[-1].legend(handles, labels, loc="center", fontsize=8)
+    fig.suptitle("Hidden-line offset: hidden edges drawn (leak) and visible ones missing (gaps), "
+                 "against the exact line reference")
+
+
 CHARTS = {
     "orbit": chart_orbit,
     "depth": chart_depth,
     "layers": lambda rows, fig: chart_layer_family("layers", rows, fig),
     "alpha": lambda rows, fig: chart_layer_family("alpha", rows, fig),
     "samples": chart_samples,
+    "offset": chart_offset,
 }
 
 
@@ -142,9 +224,9 @@ def main(argv):
     if not rows:
         sys.exit(f"sweep_charts: {csv_path}: no rows")
     panels = name in ("layers", "alpha", "samples")
-    fig = plt.figure(figsize=(14, 8) if panels else (11, 5.5))
+    fig = plt.figure(figsize=(17, 10) if name == "offset" else (14, 8) if panels else (11, 5.5))
     CHARTS[name](rows, fig)
-    fig.tight_layout(rect=(0, 0, 0.86 if panels else 1, 1))
+    fig.tight_layout(rect=(0, 0, 0.86 if panels else 1, 0.97 if name == "offset" else 1))
     tmp = png_path + ".tmp.png"
     try:
         fig.savefig(tmp, dpi=100)

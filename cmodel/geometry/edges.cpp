@@ -31,18 +31,52 @@ std::vector<MeshEdge> unique_edges(const Mesh& mesh) {
   const std::vector<uint32_t> welded = weld(mesh);
   std::map<std::pair<uint32_t, uint32_t>, size_t> seen;
   std::vector<MeshEdge> out;
-  for (const glm::uvec3& t : mesh.triangles) {
+  for (size_t ti = 0; ti < mesh.triangles.size(); ++ti) {
+    const glm::uvec3& t = mesh.triangles[ti];
     const uint32_t idx[3] = {t.x, t.y, t.z};
+    const uint32_t tri = static_cast<uint32_t>(ti);
     for (int k = 0; k < 3; ++k) {
       if (idx[k] >= welded.size() || idx[(k + 1) % 3] >= welded.size()) continue;
       const uint32_t a = welded[idx[k]], b = welded[idx[(k + 1) % 3]];
       if (a == b) continue;
-      if (seen.emplace(std::make_pair(std::min(a, b), std::max(a, b)), out.size()).second)
-        out.push_back({a, b});
+      const auto [it, first] =
+          seen.emplace(std::make_pair(std::min(a, b), std::max(a, b)), out.size());
+      if (first) {
+        out.push_back({a, b, {tri, kNoFace}});
+      } else {
+        MeshEdge& e = out[it->second];
+        if (e.faces[1] == kNoFace && e.faces[0] != tri) e.faces[1] = tri;
+      }
     }
   }
   return out;
 }
+
+int64_t line_side(const ScreenLine& l, int64_t px, int64_t py) {
+  const int64_t x0 = l.v[0].x, y0 = l.v[0].y;
+  return (l.v[1].x - x0) * (py - y0) - (l.v[1].y - y0) * (px - x0);
+}
+
+namespace {
+
+// Face `prim` as set up (its first fan piece), and the side of `line` it lies on.
+EdgeFace edge_face(const ScreenLine& line, uint32_t prim, const std::vector<int64_t>& piece,
+                   const std::vector<ScreenTriangle>& triangles) {
+  EdgeFace f;
+  if (prim == kNoFace || prim >= piece.size() || piece[prim] < 0) return f;
+  const ScreenTriangle& t = triangles[size_t(piece[prim])];
+  f.prim = prim;
+  int64_t farthest = 0;
+  for (int k = 0; k < 3; ++k) {
+    f.v[k] = t.v[k];
+    const int64_t e = line_side(line, t.v[k].x, t.v[k].y);
+    if ((e < 0 ? -e : e) > (farthest < 0 ? -farthest : farthest)) farthest = e;
+  }
+  f.side = farthest > 0 ? 1 : farthest < 0 ? -1 : 0;
+  return f;
+}
+
+}  // namespace
 
 uint32_t depth_slope(const ScreenTriangle& t) {
   const ScreenVertex& a = t.v[0];
@@ -64,10 +98,16 @@ uint32_t depth_slope(const ScreenTriangle& t) {
 
 std::vector<ScreenLine> setup_lines(const Scene& scene, const Viewport& vp,
                                     const std::vector<ScreenTriangle>& triangles) {
-  // Slope of each source triangle (the largest of its fan pieces when clipped).
+  // Slope of each source triangle (the largest of its fan pieces when clipped), and its first
+  // piece.
   std::vector<uint32_t> prim_slope(scene.triangle_count(), 0);
-  for (const ScreenTriangle& t : triangles)
-    if (t.prim < prim_slope.size()) prim_slope[t.prim] = std::max(prim_slope[t.prim], depth_slope(t));
+  std::vector<int64_t> piece(scene.triangle_count(), -1);
+  for (size_t i = 0; i < triangles.size(); ++i) {
+    const ScreenTriangle& t = triangles[i];
+    if (t.prim >= prim_slope.size()) continue;
+    prim_slope[t.prim] = std::max(prim_slope[t.prim], depth_slope(t));
+    if (piece[t.prim] < 0) piece[t.prim] = int64_t(i);
+  }
 
   const glm::mat4 view_proj =
       scene.camera.projection(float(vp.width) / float(vp.height)) * scene.camera.view();
@@ -114,6 +154,9 @@ std::vector<ScreenLine> setup_lines(const Scene& scene, const Viewport& vp,
         continue;
       line.depth_slope = std::max(vertex_slope[e.a], vertex_slope[e.b]);
       line.prim = id;
+      for (int k = 0; k < 2; ++k)
+        line.faces[k] = edge_face(line, e.faces[k] == kNoFace ? kNoFace : prim_base + e.faces[k],
+                                  piece, triangles);
       out.push_back(line);
     }
     prim_base += static_cast<uint32_t>(mesh.triangles.size());

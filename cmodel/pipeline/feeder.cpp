@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "raster/edge_lift.h"
+
 namespace zb {
 
 namespace {
@@ -31,10 +33,22 @@ bool feeder_rewrites(const PassState& p) {
          p.constant_color;
 }
 
+namespace {
+
+uint64_t clamped(const DepthOffset& o, uint64_t off) {
+  return o.clamp != 0 ? std::min<uint64_t>(off, o.clamp) : off;
+}
+
+}  // namespace
+
 uint64_t depth_offset_of(const DepthOffset& o, uint32_t slope) {
-  uint64_t off = uint64_t{o.units} + (uint64_t{o.slope_q8} * slope + 255) / 256;
-  if (o.clamp != 0) off = std::min<uint64_t>(off, o.clamp);
-  return off;
+  if (o.faces) return clamped(o, o.units);
+  return clamped(o, uint64_t{o.units} + (uint64_t{o.slope_q8} * slope + 255) / 256);
+}
+
+uint64_t edge_offset_of(const DepthOffset& o, const ScreenLine& l, const Fragment& f, int row0) {
+  if (!o.faces) return depth_offset_of(o, l.depth_slope);
+  return clamped(o, uint64_t{o.units} + face_lift(l, f.x, int64_t{f.y} + row0, f.z));
 }
 
 bool feed_fragment(const PassState& p, uint64_t offset, Fragment& f) {
@@ -69,14 +83,14 @@ void feed_pass(FragmentSource& source, size_t index, const PassState& pass, cons
   const bool rewrite = edges || feeder_rewrites(pass);
   buf.clear();
   buf.reserve(2 * kChunk);
-  // One primitive's fragments, buf[from..]: rewritten (or dropped) in place with `offset`; the
-  // buffer drawn once it holds a chunk.
-  auto finish = [&](size_t from, uint64_t offset) {
+  // One primitive's fragments, buf[from..]: rewritten (or dropped) in place, each with the
+  // offset `offset_of` gives it; the buffer drawn once it holds a chunk.
+  auto finish = [&](size_t from, const auto& offset_of) {
     if (rewrite) {
       size_t keep = from;
       for (size_t k = from; k < buf.size(); ++k) {
         Fragment f = buf[k];
-        if (feed_fragment(pass, offset, f)) buf[keep++] = f;
+        if (feed_fragment(pass, offset_of(f), f)) buf[keep++] = f;
       }
       buf.resize(keep);
     }
@@ -86,15 +100,25 @@ void feed_pass(FragmentSource& source, size_t index, const PassState& pass, cons
     }
   };
   if (edges) {
+    const DepthOffset& o = pass.offset;
+    const int row0 = source.row_origin();
     source.lines(buf, [&](const ScreenLine& l, size_t from) {
-      finish(from, pass.offset.any() ? depth_offset_of(pass.offset, l.depth_slope) : 0);
+      if (!o.any()) {
+        finish(from, [](const Fragment&) { return uint64_t{0}; });
+      } else if (o.faces) {  // per fragment: how far it lies behind its own faces
+        finish(from, [&](const Fragment& f) { return edge_offset_of(o, l, f, row0); });
+      } else {
+        const uint64_t off = depth_offset_of(o, l.depth_slope);
+        finish(from, [off](const Fragment&) { return off; });
+      }
     });
   } else {
     const bool offset = rewrite && pass.offset.any();
     const FragmentKind kind = is_coverage_pass(pass.rop) ? FragmentKind::kCoverage
                                                          : FragmentKind::kPixel;
     source.triangles(index, pass, kind, buf, [&](const ScreenTriangle& t, size_t from) {
-      finish(from, offset ? depth_offset_of(pass.offset, source.slope(t)) : 0);
+      const uint64_t off = offset ? depth_offset_of(pass.offset, source.slope(t)) : 0;
+      finish(from, [off](const Fragment&) { return off; });
     });
   }
   if (!buf.empty()) draw(buf.data(), buf.size());

@@ -19,8 +19,13 @@ bool pass_draws(const PassState& pass, const ScreenTriangle& t);
 // True when the pass changes or drops fragments on their way to the datapath.
 bool feeder_rewrites(const PassState& pass);
 // The depth offset of a primitive with depth slope `slope`:
-// units + ceil(slope_q8 * slope / 256), at most `clamp` when clamp > 0.
+// units + ceil(slope_q8 * slope / 256), at most `clamp` when clamp > 0. With o.faces (an edge
+// offset taken from its faces, edge_offset_of) a triangle's is units, at most `clamp`.
 uint64_t depth_offset_of(const DepthOffset& o, uint32_t slope);
+// The depth offset of an edge fragment f of line `l`, whose rows start at frame row `row0`:
+// with o.faces, units + face_lift (raster/edge_lift.h) at f's pixel, at most `clamp` when
+// clamp > 0; else depth_offset_of(o, l.depth_slope).
+uint64_t edge_offset_of(const DepthOffset& o, const ScreenLine& l, const Fragment& f, int row0);
 // Applies the pass's feeder rules to one fragment, in this order: facing filter (false:
 // dropped), constant colour, zero alpha for fragments facing the viewer, depth offset
 // (saturating at 0, the near plane).
@@ -49,6 +54,9 @@ class FragmentSource {
   virtual void lines(std::vector<Fragment>& out, const LineDone& done) = 0;
   // The depth slope of triangle `t` for the offset: its source primitive's (primitive_slopes).
   virtual uint32_t slope(const ScreenTriangle& t) = 0;
+  // The frame row of the fragments' row 0 (a band's fragments come with rows relative to the
+  // band): where an edge's offset from its faces is measured.
+  virtual int row_origin() const { return 0; }
 };
 
 using DrawFn = std::function<void(const Fragment* fragments, size_t count)>;

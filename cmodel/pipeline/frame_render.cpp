@@ -139,6 +139,7 @@ class BandRenderer final : public FragmentSource {
   }
 
   uint32_t slope(const ScreenTriangle& t) override { return job_.slopes[t.prim]; }
+  int row_origin() const override { return y0_; }
 
  private:
   void fill_rows(int y0, int y1) {

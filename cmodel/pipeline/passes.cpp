@@ -94,40 +94,50 @@ std::vector<PassPlan> make_plans() {
                    "composited by the four depth cases (nearer, farther, equal full, equal "
                    "partial)",
                    {pass("coverage", PrimFilter::kAll, less(true, BlendMode::kCoverage))}, {}});
-  // US 5,359,704, claim 1: (a) mask the frame buffer; (b, c) scan-convert the faces, updating
-  // the depth buffer "only when the obtained depth value is smaller"; (d) unmask; (e) move the
-  // display "a distance in front of visible faces"; (f) depth-test and draw "all tessellation
-  // edges". The distance is a depth offset (raster.md "Depth offset"); edges pass on LEQUAL.
-  // "... with hidden lines eliminated or displayed in a line style different from that of
-  // visible lines": hidden-line-dim draws the edges that fail the test (GREATER) dimmed first.
-  {
-    RopState faces_rop = less(true, BlendMode::kReplace);
-    faces_rop.color_mask = 0;
-    const PassState faces = pass("faces-depth-only", PrimFilter::kAll, faces_rop);
-    RopState edge_rop = less(false, BlendMode::kReplace);
-    edge_rop.depth_func = DepthFunc::kLequal;
-    PassState visible = pass("edges-visible", PrimFilter::kEdges, edge_rop);
-    visible.offset = kEdgeOffset;
-    visible.constant_color = true;
-    visible.color = kEdgeColor;
-    PassState hidden = visible;
-    hidden.name = "edges-hidden-dim";
-    hidden.rop.depth_func = DepthFunc::kGreater;
-    hidden.color = kHiddenEdgeColor;
-    plans.push_back({"hidden-line", "US 5,359,704",
-                     "faces to depth only (colour masked); every tessellation edge once, moved "
-                     "toward the viewer by a depth offset, depth LEQUAL: hidden lines removed",
-                     {faces, visible}, {}});
-    plans.push_back({"hidden-line-dim", "US 5,359,704",
-                     "hidden-line with hidden edges kept in a second style: edges failing the "
-                     "test (GREATER) drawn dimmed before the visible ones",
-                     {faces, hidden, visible}, {}});
-  }
+  plans.push_back(make_hidden_line_plan(false, kEdgeOffset));
+  plans.push_back(make_hidden_line_plan(true, kEdgeOffset));
   for (int k : kDepthPeelLayers) plans.push_back(make_depth_peel_plan(k));
   return plans;
 }
 
 }  // namespace
+
+// US 5,359,704, claim 1: (a) mask the frame buffer; (b, c) scan-convert the faces, updating
+// the depth buffer "only when the obtained depth value is smaller"; (d) unmask; (e) move the
+// display "a distance in front of visible faces"; (f) depth-test and draw "all tessellation
+// edges". The distance is a depth offset (raster.md "Depth offset"); edges pass on LEQUAL.
+// "... with hidden lines eliminated or displayed in a line style different from that of
+// visible lines": hidden-line-dim draws the edges that fail the test (GREATER) dimmed first.
+PassPlan make_hidden_line_plan(bool dim, const DepthOffset& offset) {
+  RopState faces_rop = less(true, BlendMode::kReplace);
+  faces_rop.color_mask = 0;
+  const PassState faces = pass("faces-depth-only", PrimFilter::kAll, faces_rop);
+  RopState edge_rop = less(false, BlendMode::kReplace);
+  edge_rop.depth_func = DepthFunc::kLequal;
+  PassState visible = pass("edges-visible", PrimFilter::kEdges, edge_rop);
+  visible.offset = offset;
+  visible.constant_color = true;
+  visible.color = kEdgeColor;
+  if (!dim)
+    return {"hidden-line", "US 5,359,704",
+            "faces to depth only (colour masked); every tessellation edge once, moved toward "
+            "the viewer by a depth offset, depth LEQUAL: hidden lines removed",
+            {faces, visible}, {}};
+  PassState hidden = visible;
+  hidden.name = "edges-hidden-dim";
+  hidden.rop.depth_func = DepthFunc::kGreater;
+  hidden.color = kHiddenEdgeColor;
+  return {"hidden-line-dim", "US 5,359,704",
+          "hidden-line with hidden edges kept in a second style: edges failing the test "
+          "(GREATER) drawn dimmed before the visible ones",
+          {faces, hidden, visible}, {}};
+}
+
+bool dims_hidden_edges(const PassPlan& plan) {
+  for (const PassState& p : plan.passes)
+    if (p.filter == PrimFilter::kEdges && p.rop.depth_func == DepthFunc::kGreater) return true;
+  return false;
+}
 
 // Everitt 2001, "Interactive Order-Independent Transparency": each peel finds, per pixel, the
 // nearest transparent layer strictly behind the previous peel's (the second depth compare,

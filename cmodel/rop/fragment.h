@@ -70,11 +70,14 @@ enum class FacingFilter : uint8_t { kAll, kToward, kAway };
 // Depth offset applied by the feeder (docs/datapath.md, "The feeder"):
 // offset = units + ceil(slope_q8 * slope / 256), limited to `clamp` when clamp > 0, where
 // `slope` is the primitive's depth slope (raster.md, "Depth offset"); z' = max(0, z - offset).
+// With `faces`, an edge's fragment takes, instead of the slope term, how far it lies behind
+// its own faces at the pixel centre (raster/edge_lift.h); triangles, their own faces, take 0.
 struct DepthOffset {
   uint32_t units = 0;     // constant, in units of the depth format
   uint32_t slope_q8 = 0;  // slope factor, unsigned 8.8 fixed point (256 = 1.0)
   uint32_t clamp = 0;     // largest offset, depth units; 0 = unlimited
-  bool any() const { return units != 0 || slope_q8 != 0; }
+  bool faces = false;     // edges: the lift to their own faces instead of the slope term
+  bool any() const { return units != 0 || slope_q8 != 0 || faces; }
 };
 
 // A frame operation: done by the host on the whole frame between passes (docs/datapath.md

@@ -47,8 +47,11 @@ TEST(LabCost, BytesByAccessWidth) {
 TEST(LabFairReference, AntiAliasedMethodsAgainstTheSupersampledOne) {
   using zb::lab::FairReference;
   EXPECT_EQ(zb::lab::fair_reference("coverage-aa"), FairReference::kSupersampled);
-  for (const char* m : {"opaque", "three-pass", "depth-peel-8", "hidden-line", "reference"})
+  for (const char* m : {"opaque", "three-pass", "depth-peel-8", "reference"})
     EXPECT_EQ(zb::lab::fair_reference(m), FairReference::kExact) << m;
+  // The wireframes against the exact line reference.
+  for (const char* m : {"hidden-line", "hidden-line-dim"})
+    EXPECT_EQ(zb::lab::fair_reference(m), FairReference::kLines) << m;
 }
 
 zb::lab::LabRow row(const std::string& scene, const std::string& family, const std::string& method,
@@ -161,6 +164,47 @@ TEST(LabRun, TinyCaseCsv) {
   EXPECT_EQ(cell(2, "max_abs"), "0");
   EXPECT_EQ(std::stod(cell(2, "delta_e_mean")), 0.0);
   EXPECT_EQ(std::stod(cell(2, "share_over_2")), 0.0);
+}
+
+// The hidden-line methods on parts, golden model only: their rows carry the line reference's
+// shares, stay out of the shaded summaries, and have their own.
+TEST(LabRun, HiddenLineAgainstTheLineReference) {
+  zb::lab::LabScene scene{"parts", "built-in", "parts", [] { return *zb::builtin_scene("parts"); }};
+  zb::lab::LabOptions o;
+  o.viewport = zb::Viewport{160, 120};
+  o.methods = {"opaque", "hidden-line", "hidden-line-dim"};
+  o.rtl = false;
+  const zb::lab::SceneRun run = zb::lab::run_scene(scene, o);
+  ASSERT_EQ(run.rows.size(), 3u);
+  EXPECT_FALSE(run.rows[0].lines.has_value());
+  for (const size_t i : {size_t{1}, size_t{2}}) {
+    const zb::lab::LabRow& r = run.rows[i];
+    ASSERT_TRUE(r.lines.has_value()) << r.method;
+    EXPECT_EQ(r.fair, zb::lab::FairReference::kLines);
+    EXPECT_GT(r.lines->edge_pixels, 500u);
+    EXPECT_GT(r.lines->visible_pixels, r.lines->edge_pixels / 4);
+    EXPECT_LT(r.lines->visible_pixels, r.lines->edge_pixels);
+    // Small against the wireframe's own reference, where the shaded one gives tens of units.
+    EXPECT_LT(r.lines->hidden_drawn_share() + r.lines->visible_missing_share(), 0.05);
+    EXPECT_LT(r.fair_error().delta_e_mean, r.error.delta_e_mean);
+  }
+  // hidden-line-dim draws every edge pixel one way or the other, visible ones last: the
+  // same pixels are in the visible style.
+  EXPECT_EQ(run.rows[1].lines->hidden_drawn, run.rows[2].lines->hidden_drawn);
+  EXPECT_EQ(run.rows[1].lines->visible_missing, run.rows[2].lines->visible_missing);
+
+  const std::vector<zb::lab::MethodSummary> s = zb::lab::summarize(run.rows);
+  for (const auto& m : s) EXPECT_EQ(m.method, "opaque");
+  const std::vector<zb::lab::LineSummary> ls = zb::lab::line_summary(run.rows);
+  ASSERT_EQ(ls.size(), 4u);  // two scene rows, two means
+  EXPECT_EQ(ls[2].scene, zb::lab::kAllFamilies);
+  EXPECT_EQ(ls[2].method, "hidden-line");
+  EXPECT_DOUBLE_EQ(ls[2].hidden_drawn, run.rows[1].lines->hidden_drawn_share());
+  const std::vector<std::string> csv = split(zb::lab::line_summary_csv(ls), '\n');
+  EXPECT_EQ(csv.size(), 5u);
+  const std::vector<std::string> lab = split(zb::lab::lab_csv(run.rows), '\n');
+  EXPECT_NE(lab[0].find("hidden_drawn_share,visible_missing_share"), std::string::npos);
+  EXPECT_NE(lab[2].find(",lines,"), std::string::npos);
 }
 
 TEST(LabReport, RelativeLinks) {

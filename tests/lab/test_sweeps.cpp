@@ -331,6 +331,62 @@ TEST(SamplesSweep, AntiAliasingHelpsWithoutSeamsAndSeamsLeakMore) {
   EXPECT_GT(rmse("parts", "coverage-aa", 16), rmse("parts", "coverage-aa", 1));
 }
 
+// --- hidden-line offset ---
+
+// A larger offset draws a superset of the edge fragments (every fragment's depth only falls),
+// so along each knob the hidden edges drawn never fall and the visible ones missing never rise;
+// steep faces need the slope term or their own faces; the old offset leaks on cad and the
+// default does not; the default sits at its knob's knee.
+TEST(OffsetSweep, MonotoneKnobsGapsAtSteepTiltsLeakOnCad) {
+  OffsetOptions o;
+  o.viewport = Viewport{160, 120};
+  o.tilts = {0, 60, 85, 89, 89.9};
+  o.scenes = {"cad"};
+  const std::vector<OffsetRow> rows = offset_sweep(o);
+  const std::vector<OffsetSetting> settings = offset_settings();
+  ASSERT_EQ(rows.size(), settings.size() * 6);
+  auto at = [&](const std::string& knob, double value, const std::string& scene, double tilt) {
+    for (const OffsetRow& r : rows)
+      if (r.knob == knob && r.value == value && r.scene == scene &&
+          (scene != "tilt" || r.tilt == tilt))
+        return r.error;
+    ADD_FAILURE() << knob << " " << value << " " << scene << " " << tilt;
+    return LineError{};
+  };
+  for (const OffsetRow& r : rows) {
+    EXPECT_GT(r.error.edge_pixels, 0u) << r.scene << " " << r.tilt;
+    // The next value of the same knob on the same case.
+    for (size_t i = 0; i + 1 < settings.size(); ++i) {
+      if (settings[i].knob != r.knob || settings[i].value != r.value) continue;
+      if (settings[i + 1].knob != r.knob) break;
+      const LineError next = at(r.knob, settings[i + 1].value, r.scene, r.tilt);
+      EXPECT_GE(next.hidden_drawn, r.error.hidden_drawn) << r.knob << " " << r.value << " " << r.scene << " " << r.tilt;
+      EXPECT_LE(next.visible_missing, r.error.visible_missing) << r.knob << " " << r.value << " " << r.scene << " " << r.tilt;
+    }
+  }
+  // Without the slope term the steep plates' edges sink into their faces.
+  EXPECT_GT(at("slope", 0, "tilt", 89).visible_missing, at("slope", 1, "tilt", 89).visible_missing);
+  EXPECT_GT(at("slope", 0, "tilt", 89).visible_missing_share(), 0.02);
+  // The first polygon offset lifts cad's sphere silhouette through the box: the leak.
+  EXPECT_GT(at("slope", 1, "cad", 0).hidden_drawn_share(), 0.01);
+  EXPECT_LT(at("faces", kEdgeOffset.units, "cad", 0).hidden_drawn_share(), 0.002);
+  // The default is the knee of its knob.
+  ASSERT_TRUE(kEdgeOffset.faces);
+  EXPECT_EQ(offset_knee(rows, "faces"), double(kEdgeOffset.units));
+  for (const OffsetRow& r : rows)
+    EXPECT_EQ(r.is_default, r.knob == "faces" && r.value == kEdgeOffset.units);
+}
+
+TEST(OffsetSweep, TiltedPlateSceneTurnsItsPlate) {
+  // At 0 degrees the plate faces the eye; at 89.9 it is seen almost edge-on.
+  const RasterizedScene flat = rasterize_scene(tilted_plate_scene(0), kSmall);
+  const RasterizedScene steep = rasterize_scene(tilted_plate_scene(89.9f), kSmall);
+  EXPECT_EQ(flat.lines.size(), steep.lines.size());
+  EXPECT_GT(flat.fragments.size(), 2 * steep.fragments.size());
+  const std::string csv = offset_csv({OffsetRow{"clamp", INFINITY, false, "cad", NAN, {}}});
+  EXPECT_NE(csv.find("\nclamp,inf,0,cad,,"), std::string::npos) << csv;
+}
+
 // --- output ---
 
 TEST(SweepOutput, CsvHasAHeaderAndARowEach) {

@@ -8,8 +8,11 @@
 
 #include "geometry/edges.h"
 #include "support/layers.h"
+#include "raster/edge_lift.h"
 #include "raster/lines.h"
+#include "metrics/line_metrics.h"
 #include "pipeline/passes.h"
+#include "reference/line_reference.h"
 #include "rop/rop.h"
 #include "scene/builtin_scenes.h"
 #include "scene/meshes.h"
@@ -140,19 +143,23 @@ zb::RasterizedScene edge_scene(const std::vector<std::pair<uint32_t, uint32_t>>&
   return rs;
 }
 
-zb::RenderResult run(const zb::RasterizedScene& rs, const char* method) {
+zb::RenderResult run(const zb::RasterizedScene& rs, const zb::PassPlan& plan) {
   zb::GoldenRop rop;
-  return zb::render(rs, *zb::find_plan(method), rop);
+  return zb::render(rs, plan, rop);
 }
 
-TEST(HiddenLine, OffsetDecidesVisibleAndHidden) {
-  ASSERT_EQ(zb::kEdgeOffset.units, 2u);
-  ASSERT_EQ(zb::kEdgeOffset.slope_q8, 256u);
+zb::RenderResult run(const zb::RasterizedScene& rs, const char* method) {
+  return run(rs, *zb::find_plan(method));
+}
+
+TEST(HiddenLine, SlopeOffsetDecidesVisibleAndHidden) {
+  ASSERT_EQ(zb::kEdgeSlopeOffset.units, 2u);
+  ASSERT_EQ(zb::kEdgeSlopeOffset.slope_q8, 256u);
   // offset = 2 + ceil(256 * slope / 256) = 2 + slope. Row 0: z 1000, slope 0 -> 998 <= 1000:
   // visible. Row 1: z 1302, slope 300 -> 1000: visible (LEQUAL). Row 2: z 1303, slope 300 ->
   // 1001: hidden. Row 3: z 1, slope 5 -> saturates at 0: visible.
   const auto rs = edge_scene({{1000, 0}, {1302, 300}, {1303, 300}, {1, 5}});
-  const auto r = run(rs, "hidden-line");
+  const auto r = run(rs, zb::make_hidden_line_plan(false, zb::kEdgeSlopeOffset));
   const Rgba8 white{255, 255, 255, 255};
   for (int x = 0; x < 4; ++x) {
     EXPECT_EQ(r.framebuffer.color_at(x, 0), zb::kEdgeColor);
@@ -161,7 +168,7 @@ TEST(HiddenLine, OffsetDecidesVisibleAndHidden) {
     EXPECT_EQ(r.framebuffer.color_at(x, 3), zb::kEdgeColor);
     for (int y = 0; y < 4; ++y) EXPECT_EQ(r.framebuffer.depth_at(x, y), 1000u) << "edges write no depth";
   }
-  const auto d = run(rs, "hidden-line-dim");
+  const auto d = run(rs, zb::make_hidden_line_plan(true, zb::kEdgeSlopeOffset));
   for (int x = 0; x < 4; ++x) {
     EXPECT_EQ(d.framebuffer.color_at(x, 1), zb::kEdgeColor);
     EXPECT_EQ(d.framebuffer.color_at(x, 2), zb::kHiddenEdgeColor);
@@ -170,6 +177,116 @@ TEST(HiddenLine, OffsetDecidesVisibleAndHidden) {
   EXPECT_EQ(r.passes[0].color_writes, 0u);
   EXPECT_EQ(r.passes[1].fragments_in, 16u);
   EXPECT_EQ(r.passes[1].fragments_passed, 12u);
+  // A clamp (Vulkan's depthBiasClamp) limits the whole offset: at most 150 units, row 1's
+  // 1302 - 150 = 1152 fails.
+  zb::DepthOffset clamped = zb::kEdgeSlopeOffset;
+  clamped.clamp = 150;
+  const auto c = run(rs, zb::make_hidden_line_plan(false, clamped));
+  EXPECT_EQ(c.framebuffer.color_at(0, 0), zb::kEdgeColor);
+  EXPECT_EQ(c.framebuffer.color_at(0, 1), white);
+}
+
+// The offset from the edge's own faces (the default: no units beyond them): a line fragment at
+// z takes min(z, its faces' plane at the centre), then `units` less. The face here is the
+// frame-wide layer at 1000.
+TEST(HiddenLine, FacesOffsetLiftsEdgesToTheirOwnFaces) {
+  ASSERT_TRUE(zb::kEdgeOffset.faces) << "the plans' default";
+  zb::RasterizedScene rs = zbtest::layer_scene({{1000, {10, 20, 30, 255}}}, {255, 255, 255, 255});
+  const zb::ScreenTriangle& layer = rs.triangles[0];
+  // Row y's line at depth z, its one face the layer on `side` (0: no face).
+  auto line_at = [&](int row, int32_t y, uint32_t z, int side) {
+    zb::ScreenLine l;
+    l.v[0] = {kPx / 2, y, z, 0};
+    l.v[1] = {3 * kPx + kPx / 2, y, z, 0};
+    l.prim = uint32_t(row);
+    if (side != 0) {
+      l.faces[0].prim = layer.prim;
+      for (int k = 0; k < 3; ++k) l.faces[0].v[k] = layer.v[k];
+      l.faces[0].side = side;
+    }
+    return l;
+  };
+  // Row 0: along the centres (y = 0.5), 40 behind its face: lifted to 1000, drawn (LEQUAL).
+  // Row 1: the same depth without a face: 1040, hidden. Row 2: along y = 2.0 (its fragments'
+  // centres below the line, side +1) with its face above (side -1): the face is not on the
+  // centre's side, so no lift: hidden. Row 3: in front of its face (900): kept, visible.
+  zb::add_lines(rs, {line_at(0, kPx / 2, 1040, -1), line_at(1, kPx + kPx / 2, 1040, 0),
+                     line_at(2, 2 * kPx, 1040, -1), line_at(3, 3 * kPx + kPx / 2, 900, 1)});
+  const zb::PassState& edges = zb::find_plan("hidden-line")->passes[1];
+  const std::vector<Fragment> fed = zb::pass_fragments(rs, edges);
+  ASSERT_EQ(fed.size(), 16u);
+  ASSERT_EQ(zb::kEdgeOffset.units, 0u);
+  const uint32_t want[4] = {1000, 1040, 1040, 900};
+  for (const Fragment& f : fed) EXPECT_EQ(f.z, want[f.y]) << f.x << "," << f.y;
+  const auto r = run(rs, "hidden-line");
+  const Rgba8 white{255, 255, 255, 255};
+  for (int x = 0; x < 4; ++x) {
+    EXPECT_EQ(r.framebuffer.color_at(x, 0), zb::kEdgeColor);
+    EXPECT_EQ(r.framebuffer.color_at(x, 1), white);
+    EXPECT_EQ(r.framebuffer.color_at(x, 2), white);
+    EXPECT_EQ(r.framebuffer.color_at(x, 3), zb::kEdgeColor);
+  }
+  // Row 2's face on the centre's side: lifted. With 2 units more, 2 in front of it.
+  zb::add_lines(rs, {line_at(2, 2 * kPx, 1040, 1)});
+  for (const Fragment& f : zb::pass_fragments(rs, edges)) EXPECT_EQ(f.z, 1000u);
+  zb::PassState two = edges;
+  two.offset.units = 2;
+  for (const Fragment& f : zb::pass_fragments(rs, two)) EXPECT_EQ(f.z, 998u);
+}
+
+// own_face_depth by hand. Face F below y = 1 (pixels): (0, 1), (8, 1) at 1000, (0, 9) at 200,
+// so 1000 - 100 (y - 1); face G above it: (0, 1), (8, 1) at 1000, (0, -7) at 200. The edge is
+// their shared side, from (0.5, 1) to (7.5, 1). At pixel (3, 1) the centre (3.5, 1.5) lies
+// below: F's plane there is 950 (weights 2097152, 1835008, 262144 of A = 4194304:
+// (3932160000 + 52428800 + 2097152) / 4194304 = 950.5, floored). At (3, 0), above: G's, 950.
+TEST(HiddenLine, OwnFaceDepthByHand) {
+  auto v = [](double x, double y, uint32_t z) {
+    return ScreenVertex{int32_t(x * kPx), int32_t(y * kPx), z, 0};
+  };
+  zb::ScreenLine l;
+  l.v[0] = v(0.5, 1, 1000);
+  l.v[1] = v(7.5, 1, 1000);
+  const ScreenVertex f[3] = {v(0, 1, 1000), v(8, 1, 1000), v(0, 9, 200)};
+  const ScreenVertex g[3] = {v(0, 1, 1000), v(8, 1, 1000), v(0, -7, 200)};
+  for (int k = 0; k < 3; ++k) {
+    l.faces[0].v[k] = f[k];
+    l.faces[1].v[k] = g[k];
+  }
+  l.faces[0].prim = 10;
+  l.faces[0].side = 1;
+  l.faces[1].prim = 11;
+  l.faces[1].side = -1;
+  EXPECT_EQ(zb::line_side(l, 3 * kPx + kPx / 2, kPx + kPx / 2) > 0, true);
+  EXPECT_EQ(zb::own_face_depth(l, 3, 1, 7777), 950u);
+  EXPECT_EQ(zb::own_face_depth(l, 3, 0, 7777), 950u);
+  EXPECT_EQ(zb::face_lift(l, 3, 1, 1000), 50u);
+  EXPECT_EQ(zb::face_lift(l, 3, 1, 900), 0u);
+  l.faces[1].prim = zb::kNoFace;  // no face above: nothing to lift to there
+  EXPECT_EQ(zb::own_face_depth(l, 3, 0, 7777), 7777u);
+}
+
+// setup_lines hands each edge its own faces: a quad's diagonal has both triangles, one on each
+// side; a side has one.
+TEST(HiddenLine, EdgesCarryTheirOwnFaces) {
+  zb::Scene s;
+  s.materials.push_back({"m", {100, 100, 100, 255}});
+  s.objects.push_back({"quad", zb::make_quad(1.0f, 1.0f), 0, glm::mat4(1.0f)});
+  s.camera.eye = {0, 0, 4};
+  s.camera.near = 1;
+  s.camera.far = 10;
+  const zb::RasterizedScene rs = zb::rasterize_scene(s, {64, 48, 24});
+  ASSERT_EQ(rs.lines.size(), 5u);
+  const zb::ScreenLine& diag = rs.lines[2];  // (2, 0), in triangles (0 1 2) and (0 2 3)
+  EXPECT_EQ(diag.faces[0].prim, 0u);
+  EXPECT_EQ(diag.faces[1].prim, 1u);
+  EXPECT_EQ(diag.faces[0].side, -diag.faces[1].side);
+  EXPECT_NE(diag.faces[0].side, 0);
+  EXPECT_EQ(rs.lines[0].faces[0].prim, 0u);  // (0, 1): the first triangle only
+  EXPECT_EQ(rs.lines[0].faces[1].prim, zb::kNoFace);
+  EXPECT_EQ(rs.lines[3].faces[0].prim, 1u);  // (2, 3): the second
+  const auto e = zb::unique_edges(zb::make_quad(1, 1));
+  EXPECT_EQ(e[2].faces[0], 0u);
+  EXPECT_EQ(e[2].faces[1], 1u);
 }
 
 TEST(HiddenLine, SharedEdgeDrawnOnce) {
@@ -241,6 +358,42 @@ TEST(HiddenLine, NoGapsOnTiltedFaces) {
       edge_base += uint32_t(edges.size());
     }
   }
+}
+
+// The silhouette leak (issue 18): on cad the sphere lies wholly inside the box, so every edge
+// pixel of the sphere's is hidden by the box's front faces. The polygon offset lifted the
+// sphere's silhouette edges (their faces seen edge-on, slopes without bound) through them; the
+// plans' offset keeps them behind. Measured against the exact line reference at the README's
+// 400x300.
+TEST(HiddenLine, NoSilhouetteLeakOnCad) {
+  const zb::Scene cad = *zb::builtin_scene("cad");
+  const zb::RasterizedScene rs = zb::rasterize_scene(cad, {400, 300, 24});
+  const zb::LineVisibility truth = zb::line_visibility(rs);
+  // The inner shell's edges (the second object's), every pixel of which is hidden.
+  const uint32_t box_edges = uint32_t(zb::unique_edges(cad.objects[0].mesh).size());
+  const uint32_t sphere_edges = uint32_t(zb::unique_edges(cad.objects[1].mesh).size());
+  std::vector<bool> sphere_px(size_t(400 * 300), false);
+  for (const Fragment& f : rs.line_fragments)
+    if (f.prim >= box_edges && f.prim < box_edges + sphere_edges)
+      sphere_px[size_t(f.y) * 400 + f.x] = true;
+  size_t sphere_hidden = 0;
+  for (size_t p = 0; p < sphere_px.size(); ++p)
+    sphere_hidden += sphere_px[p] && truth.pixels[p] == zb::EdgePixel::kHidden;
+  ASSERT_GT(sphere_hidden, 1000u);
+  auto leaked = [&](const zb::Framebuffer& fb) {
+    size_t n = 0;
+    for (size_t p = 0; p < sphere_px.size(); ++p)
+      n += sphere_px[p] && truth.pixels[p] == zb::EdgePixel::kHidden && fb.color[p] == zb::kEdgeColor;
+    return n;
+  };
+  const auto old = run(rs, zb::make_hidden_line_plan(false, zb::kEdgeSlopeOffset));
+  const auto now = run(rs, "hidden-line");
+  EXPECT_GT(leaked(old.framebuffer), 100u) << "the polygon offset's leak, as the README showed it";
+  EXPECT_EQ(leaked(now.framebuffer), 0u) << "sphere edges drawn through the box's front";
+  const zb::LineError e = zb::compare_lines(now.framebuffer, truth, zb::kEdgeColor);
+  EXPECT_LT(e.hidden_drawn_share(), 0.002);
+  EXPECT_LT(e.visible_missing_share(), 0.01);
+  EXPECT_GT(zb::compare_lines(old.framebuffer, truth, zb::kEdgeColor).hidden_drawn_share(), 0.01);
 }
 
 TEST(HiddenLine, HiddenEdgesOfTheBackBlockAreGoneOrDimmed) {
