@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "raster/edge_lift.h"
 
 namespace zb {
 
@@ -46,9 +45,8 @@ uint64_t depth_offset_of(const DepthOffset& o, uint32_t slope) {
   return clamped(o, uint64_t{o.units} + (uint64_t{o.slope_q8} * slope + 255) / 256);
 }
 
-uint64_t edge_offset_of(const DepthOffset& o, const ScreenLine& l, const Fragment& f, int row0) {
-  if (!o.faces) return depth_offset_of(o, l.depth_slope);
-  return clamped(o, uint64_t{o.units} + face_lift(l, f.x, int64_t{f.y} + row0, f.z));
+uint64_t edge_offset_of(const DepthOffset& o, const FaceLift& lift, const Fragment& f, int row0) {
+  return clamped(o, uint64_t{o.units} + lift.lift(f.x, int64_t{f.y} + row0, f.z));
 }
 
 bool feed_fragment(const PassState& p, uint64_t offset, Fragment& f) {
@@ -106,7 +104,8 @@ void feed_pass(FragmentSource& source, size_t index, const PassState& pass, cons
       if (!o.any()) {
         finish(from, [](const Fragment&) { return uint64_t{0}; });
       } else if (o.faces) {  // per fragment: how far it lies behind its own faces
-        finish(from, [&](const Fragment& f) { return edge_offset_of(o, l, f, row0); });
+        const FaceLift lift(l);
+        finish(from, [&](const Fragment& f) { return edge_offset_of(o, lift, f, row0); });
       } else {
         const uint64_t off = depth_offset_of(o, l.depth_slope);
         finish(from, [off](const Fragment&) { return off; });

@@ -10,6 +10,7 @@
 
 #include "geometry/edges.h"
 #include "geometry/geometry.h"
+#include "raster/edge_lift.h"
 #include "rop/fragment.h"
 
 namespace zb {
@@ -22,10 +23,10 @@ bool feeder_rewrites(const PassState& pass);
 // units + ceil(slope_q8 * slope / 256), at most `clamp` when clamp > 0. With o.faces (an edge
 // offset taken from its faces, edge_offset_of) a triangle's is units, at most `clamp`.
 uint64_t depth_offset_of(const DepthOffset& o, uint32_t slope);
-// The depth offset of an edge fragment f of line `l`, whose rows start at frame row `row0`:
-// with o.faces, units + face_lift (raster/edge_lift.h) at f's pixel, at most `clamp` when
-// clamp > 0; else depth_offset_of(o, l.depth_slope).
-uint64_t edge_offset_of(const DepthOffset& o, const ScreenLine& l, const Fragment& f, int row0);
+// The depth offset, with o.faces, of an edge fragment f whose rows start at frame row `row0`:
+// units + the lift to its line's own faces (raster/edge_lift.h) at f's pixel, at most `clamp`
+// when clamp > 0. (Without o.faces an edge's offset is depth_offset_of its depth slope.)
+uint64_t edge_offset_of(const DepthOffset& o, const FaceLift& lift, const Fragment& f, int row0);
 // Applies the pass's feeder rules to one fragment, in this order: facing filter (false:
 // dropped), constant colour, zero alpha for fragments facing the viewer, depth offset
 // (saturating at 0, the near plane).
