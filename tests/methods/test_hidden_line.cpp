@@ -265,16 +265,21 @@ TEST(HiddenLine, OwnFaceDepthByHand) {
   EXPECT_EQ(zb::own_face_depth(l, 3, 0, 7777), 7777u);
 }
 
-// setup_lines hands each edge its own faces: a quad's diagonal has both triangles, one on each
-// side; a side has one.
-TEST(HiddenLine, EdgesCarryTheirOwnFaces) {
+// A unit quad facing the camera at 64x48: two triangles sharing the diagonal, 5 unique edges.
+zb::RasterizedScene facing_quad() {
   zb::Scene s;
   s.materials.push_back({"m", {100, 100, 100, 255}});
   s.objects.push_back({"quad", zb::make_quad(1.0f, 1.0f), 0, glm::mat4(1.0f)});
   s.camera.eye = {0, 0, 4};
   s.camera.near = 1;
   s.camera.far = 10;
-  const zb::RasterizedScene rs = zb::rasterize_scene(s, {64, 48, 24});
+  return zb::rasterize_scene(s, {64, 48, 24});
+}
+
+// setup_lines hands each edge its own faces: a quad's diagonal has both triangles, one on each
+// side; a side has one.
+TEST(HiddenLine, EdgesCarryTheirOwnFaces) {
+  const zb::RasterizedScene rs = facing_quad();
   ASSERT_EQ(rs.lines.size(), 5u);
   const zb::ScreenLine& diag = rs.lines[2];  // (2, 0), in triangles (0 1 2) and (0 2 3)
   EXPECT_EQ(diag.faces[0].prim, 0u);
@@ -290,14 +295,7 @@ TEST(HiddenLine, EdgesCarryTheirOwnFaces) {
 }
 
 TEST(HiddenLine, SharedEdgeDrawnOnce) {
-  // A quad facing the camera: two triangles sharing the diagonal; 5 unique edges.
-  zb::Scene s;
-  s.materials.push_back({"m", {100, 100, 100, 255}});
-  s.objects.push_back({"quad", zb::make_quad(1.0f, 1.0f), 0, glm::mat4(1.0f)});
-  s.camera.eye = {0, 0, 4};
-  s.camera.near = 1;
-  s.camera.far = 10;
-  const zb::RasterizedScene rs = zb::rasterize_scene(s, {64, 48, 24});
+  const zb::RasterizedScene rs = facing_quad();
   ASSERT_EQ(rs.lines.size(), 5u);
   size_t want = 0;
   for (const auto& l : rs.lines) {
