@@ -339,15 +339,18 @@ module zb_conf_tb #(
 `endif
   endtask
 
-  task automatic write_plane(input string name);
+  // One plane's signature: plane 0 colour, 1 depth, 2 coverage (2 hex digits), 3 peel.
+  task automatic write_plane(input int plane);
     int fd;
+    string name;
+    logic [31:0] v;
+    name = plane == 0 ? "color" : plane == 1 ? "depth" : plane == 2 ? "coverage" : "peel";
     fd = $fopen({out_dir, "/got.", name, ".hex"}, "w");
     if (fd == 0) fail($sformatf("cannot write %s/got.%s.hex (does the folder exist?)", out_dir, name));
     for (int unsigned p = 0; p < width * height; p++) begin
-      if (name == "color")         $fdisplay(fd, "%08x", fb_color[p]);
-      else if (name == "depth")    $fdisplay(fd, "%08x", fb_depth[p]);
-      else if (name == "coverage") $fdisplay(fd, "%02x", fb_cov[p]);
-      else                         $fdisplay(fd, "%08x", fb_peel[p]);
+      v = plane == 0 ? fb_color[p] : plane == 1 ? fb_depth[p] : plane == 2 ? 32'(fb_cov[p]) : fb_peel[p];
+      if (plane == 2) $fdisplay(fd, "%02x", v[7:0]);
+      else            $fdisplay(fd, "%08x", v);
     end
     $fclose(fd);
   endtask
@@ -427,10 +430,7 @@ module zb_conf_tb #(
                        pc, opcode(w)));
       end
     end
-    write_plane("color");
-    write_plane("depth");
-    write_plane("coverage");
-    write_plane("peel");
+    for (int plane = 0; plane < 4; plane++) write_plane(plane);
     $display("zb_conf: done: %s: %0dx%0d, %0d passes, %0d fragments, %0d tile loads, %0d cycles",
              stream_path, width, height, n_passes, n_frags, n_tiles, $time / 10);
     $finish;
