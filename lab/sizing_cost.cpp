@@ -45,8 +45,8 @@ int MethodCost::best_tile(int depth_bits, int coverage_samples) const {
 }
 
 void CostCounter::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
-                              int coverage_samples) {
-  inner_.begin_frame(width, height, depth_bits, clear_color, coverage_samples);
+                              int coverage_samples, const WboitFormat& wboit) {
+  inner_.begin_frame(width, height, depth_bits, clear_color, coverage_samples, wboit);
   width_ = width;
   height_ = height;
   cost_ = MethodCost{};

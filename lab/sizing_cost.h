@@ -58,7 +58,7 @@ class CostCounter final : public Backend {
   const char* name() const override { return inner_.name(); }
   using Backend::begin_frame;
   void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
-                   int coverage_samples) override;
+                   int coverage_samples, const WboitFormat& wboit) override;
   void label_pass(const std::string& name) override { inner_.label_pass(name); }
   void begin_pass(const RopState& state) override;
   using Backend::draw;

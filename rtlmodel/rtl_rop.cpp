@@ -658,7 +658,7 @@ RtlRop::RtlRop(RtlOptions options) : impl_(std::make_unique<Impl>(std::move(opti
 RtlRop::~RtlRop() = default;
 
 void RtlRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
-                         int coverage_samples) {
+                         int coverage_samples, const WboitFormat& wboit) {
   if (coverage_samples != kRtlCoverageSamples)
     throw std::invalid_argument("rtl backend: coverage samples " +
                                 std::to_string(coverage_samples) + ", the Verilated zb_rop has " +
@@ -669,7 +669,7 @@ void RtlRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_colo
   if (width < 1 || height < 1 || width > 65535 || height > 65535)
     throw std::invalid_argument("rtl backend: frame size " + std::to_string(width) + "x" +
                                 std::to_string(height) + " outside 1..65535");
-  impl_->fb = Framebuffer(width, height, depth_bits, clear_color, coverage_samples);
+  impl_->fb = Framebuffer(width, height, depth_bits, clear_color, coverage_samples, wboit);
   impl_->tiles = TileStates(width, height, kRtlTileW, depth_bits, clear_color);
   impl_->in_pass = false;
 }

@@ -77,7 +77,7 @@ class RtlRop final : public Backend {
   const char* name() const override { return "rtl"; }
   using Backend::begin_frame;
   void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
-                   int coverage_samples) override;
+                   int coverage_samples, const WboitFormat& wboit) override;
   void begin_pass(const RopState& state) override;
   using Backend::draw;
   void draw(const Fragment* fragments, size_t count) override;

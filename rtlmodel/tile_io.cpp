@@ -101,6 +101,9 @@ void TileStates::frame_op(const FrameOp& op) {
                              resolve_under(c.b, op.value.b, c.a), resolve_under(c.a, op.value.a, c.a)});
         }
         break;
+      case FrameOpKind::kResolveWboit:  // colour made per pixel from the accumulation
+        t[0].cleared = false;
+        break;
     }
 }
 

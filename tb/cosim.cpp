@@ -44,9 +44,9 @@ Cosim::Cosim(CosimOptions options)
     : opt_(with_sink(std::move(options), &scoreboard_)), rtl_(opt_.rtl) {}
 
 void Cosim::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
-                        int coverage_samples) {
-  golden_.begin_frame(width, height, depth_bits, clear_color, coverage_samples);
-  rtl_.begin_frame(width, height, depth_bits, clear_color, coverage_samples);
+                        int coverage_samples, const WboitFormat& wboit) {
+  golden_.begin_frame(width, height, depth_bits, clear_color, coverage_samples, wboit);
+  rtl_.begin_frame(width, height, depth_bits, clear_color, coverage_samples, wboit);
   ++frame_no_;
   pass_in_frame_ = 0;
 }

@@ -14,10 +14,14 @@ namespace zb {
 constexpr int kMaxFrameSize = 8192;
 
 struct Viewport {
+  Viewport(int w = 0, int h = 0, int bits = kDefaultDepthBits,
+           int samples = kDefaultCoverageSamples, WboitFormat wb = {})
+      : width(w), height(h), depth_bits(bits), coverage_samples(samples), wboit(wb) {}
   int width = 0;
   int height = 0;
   int depth_bits = kDefaultDepthBits;
   int coverage_samples = kDefaultCoverageSamples;  // N of the sample pattern (raster.md "Coverage")
+  WboitFormat wboit;  // accumulation, revealage and weight widths (datapath.md "Accumulate blend")
 };
 
 // A vertex in window coordinates: x right, y down, 8 fractional bits; pixel centres at +0.5.

@@ -4,7 +4,8 @@ namespace zb {
 
 std::vector<PassStats> run_plan(const PassPlan& plan, const Viewport& vp, Rgba8 background,
                                 FragmentSource& source, Backend& backend) {
-  backend.begin_frame(vp.width, vp.height, vp.depth_bits, background, vp.coverage_samples);
+  backend.begin_frame(vp.width, vp.height, vp.depth_bits, background, vp.coverage_samples,
+                      vp.wboit);
   std::vector<PassStats> stats;
   stats.reserve(plan.passes.size());
   std::vector<Fragment> buffer;

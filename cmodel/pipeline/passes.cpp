@@ -94,6 +94,19 @@ std::vector<PassPlan> make_plans() {
                    "composited by the four depth cases (nearer, farther, equal full, equal "
                    "partial)",
                    {pass("coverage", PrimFilter::kAll, less(true, BlendMode::kCoverage))}, {}});
+  // McGuire and Bavoil 2013, "Weighted Blended Order-Independent Transparency": the opaque
+  // pass, then every transparent fragment in front of the opaque depth added to the
+  // accumulation (premultiplied colour and alpha, each times the weight a * F(z)) and its
+  // 1 - a multiplied into the revealage; the resolve puts the accumulation's average over the
+  // opaque colour by the revealage (docs/datapath.md "7. Accumulate blend").
+  plans.push_back({"wboit", "McGuire and Bavoil 2013",
+                   "opaque; transparent added to the accumulation weighted by alpha and depth, "
+                   "revealage multiplied by 1 - alpha, z-write off; resolve: the weighted "
+                   "average over the opaque colour by the revealage",
+                   {pass("opaque", PrimFilter::kOpaque, less(true, BlendMode::kReplace)),
+                    pass("transparent-accumulate", PrimFilter::kTransparent,
+                         less(false, BlendMode::kAccumulate))},
+                   {FrameOp{FrameOpKind::kResolveWboit, Rgba8{}, 0, false}}});
   plans.push_back(make_hidden_line_plan(false, kEdgeOffset));
   plans.push_back(make_hidden_line_plan(true, kEdgeOffset));
   for (int k : kDepthPeelLayers) plans.push_back(make_depth_peel_plan(k));

@@ -36,6 +36,19 @@ void apply_frame_op(Framebuffer& fb, const FrameOp& op) {
         c = {resolve_under(c.r, op.value.r, c.a), resolve_under(c.g, op.value.g, c.a),
              resolve_under(c.b, op.value.b, c.a), resolve_under(c.a, op.value.a, c.a)};
       return;
+    case FrameOpKind::kResolveWboit: {
+      const uint32_t one = wboit_reveal_one(fb.wboit.rev_bits);
+      for (size_t i = 0; i < fb.color.size(); ++i) {
+        const std::array<uint32_t, 4>& acc = fb.accum[i];
+        const uint32_t r = fb.reveal[i];
+        Rgba8& c = fb.color[i];
+        c = {resolve_wboit_channel(acc[0], acc[3], c.r, r, one),
+             resolve_wboit_channel(acc[1], acc[3], c.g, r, one),
+             resolve_wboit_channel(acc[2], acc[3], c.b, r, one),
+             resolve_wboit_channel(acc[3], acc[3], c.a, r, one)};
+      }
+      return;
+    }
   }
   throw std::invalid_argument("frame op: unknown kind " + std::to_string(unsigned(op.kind)));
 }
@@ -46,6 +59,7 @@ const char* to_string(FrameOpKind k) {
     case FrameOpKind::kClearDepth: return "clear-depth";
     case FrameOpKind::kCopyDepthToPeel: return "copy-depth-to-peel";
     case FrameOpKind::kResolveUnder: return "resolve-under";
+    case FrameOpKind::kResolveWboit: return "resolve-wboit";
   }
   return "?";
 }

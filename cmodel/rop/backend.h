@@ -33,9 +33,14 @@ class Backend {
   virtual ~Backend() = default;
   virtual const char* name() const = 0;
   // Starts a frame: buffers of the given size cleared to `clear_color`, the far depth and
-  // coverage 0, for a sample pattern of `coverage_samples` (valid_coverage_samples) per pixel.
+  // coverage 0, for a sample pattern of `coverage_samples` (valid_coverage_samples) per pixel;
+  // accumulation 0 and revealage 1.0 in the widths of `wboit` (valid_wboit_format).
   virtual void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
-                           int coverage_samples) = 0;
+                           int coverage_samples, const WboitFormat& wboit) = 0;
+  void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
+                   int coverage_samples) {
+    begin_frame(width, height, depth_bits, clear_color, coverage_samples, WboitFormat{});
+  }
   void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color) {
     begin_frame(width, height, depth_bits, clear_color, kDefaultCoverageSamples);
   }

@@ -55,4 +55,54 @@ constexpr uint8_t blend_coverage(uint8_t p, uint8_t d, uint32_t w, int n) {
   return static_cast<uint8_t>((w * p + (nn - w) * d + nn / 2) >> coverage_log2(n));
 }
 
+// Weighted blended OIT (docs/datapath.md "7. Accumulate blend"), the paper's equation 10,
+// w = a * max(1e-2, 3e3 * (1 - d)^3), in fixed point: the depth weight
+// F = max(1, u^3 >> (24 - W)), u the top 8 bits of ZMAX - z (1 - d), so F runs from 1 to
+// 2^W - 1 (the paper's range is 3e5, W = 18).
+constexpr uint32_t wboit_depth_weight(uint32_t z, int depth_bits, int weight_bits) {
+  const uint32_t u = ((depth_max(depth_bits) - z) >> (depth_bits - 8)) & 0xffu;
+  const uint32_t f = (u * u * u) >> (24 - weight_bits);
+  return f == 0 ? 1u : f;
+}
+
+// The accumulation term's right shift: a full-weight term (p = a = 255, F = 2^W) keeps 4 bits
+// of headroom below 2^A, 16 such layers before a channel saturates.
+constexpr int wboit_term_shift(const WboitFormat& f) {
+  const int s = f.weight_bits + 20 - f.acc_bits;
+  return s > 0 ? s : 0;
+}
+
+// One channel's term, p * w >> S with w = a * F: p = m(s, a) for R, G, B, p = a for A.
+constexpr uint32_t wboit_term(uint8_t p, uint8_t a, uint32_t weight, int shift) {
+  return static_cast<uint32_t>((uint64_t{p} * (uint64_t{a} * weight)) >> shift);
+}
+
+// acc + term, saturated at 2^A - 1.
+constexpr uint32_t wboit_accumulate(uint32_t acc, uint32_t term, int acc_bits) {
+  const uint64_t top = (uint64_t{1} << acc_bits) - 1u;
+  const uint64_t v = uint64_t{acc} + term;
+  return static_cast<uint32_t>(v > top ? top : v);
+}
+
+// Revealage's 1.0, its clear value.
+constexpr uint32_t wboit_reveal_one(int rev_bits) { return (uint32_t{1} << rev_bits) - 1u; }
+
+// Revealage times 1 - a: (r * t + 128) >> 8 with t = k + (k >> 7), k = 255 - a, which maps
+// 0..255 onto 0..256 (a = 0 keeps r exactly, a = 255 makes it 0).
+constexpr uint32_t wboit_reveal(uint32_t r, uint8_t a) {
+  const uint32_t k = 255u - a;
+  const uint32_t t = k + (k >> 7);
+  return (r * t + 128u) >> 8;
+}
+
+// The resolve of one colour channel (frame operation 4): the weighted average
+// avg = (acc * 255 + acc_a / 2) / acc_a (0 when acc_a = 0; the alpha channel's avg is 255)
+// over the opaque colour c by the revealage r of 1.0 = one:
+// (avg * (one - r) + c * r + one / 2) / one.
+constexpr uint8_t resolve_wboit_channel(uint32_t acc, uint32_t acc_a, uint8_t c, uint32_t r,
+                                        uint32_t one) {
+  const uint64_t avg = acc_a == 0 ? 0 : (uint64_t{acc} * 255u + acc_a / 2) / acc_a;
+  return static_cast<uint8_t>((avg * (one - r) + uint64_t{c} * r + one / 2) / one);
+}
+
 }  // namespace zb

@@ -47,4 +47,28 @@ constexpr int coverage_log2(int n) {
 // ceil(log2(N + 1)): bits of a count 0..N.
 constexpr int coverage_bits(int n) { return coverage_log2(n + 1); }
 
+// Weighted blended OIT (docs/datapath.md "7. Accumulate blend"): the widths of the
+// accumulation and revealage planes and the weight's range, the RTL's ACC_BITS, REV_BITS and
+// WEIGHT_BITS. One accumulation channel is acc_bits wide (unsigned, saturating); revealage is
+// a rev_bits unorm (all ones = 1.0); the depth weight F runs from 1 to 2^weight_bits - 1.
+struct WboitFormat {
+  int acc_bits = 16;
+  int rev_bits = 8;
+  int weight_bits = 8;
+  friend bool operator==(const WboitFormat& x, const WboitFormat& y) {
+    return x.acc_bits == y.acc_bits && x.rev_bits == y.rev_bits &&
+           x.weight_bits == y.weight_bits;
+  }
+  friend bool operator!=(const WboitFormat& x, const WboitFormat& y) { return !(x == y); }
+};
+constexpr int kMinAccBits = 8, kMaxAccBits = 32;
+constexpr int kMinRevBits = 8, kMaxRevBits = 16;
+constexpr int kMinWeightBits = 0, kMaxWeightBits = 16;
+
+constexpr bool valid_wboit_format(const WboitFormat& f) {
+  return f.acc_bits >= kMinAccBits && f.acc_bits <= kMaxAccBits && f.rev_bits >= kMinRevBits &&
+         f.rev_bits <= kMaxRevBits && f.weight_bits >= kMinWeightBits &&
+         f.weight_bits <= kMaxWeightBits;
+}
+
 }  // namespace zb

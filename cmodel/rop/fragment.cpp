@@ -43,6 +43,7 @@ const char* to_string(BlendMode b) {
     case BlendMode::kAdditive: return "additive";
     case BlendMode::kCoverage: return "coverage";
     case BlendMode::kUnder: return "under";
+    case BlendMode::kAccumulate: return "accumulate";
   }
   return "?";
 }

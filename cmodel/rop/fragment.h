@@ -37,8 +37,10 @@ enum class BlendMode : uint8_t {
                   // (docs/datapath.md "Coverage blend"); a coverage pass (raster.md "Coverage")
   kUnder = 4,     // front-to-back into a premultiplied colour plane (depth peeling), t = 255 - A_d:
                   // C' = min(255, C_d + m(m(s, a), t)) per RGB, A' = min(255, A_d + m(a, t))
+  kAccumulate = 5,  // weighted blended OIT into the accumulation and revealage planes
+                    // (docs/datapath.md "7. Accumulate blend"); the colour plane is kept
 };
-constexpr unsigned kBlendModes = 5;
+constexpr unsigned kBlendModes = 6;
 
 // Colour write mask bits.
 enum : uint8_t { kMaskR = 1, kMaskG = 2, kMaskB = 4, kMaskA = 8, kMaskRgba = 15 };
@@ -87,8 +89,9 @@ enum class FrameOpKind : uint8_t {
   kClearDepth = 1,   // every depth := depth
   kCopyDepthToPeel = 2,  // peel := depth
   kResolveUnder = 3,     // colour := min(255, C + m(value, 255 - A)) per channel (value = bg)
+  kResolveWboit = 4,     // colour := the accumulation's average over it by the revealage
 };
-constexpr unsigned kFrameOpKinds = 4;
+constexpr unsigned kFrameOpKinds = 5;
 
 struct FrameOp {
   FrameOpKind kind = FrameOpKind::kClearColor;
@@ -121,7 +124,7 @@ struct PassState {
 // [12] peel_test.
 constexpr int kStateBits = 13;
 uint16_t pack_state(const RopState& s);
-// False when `bits` is not a valid state (bits above kStateBits set, or a blend code above 4).
+// False when `bits` is not a valid state (bits above kStateBits set, or a blend code above 5).
 bool unpack_state(uint16_t bits, RopState& out);
 
 const char* to_string(DepthFunc f);

@@ -3,9 +3,11 @@
 #pragma once
 
 #include <cstddef>
+#include <array>
 #include <cstdint>
 #include <vector>
 
+#include "blend.h"
 #include "fixed.h"
 
 namespace zb {
@@ -23,15 +25,24 @@ struct Framebuffer {
   // Peel depth plane (depth peeling, docs/datapath.md "Peel test"): read-only during a pass,
   // written only by the frame operation CopyDepthToPeel; cleared to 0 with the frame.
   std::vector<uint32_t> peel;
+  // Weighted blended OIT (docs/datapath.md "7. Accumulate blend"): per pixel four
+  // accumulation channels (R, G, B, A; wboit.acc_bits wide, cleared to 0) and the revealage
+  // (wboit.rev_bits unorm, cleared to 1.0); written only by accumulate passes.
+  WboitFormat wboit;
+  std::vector<std::array<uint32_t, 4>> accum;
+  std::vector<uint32_t> reveal;
 
   Framebuffer() = default;
   Framebuffer(int w, int h, int bits, Rgba8 clear_color,
-              int samples = kDefaultCoverageSamples)
+              int samples = kDefaultCoverageSamples, WboitFormat wb = {})
       : width(w), height(h), depth_bits(bits), coverage_samples(samples),
         color(static_cast<size_t>(w) * h, clear_color),
         depth(static_cast<size_t>(w) * h, depth_max(bits)),
         coverage(static_cast<size_t>(w) * h, 0),
-        peel(static_cast<size_t>(w) * h, 0) {}
+        peel(static_cast<size_t>(w) * h, 0),
+        wboit(wb),
+        accum(static_cast<size_t>(w) * h, std::array<uint32_t, 4>{}),
+        reveal(static_cast<size_t>(w) * h, wboit_reveal_one(wb.rev_bits)) {}
 
   size_t index(int x, int y) const { return static_cast<size_t>(y) * width + x; }
   Rgba8 color_at(int x, int y) const { return color[index(x, y)]; }

@@ -19,6 +19,7 @@ Rgba8 blend(BlendMode mode, Rgba8 s, Rgba8 d) {
       return {blend_additive(s.r, s.a, d.r), blend_additive(s.g, s.a, d.g),
               blend_additive(s.b, s.a, d.b), blend_additive(s.a, s.a, d.a)};
     case BlendMode::kCoverage:  // needs the depths and coverages: composite_coverage
+    case BlendMode::kAccumulate:  // writes the accumulation planes: accumulate_wboit
       return s;
     case BlendMode::kUnder:
       return {blend_under(s.r, s.a, d.r, d.a), blend_under(s.g, s.a, d.g, d.a),
@@ -70,6 +71,21 @@ CoveragePixel composite_coverage(uint32_t z, Rgba8 p, int k, uint32_t zs, Rgba8 
   return out;
 }
 
+// The paper's accumulation, C_i * w and a_i * w added, revealage times (1 - a_i), with
+// C_i = m(s, a) premultiplied and w = a * F(z).
+WboitPixel accumulate_wboit(uint32_t z, Rgba8 c, const std::array<uint32_t, 4>& acc,
+                            uint32_t reveal, int depth_bits, const WboitFormat& format) {
+  const uint32_t weight = c.a * wboit_depth_weight(z, depth_bits, format.weight_bits);
+  const int shift = wboit_term_shift(format);
+  const uint8_t p[4] = {mul_unorm8(c.r, c.a), mul_unorm8(c.g, c.a), mul_unorm8(c.b, c.a), c.a};
+  WboitPixel out;
+  for (int ch = 0; ch < 4; ++ch)
+    out.acc[ch] = wboit_accumulate(acc[ch], wboit_term(p[ch], c.a, weight, shift),
+                                   format.acc_bits);
+  out.reveal = wboit_reveal(reveal, c.a);
+  return out;
+}
+
 Rgba8 resolve_coverage(Rgba8 stored, int /*coverage*/, int /*n*/) { return stored; }
 
 Rgba8 apply_color_mask(uint8_t mask, Rgba8 blended, Rgba8 d) {
@@ -78,12 +94,20 @@ Rgba8 apply_color_mask(uint8_t mask, Rgba8 blended, Rgba8 d) {
 }
 
 void GoldenRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
-                            int coverage_samples) {
+                            int coverage_samples, const WboitFormat& wboit) {
   if (!valid_coverage_samples(coverage_samples))
     throw std::invalid_argument("golden: coverage samples " + std::to_string(coverage_samples) +
                                 " is not a power of two from 1 to " +
                                 std::to_string(kMaxCoverageSamples));
-  fb_ = Framebuffer(width, height, depth_bits, clear_color, coverage_samples);
+  if (!valid_wboit_format(wboit))
+    throw std::invalid_argument(
+        "golden: accumulation " + std::to_string(wboit.acc_bits) + " bits, revealage " +
+        std::to_string(wboit.rev_bits) + " bits, weight " + std::to_string(wboit.weight_bits) +
+        " bits: out of range (accumulation " + std::to_string(kMinAccBits) + ".." +
+        std::to_string(kMaxAccBits) + ", revealage " + std::to_string(kMinRevBits) + ".." +
+        std::to_string(kMaxRevBits) + ", weight " + std::to_string(kMinWeightBits) + ".." +
+        std::to_string(kMaxWeightBits) + ")");
+  fb_ = Framebuffer(width, height, depth_bits, clear_color, coverage_samples, wboit);
 }
 
 void GoldenRop::begin_pass(const RopState& state) {
@@ -127,6 +151,16 @@ PixelWrites GoldenRop::process(const Fragment& f) {
 
   const bool reads_dest = state_.blend != BlendMode::kReplace || state_.color_mask != kMaskRgba;
   if (reads_dest) ++stats_.color_reads;
+  if (state_.blend == BlendMode::kAccumulate) {
+    // The accumulation word is read and written whole; the colour plane is kept.
+    const WboitPixel p =
+        accumulate_wboit(f.z, f.color, fb_.accum[i], fb_.reveal[i], fb_.depth_bits, fb_.wboit);
+    fb_.accum[i] = w.acc = p.acc;
+    fb_.reveal[i] = w.reveal = p.reveal;
+    w.accum = true;
+    ++stats_.color_writes;
+    return w;
+  }
   const Rgba8 d = fb_.color[i];
   fb_.color[i] = w.rgba = apply_color_mask(state_.color_mask, blend(state_.blend, f.color, d), d);
   w.color = true;

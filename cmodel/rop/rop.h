@@ -2,6 +2,7 @@
 // test, blend, write mask, write. Bit-exact specification of the RTL; see docs/datapath.md.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "backend.h"
@@ -53,17 +54,29 @@ Rgba8 resolve_coverage(Rgba8 stored, int coverage, int n);
 // lock-step scoreboard (tb/scoreboard.h) holds the RTL's retire port to.
 struct PixelWrites {
   bool depth = false, coverage = false, color = false;
+  bool accum = false;  // accumulate mode: the accumulation and revealage written
   uint32_t z = 0;     // the depth written
   uint8_t cov = 0;    // the coverage count written
   Rgba8 rgba;         // the colour written, after the write mask
+  std::array<uint32_t, 4> acc{};  // the accumulation written (R, G, B, A)
+  uint32_t reveal = 0;            // the revealage written
 };
+
+// The accumulation and revealage of a pixel after an accumulate-mode fragment of depth z and
+// colour c (docs/datapath.md "7. Accumulate blend").
+struct WboitPixel {
+  std::array<uint32_t, 4> acc{};
+  uint32_t reveal = 0;
+};
+WboitPixel accumulate_wboit(uint32_t z, Rgba8 c, const std::array<uint32_t, 4>& acc,
+                            uint32_t reveal, int depth_bits, const WboitFormat& format);
 
 class GoldenRop final : public Backend {
  public:
   const char* name() const override { return "golden"; }
   using Backend::begin_frame;
   void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
-                   int coverage_samples) override;
+                   int coverage_samples, const WboitFormat& wboit) override;
   void begin_pass(const RopState& state) override;
   using Backend::draw;
   void draw(const Fragment* fragments, size_t count) override;
