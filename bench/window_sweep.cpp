@@ -29,10 +29,10 @@ class Sweep final : public Backend {
  public:
   const char* name() const override { return "window-sweep"; }
   using Backend::begin_frame;
-  void begin_frame(int w, int h, int d, Rgba8 c, int s) override {
+  void begin_frame(int w, int h, int d, Rgba8 c, int s, const WboitFormat& f) override {
     width_ = w;
     height_ = h;
-    golden_.begin_frame(w, h, d, c, s);
+    golden_.begin_frame(w, h, d, c, s, f);
   }
   void begin_pass(const RopState& s) override {
     frags_.clear();

@@ -14,7 +14,7 @@ namespace zb {
 constexpr int kMaxFrameSize = 8192;
 
 struct Viewport {
-  Viewport(int w = 0, int h = 0, int bits = kDefaultDepthBits,
+  constexpr Viewport(int w = 0, int h = 0, int bits = kDefaultDepthBits,
            int samples = kDefaultCoverageSamples, WboitFormat wb = {})
       : width(w), height(h), depth_bits(bits), coverage_samples(samples), wboit(wb) {}
   int width = 0;

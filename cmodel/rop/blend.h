@@ -72,9 +72,9 @@ constexpr int wboit_term_shift(const WboitFormat& f) {
   return s > 0 ? s : 0;
 }
 
-// One channel's term, p * w >> S with w = a * F: p = m(s, a) for R, G, B, p = a for A.
-constexpr uint32_t wboit_term(uint8_t p, uint8_t a, uint32_t weight, int shift) {
-  return static_cast<uint32_t>((uint64_t{p} * (uint64_t{a} * weight)) >> shift);
+// One channel's term, p * w >> S, w = a * F the weight: p = m(s, a) for R, G, B, p = a for A.
+constexpr uint32_t wboit_term(uint8_t p, uint32_t weight, int shift) {
+  return static_cast<uint32_t>((uint64_t{p} * weight) >> shift);
 }
 
 // acc + term, saturated at 2^A - 1.

@@ -80,7 +80,7 @@ WboitPixel accumulate_wboit(uint32_t z, Rgba8 c, const std::array<uint32_t, 4>& 
   const uint8_t p[4] = {mul_unorm8(c.r, c.a), mul_unorm8(c.g, c.a), mul_unorm8(c.b, c.a), c.a};
   WboitPixel out;
   for (int ch = 0; ch < 4; ++ch)
-    out.acc[ch] = wboit_accumulate(acc[ch], wboit_term(p[ch], c.a, weight, shift),
+    out.acc[ch] = wboit_accumulate(acc[ch], wboit_term(p[ch], weight, shift),
                                    format.acc_bits);
   out.reveal = wboit_reveal(reveal, c.a);
   return out;

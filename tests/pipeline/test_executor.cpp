@@ -18,7 +18,7 @@ class Recorder final : public Backend {
  public:
   const char* name() const override { return "recorder"; }
   using Backend::begin_frame;
-  void begin_frame(int w, int h, int, Rgba8, int) override {
+  void begin_frame(int w, int h, int, Rgba8, int, const WboitFormat&) override {
     log.push_back("frame " + std::to_string(w) + "x" + std::to_string(h));
   }
   void label_pass(const std::string& n) override { log.push_back("label " + n); }
