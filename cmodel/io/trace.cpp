@@ -16,8 +16,9 @@ namespace {
 
 constexpr char kMagic[8] = {'Z', 'B', 'T', 'R', 'A', 'C', 'E', '\0'};
 // 2: coverage samples in the header, coverage per fragment; 3: 13-bit pass state (3-bit blend,
-// peel_test), frame operations before each pass and after the last.
-constexpr uint32_t kVersion = 3;
+// peel_test), frame operations before each pass and after the last; 4: the accumulation,
+// revealage and weight widths in the header (blend 5, frame operation 4).
+constexpr uint32_t kVersion = 4;
 constexpr uint32_t kMaxFrameOps = 64;
 constexpr uint32_t kMaxPasses = 1024;
 constexpr uint32_t kMaxNameLength = 256;
@@ -95,6 +96,7 @@ Trace make_trace(const RasterizedScene& rs, const PassPlan& plan) {
   t.height = rs.viewport.height;
   t.depth_bits = rs.viewport.depth_bits;
   t.coverage_samples = rs.viewport.coverage_samples;
+  t.wboit = rs.viewport.wboit;
   t.clear_color = rs.background;
   for (const PassState& p : plan.passes) {
     TracePass tp{p.name, {}, p.rop, pass_fragments(rs, p)};
@@ -113,6 +115,7 @@ std::string serialize_trace(const Trace& t) {
   put_u32(out, uint32_t(t.height));
   put_u32(out, uint32_t(t.depth_bits));
   put_u32(out, uint32_t(t.coverage_samples));
+  for (int v : {t.wboit.acc_bits, t.wboit.rev_bits, t.wboit.weight_bits}) put_u8(out, uint8_t(v));
   for (uint8_t c : {t.clear_color.r, t.clear_color.g, t.clear_color.b, t.clear_color.a}) put_u8(out, c);
   put_u32(out, uint32_t(t.passes.size()));
   for (const TracePass& p : t.passes) {
@@ -166,6 +169,16 @@ Trace parse_trace(const std::string& bytes, const std::string& name) {
     r.fail(at_samples, fmt::format("coverage samples {} is not a power of two from 1 to {}",
                                    samples, kMaxCoverageSamples));
   t.coverage_samples = int(samples);
+  const size_t at_wboit = r.offset();
+  t.wboit.acc_bits = int(r.get(1, "the accumulation width"));
+  t.wboit.rev_bits = int(r.get(1, "the revealage width"));
+  t.wboit.weight_bits = int(r.get(1, "the weight width"));
+  if (!valid_wboit_format(t.wboit))
+    r.fail(at_wboit, fmt::format("accumulation {}, revealage {}, weight {} bits: out of range "
+                                 "({} to {}, {} to {}, {} to {})",
+                                 t.wboit.acc_bits, t.wboit.rev_bits, t.wboit.weight_bits,
+                                 kMinAccBits, kMaxAccBits, kMinRevBits, kMaxRevBits,
+                                 kMinWeightBits, kMaxWeightBits));
   t.clear_color.r = uint8_t(r.get(1, "the clear colour"));
   t.clear_color.g = uint8_t(r.get(1, "the clear colour"));
   t.clear_color.b = uint8_t(r.get(1, "the clear colour"));
@@ -234,7 +247,7 @@ Trace read_trace(const std::string& path) {
 
 std::vector<PassStats> replay_trace(const Trace& trace, Backend& backend) {
   backend.begin_frame(trace.width, trace.height, trace.depth_bits, trace.clear_color,
-                      trace.coverage_samples);
+                      trace.coverage_samples, trace.wboit);
   std::vector<PassStats> stats;
   for (const TracePass& p : trace.passes) {
     for (const FrameOp& op : p.frame_ops) backend.frame_op(op);

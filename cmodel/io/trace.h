@@ -24,6 +24,7 @@ struct Trace {
   int height = 0;
   int depth_bits = kDefaultDepthBits;
   int coverage_samples = kDefaultCoverageSamples;
+  WboitFormat wboit;  // accumulation, revealage and weight widths
   Rgba8 clear_color;
   std::vector<TracePass> passes;
   std::vector<FrameOp> final_ops;  // after the last pass

@@ -23,16 +23,18 @@ TEST(Trace, StatePackingRoundTripsEveryValidWord) {
     ++valid;
     EXPECT_EQ(zb::pack_state(s), bits);
   }
-  // Blend codes 0..4 of the 3-bit field are valid (4 is under): 5 of 8.
-  EXPECT_EQ(valid, 5 << (zb::kStateBits - 3));
+  // Blend codes 0..5 of the 3-bit field are valid (5 is accumulate): 6 of 8.
+  EXPECT_EQ(valid, 6 << (zb::kStateBits - 3));
   zb::RopState s;
   EXPECT_FALSE(zb::unpack_state(1u << zb::kStateBits, s));
 }
 
 TEST(Trace, RoundTripAndReplayMatchRender) {
-  const zb::Trace t = small_trace();
+  zb::Trace t = small_trace();
   ASSERT_EQ(t.passes.size(), 3u);
+  t.wboit = {20, 12, 5};
   const zb::Trace back = zb::parse_trace(zb::serialize_trace(t), "mem");
+  EXPECT_EQ(back.wboit, t.wboit);
   ASSERT_EQ(back.passes.size(), t.passes.size());
   EXPECT_EQ(back.width, t.width);
   EXPECT_EQ(back.clear_color, t.clear_color);
@@ -72,7 +74,8 @@ TEST(Trace, EveryTruncationIsRejected) {
 }
 
 // Offsets into the header: magic 0, version 8, width 12, height 16, depth bits 20, coverage
-// samples 24, clear colour 28, pass count 32.
+// samples 24, accumulation, revealage and weight widths 28, 29, 30, clear colour 31, pass
+// count 35.
 TEST(Trace, DamagedFieldsNameTheProblem) {
   const std::string good = zb::serialize_trace(small_trace());
   auto patched = [&](size_t at, std::initializer_list<uint8_t> b) {
@@ -86,13 +89,16 @@ TEST(Trace, DamagedFieldsNameTheProblem) {
   expect_rejected(patched(20, {40}), "depth width 40");
   expect_rejected(patched(24, {3}), "coverage samples 3");
   expect_rejected(patched(24, {32}), "coverage samples 32");
-  // First pass: name length at 36, name, frame op count (0 here), then the state word.
-  const size_t name_len = uint8_t(good[36]);
-  expect_rejected(patched(40 + name_len, {0xff}), "frame ops is more than");
-  expect_rejected(patched(44 + name_len, {0x00, 0x20}), "invalid pass state");
-  expect_rejected(patched(44 + name_len, {0xa0, 0x00}), "invalid pass state");  // blend 5
-  expect_rejected(patched(46 + name_len, {0xff, 0xff, 0xff, 0xff}), "fragments announced");
-  const size_t first_fragment = 54 + name_len;
+  expect_rejected(patched(28, {7}), "accumulation 7");
+  expect_rejected(patched(29, {17}), "revealage 17");
+  expect_rejected(patched(30, {17}), "weight 17");
+  // First pass: name length at 39, name, frame op count (0 here), then the state word.
+  const size_t name_len = uint8_t(good[39]);
+  expect_rejected(patched(43 + name_len, {0xff}), "frame ops is more than");
+  expect_rejected(patched(47 + name_len, {0x00, 0x20}), "invalid pass state");
+  expect_rejected(patched(47 + name_len, {0xc0, 0x00}), "invalid pass state");  // blend 6
+  expect_rejected(patched(49 + name_len, {0xff, 0xff, 0xff, 0xff}), "fragments announced");
+  const size_t first_fragment = 57 + name_len;
   expect_rejected(patched(first_fragment, {0xff, 0x00}), "outside the 4x4 frame");
   expect_rejected(patched(first_fragment + 4, {0xff, 0xff, 0xff, 0xff}), "exceeds 24 bits");
   // Flags: bit 0 front, bits 8..15 coverage (at most the header's 16), the rest reserved.
