@@ -157,7 +157,9 @@ void run_plan(const RenderOptions& o, const RasterizedScene& rs, const PassPlan&
   run.passes = plan.passes.size();
   run.total = PassStats{};
   try {
-    for (const PassStats& p : render(rs, plan, *b.backend).passes) *run.total += p;
+    const std::vector<PassStats> passes = render(rs, plan, *b.backend).passes;
+    for (const PassStats& p : passes) *run.total += p;
+    run.traffic = plan_traffic(passes, plan, rs.viewport);
   } catch (const MismatchError& e) {
     fmt::print(stderr, "{}\n", e.what());
     run.mismatches = std::max<uint64_t>(1, b.cosim ? b.cosim->mismatches() : 0);
@@ -177,6 +179,7 @@ size_t run_golden(const RenderOptions& o, const Scene& scene, const Viewport& vp
   run.passes = plan.passes.size();
   run.total = PassStats{};
   for (const PassStats& p : result.passes) *run.total += p;
+  run.traffic = plan_traffic(result.passes, plan, vp);
   run.image = std::move(result.framebuffer);
   return result.triangles;
 }
@@ -241,7 +244,7 @@ void write_stats(const RenderOptions& o, const Scene& scene, const Viewport& vp,
         {"fragments", fragments},
         {"fragment_bytes", fragment_bytes},
         {"peak_rss_bytes", peak_rss_bytes()}}}};
-  write_or_fail(write_file_atomic(o.stats, stats_json(runs, o.frame.depth_bits, header.dump())));
+  write_or_fail(write_file_atomic(o.stats, stats_json(runs, header.dump())));
 }
 
 void run_render(const RenderOptions& o) {
@@ -320,7 +323,7 @@ void run_render(const RenderOptions& o) {
         o.out.empty() ? (fs::path(o.out_dir) / (r.method + ".png")).string() : o.out, r.image));
   if (!o.out_dir.empty())
     write_or_fail(write_file_atomic((fs::path(o.out_dir) / "summary.csv").string(),
-                                    summary_csv(runs, o.frame.depth_bits)));
+                                    summary_csv(runs)));
   if (!o.stats.empty()) write_stats(o, scene, vp, rs, drawn, runs);
   if (!o.quiet) print_table(runs);
   if (mismatches) throw VerificationError("RTL and golden model differ (report above)");

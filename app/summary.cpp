@@ -9,23 +9,13 @@
 namespace zb::app {
 namespace {
 
-uint64_t depth_bytes(int depth_bits) { return static_cast<uint64_t>((depth_bits + 7) / 8); }
-
-uint64_t bytes_read(const PassStats& s, int depth_bits) {
-  return s.color_reads * 4 + s.depth_reads * depth_bytes(depth_bits);
-}
-
-uint64_t bytes_written(const PassStats& s, int depth_bits) {
-  return s.color_writes * 4 + s.depth_writes * depth_bytes(depth_bits);
-}
-
 std::string psnr_text(double psnr) {
   return std::isinf(psnr) ? "inf" : fmt::format("{:.2f}", psnr);
 }
 
 }  // namespace
 
-std::string summary_csv(const std::vector<MethodRun>& runs, int depth_bits) {
+std::string summary_csv(const std::vector<MethodRun>& runs) {
   std::string csv =
       "method,passes,fragments,reads,writes,bytes_read,bytes_written,rmse,psnr_db,max_abs,"
       "share_over_2,share_over_16,delta_e_mean,delta_e_max,host_ms,rtl_cycles,"
@@ -37,7 +27,7 @@ std::string summary_csv(const std::vector<MethodRun>& runs, int depth_bits) {
       const PassStats& s = *r.total;
       cost = fmt::format("{},{},{},{},{},{}", r.passes, s.fragments_in,
                          s.color_reads + s.depth_reads, s.color_writes + s.depth_writes,
-                         bytes_read(s, depth_bits), bytes_written(s, depth_bits));
+                         r.traffic.read, r.traffic.written);
       if (r.rtl)
         rtl = fmt::format("{},{},{},{}", s.cycles + r.tile_io_cycles, s.cycles, r.tile_io_cycles,
                           r.compared ? std::to_string(r.mismatches) : "");
@@ -79,8 +69,7 @@ void print_table(const std::vector<MethodRun>& runs) {
   }
 }
 
-std::string stats_json(const std::vector<MethodRun>& runs, int depth_bits,
-                       const std::string& header_json) {
+std::string stats_json(const std::vector<MethodRun>& runs, const std::string& header_json) {
   nlohmann::json j = nlohmann::json::parse(header_json);
   j["methods"] = nlohmann::json::array();
   for (const MethodRun& r : runs) {
@@ -106,8 +95,8 @@ std::string stats_json(const std::vector<MethodRun>& runs, int depth_bits,
                     {"color_writes", s.color_writes},
                     {"depth_reads", s.depth_reads},
                     {"depth_writes", s.depth_writes}};
-      m["bytes_read"] = bytes_read(s, depth_bits);
-      m["bytes_written"] = bytes_written(s, depth_bits);
+      m["bytes_read"] = r.traffic.read;
+      m["bytes_written"] = r.traffic.written;
       if (r.rtl) {
         m["rtl"] = {{"cycles", s.cycles + r.tile_io_cycles},
                     {"stream_cycles", s.cycles},

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "pipeline/render.h"
 #include "rop/backend.h"
 #include "metrics/metrics.h"
 
@@ -15,6 +16,7 @@ struct MethodRun {
   std::string method;
   Framebuffer image;
   std::optional<PassStats> total;  // none for the reference
+  Traffic traffic;                 // memory traffic of the passes (render.h)
   size_t passes = 0;
   std::optional<ImageError> error;  // none under --no-error
   double host_ms = 0;
@@ -24,9 +26,9 @@ struct MethodRun {
   uint64_t mismatches = 0;         // pixels where they differ
 };
 
-std::string summary_csv(const std::vector<MethodRun>& runs, int depth_bits);
+std::string summary_csv(const std::vector<MethodRun>& runs);
 void print_table(const std::vector<MethodRun>& runs);
 // The stats JSON of a render; `header` holds scene, size and such.
-std::string stats_json(const std::vector<MethodRun>& runs, int depth_bits, const std::string& header_json);
+std::string stats_json(const std::vector<MethodRun>& runs, const std::string& header_json);
 
 }  // namespace zb::app

@@ -68,14 +68,6 @@ FairReference fair_reference(const std::string& method) {
   return aa ? FairReference::kSupersampled : FairReference::kExact;
 }
 
-uint64_t bytes_read(const PassStats& s, int depth_bits) {
-  return s.color_reads * 4 + s.depth_reads * static_cast<uint64_t>((depth_bits + 7) / 8);
-}
-
-uint64_t bytes_written(const PassStats& s, int depth_bits) {
-  return s.color_writes * 4 + s.depth_writes * static_cast<uint64_t>((depth_bits + 7) / 8);
-}
-
 SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
   const auto start = Clock::now();
   const Viewport& vp = o.viewport;
@@ -112,8 +104,9 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
       row.has_cost = true;
       row.passes = plan->passes.size();
       row.golden = sum_passes(r);
-      row.bytes_read = bytes_read(row.golden, vp.depth_bits);
-      row.bytes_written = bytes_written(row.golden, vp.depth_bits);
+      const Traffic traffic = plan_traffic(r.passes, *plan, vp);
+      row.bytes_read = traffic.read;
+      row.bytes_written = traffic.written;
       image = std::move(r.framebuffer);
       // The cost model watches the RTL's run (or, without it, a golden one): one render
       // gives both, and the cost model's cycles stay its own (IssueSchedule, TileStates).

@@ -41,11 +41,6 @@ enum class FairReference { kExact, kSupersampled, kLines };
 const char* to_string(FairReference r);
 FairReference fair_reference(const std::string& method);
 
-// Memory traffic in bytes: 4 per colour access (RGBA8), the depth width rounded up to whole
-// bytes per depth access.
-uint64_t bytes_read(const PassStats& s, int depth_bits);
-uint64_t bytes_written(const PassStats& s, int depth_bits);
-
 // Tile port widths (pixels a beat) the lab's cost model prices every method at, zb_rop's BEAT
 // among them: the width's effect on tile cycles (charts/tile-beat.png).
 inline constexpr std::array<int, 5> kLabBeats{2, 4, 8, 16, 32};

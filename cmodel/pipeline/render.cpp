@@ -107,6 +107,26 @@ std::vector<Fragment> pass_fragments(const RasterizedScene& rs, const PassState&
   return out;
 }
 
+Traffic pass_traffic(const PassStats& s, const RopState& state, const Viewport& vp) {
+  const uint64_t color = state.blend == BlendMode::kAccumulate
+                             ? uint64_t(4 * vp.wboit.acc_bits + vp.wboit.rev_bits + 7) / 8
+                             : 4;
+  const uint64_t depth = uint64_t(vp.depth_bits + 7) / 8;
+  return {s.color_reads * color + s.depth_reads * depth,
+          s.color_writes * color + s.depth_writes * depth};
+}
+
+Traffic plan_traffic(const std::vector<PassStats>& passes, const PassPlan& plan,
+                     const Viewport& vp) {
+  Traffic t;
+  for (size_t i = 0; i < passes.size() && i < plan.passes.size(); ++i) {
+    const Traffic p = pass_traffic(passes[i], plan.passes[i].rop, vp);
+    t.read += p.read;
+    t.written += p.written;
+  }
+  return t;
+}
+
 RenderResult render(const RasterizedScene& rs, const PassPlan& plan, Backend& backend) {
   StoredSource source(rs);
   RenderResult result;

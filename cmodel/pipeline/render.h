@@ -48,4 +48,16 @@ struct RenderResult {
 
 RenderResult render(const RasterizedScene& rs, const PassPlan& plan, Backend& backend);
 
+// Memory traffic in bytes (docs/datapath.md "Counters"): per colour access 4 bytes, or in an
+// accumulate pass the accumulation word's ceil((4A + R) / 8); per depth access the depth
+// width in whole bytes.
+struct Traffic {
+  uint64_t read = 0;
+  uint64_t written = 0;
+};
+Traffic pass_traffic(const PassStats& s, const RopState& state, const Viewport& vp);
+// Over the passes of `plan`, `passes` their counters in order.
+Traffic plan_traffic(const std::vector<PassStats>& passes, const PassPlan& plan,
+                     const Viewport& vp);
+
 }  // namespace zb

@@ -37,11 +37,20 @@ TEST(LabCost, BytesByAccessWidth) {
   s.color_writes = 7;
   s.depth_reads = 5;
   s.depth_writes = 3;
-  EXPECT_EQ(zb::lab::bytes_read(s, 24), 10u * 4 + 5u * 3);
-  EXPECT_EQ(zb::lab::bytes_written(s, 24), 7u * 4 + 3u * 3);
-  EXPECT_EQ(zb::lab::bytes_read(s, 16), 10u * 4 + 5u * 2);
-  EXPECT_EQ(zb::lab::bytes_read(s, 17), 10u * 4 + 5u * 3);  // rounded up to whole bytes
-  EXPECT_EQ(zb::lab::bytes_written(s, 32), 7u * 4 + 3u * 4);
+  const zb::RopState alpha;  // any mode but accumulate: 4 bytes a colour access
+  auto traffic = [&](int depth_bits, const zb::RopState& st, zb::WboitFormat f = {}) {
+    return zb::pass_traffic(s, st, zb::Viewport{8, 8, depth_bits, 16, f});
+  };
+  EXPECT_EQ(traffic(24, alpha).read, 10u * 4 + 5u * 3);
+  EXPECT_EQ(traffic(24, alpha).written, 7u * 4 + 3u * 3);
+  EXPECT_EQ(traffic(16, alpha).read, 10u * 4 + 5u * 2);
+  EXPECT_EQ(traffic(17, alpha).read, 10u * 4 + 5u * 3);  // rounded up to whole bytes
+  EXPECT_EQ(traffic(32, alpha).written, 7u * 4 + 3u * 4);
+  // Accumulate: the accumulation word, 4 x 16 + 8 = 72 bits, 9 bytes; 4 x 12 + 10, 8 bytes.
+  zb::RopState acc;
+  acc.blend = zb::BlendMode::kAccumulate;
+  EXPECT_EQ(traffic(24, acc).read, 10u * 9 + 5u * 3);
+  EXPECT_EQ(traffic(24, acc, {12, 10, 8}).written, 7u * 8 + 3u * 3);
 }
 
 TEST(LabFairReference, AntiAliasedMethodsAgainstTheSupersampledOne) {
