@@ -18,8 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-const std::vector<std::string> kSweeps = {"orbit",   "depth",  "layers", "alpha",
-                                          "samples", "offset", "all"};
+const std::vector<std::string> kSweeps = {"orbit",  "depth", "layers", "alpha", "samples",
+                                          "offset", "wboit", "all"};
 
 struct SweepOptions {
   std::string name;
@@ -79,6 +79,7 @@ class SweepRun {
     if (all || o_.name == "alpha") alpha();
     if (all || o_.name == "samples") samples();
     if (all || o_.name == "offset") offset();
+    if (all || o_.name == "wboit") wboit();
     r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     if (all) write("sweeps.md", lab::sweeps_markdown(r));
     note(fmt::format("sweep {}: {:.0f} s, written to {}", o_.name, r.seconds, o_.out_dir));
@@ -161,6 +162,13 @@ class SweepRun {
     emit("offset", lab::offset_csv(r.offset_rows));
   }
 
+  void wboit() {
+    lab::SweepResults& r = results_;
+    r.wboit.viewport = size_or(r.wboit.viewport);
+    r.wboit_rows = lab::wboit_sweep(r.wboit, progress());
+    emit("wboit", lab::wboit_csv(r.wboit_rows));
+  }
+
   const SweepOptions& o_;
   std::string python_;
   std::string script_;
@@ -180,7 +188,8 @@ void add_sweep_command(CLI::App& app) {
   auto o = std::make_shared<SweepOptions>();
   CLI::App* cmd = app.add_subcommand(
       "sweep", "Stability sweeps: camera orbit, depth separation against depth bits, layer "
-               "count, alpha, coverage samples, hidden-line depth offset against face tilt; "
+               "count, alpha, coverage samples, hidden-line depth offset against face tilt, "
+               "weighted blended OIT's widths; "
                "NAME.csv and NAME.png each (docs/sweeps.md)");
   cmd->add_option("name", o->name, "Sweep: " + join(kSweeps, ", ") +
                                        " ('all' also writes sweeps.md)");

@@ -43,6 +43,21 @@ std::string method_csv(const char* x_name, const std::vector<MethodRow>& rows) {
   return out;
 }
 
+std::string wboit_csv(const std::vector<WboitRow>& rows) {
+  std::string out = fmt::format(
+      "scene,method,acc_bits,rev_bits,weight_bits,word_bits,bytes,{}\n", kErrorHeader);
+  for (const WboitRow& r : rows) {
+    const bool w = r.method == "wboit";
+    out += fmt::format("{},{},{},{},{},{},{},{}\n", r.scene, r.method,
+                       w ? std::to_string(r.format.acc_bits) : "",
+                       w ? std::to_string(r.format.rev_bits) : "",
+                       w ? std::to_string(r.format.weight_bits) : "",
+                       w ? std::to_string(4 * r.format.acc_bits + r.format.rev_bits) : "",
+                       r.bytes, error_fields(r.error));
+  }
+  return out;
+}
+
 std::string offset_csv(const std::vector<OffsetRow>& rows) {
   std::string out =
       "knob,value,default,scene,tilt_deg,edge_pixels,hidden_drawn,visible_missing,"

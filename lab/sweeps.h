@@ -198,12 +198,44 @@ double offset_tilt_error(const std::vector<OffsetRow>& rows, const std::string& 
 // of the least over its values.
 double offset_knee(const std::vector<OffsetRow>& rows, const std::string& knob);
 
+// --- weighted blended OIT's widths (sweep_wboit.cpp) ---
+
+struct WboitOptions {
+  std::vector<int> weight_bits{0, 2, 4, 6, 8, 10, 12, 14, 16};
+  std::vector<int> acc_bits{12, 16, 20, 24, 32};
+  // The patents' methods and depth peeling at their one cost each, beside wboit's formats.
+  std::vector<std::string> baselines{"unsorted", "three-pass", "back-front", "depth-peel-8"};
+  Viewport viewport{160, 120};
+};
+
+// The scenes of the sweep: layers of alpha 0.5 and 0.9 (order matters most at high alpha),
+// cad's nested shells, glass-torus and particles.
+std::vector<Scene> wboit_scenes();
+
+struct WboitRow {
+  std::string scene;
+  std::string method;    // "wboit" or a baseline
+  WboitFormat format;    // wboit's widths (revealage 8 bits); a baseline's are unused
+  uint64_t bytes = 0;    // memory traffic, read and written (pass_traffic)
+  ImageError error;      // against the reference
+};
+
+// wboit at every acc_bits x weight_bits (revealage 8 bits) and each baseline, on every scene.
+std::vector<WboitRow> wboit_sweep(const WboitOptions& o, const SweepProgress& progress = {});
+
+// Mean over the scenes of wboit's mean CIEDE2000 at one format.
+double wboit_mean_error(const std::vector<WboitRow>& rows, int acc_bits, int weight_bits);
+
+// The weight range with the least wboit_mean_error at `acc_bits` (the smallest on a tie).
+int wboit_best_weight(const std::vector<WboitRow>& rows, int acc_bits);
+
 // --- output (sweep_csv.cpp, sweep_summary.cpp) ---
 
 std::string orbit_csv(const std::vector<OrbitRow>& rows);
 std::string depth_csv(const std::vector<DepthRow>& rows);
 std::string method_csv(const char* x_name, const std::vector<MethodRow>& rows);
 std::string offset_csv(const std::vector<OffsetRow>& rows);
+std::string wboit_csv(const std::vector<WboitRow>& rows);
 
 // What a run of `zblend sweep all` found, for DIR/sweeps.md.
 struct SweepResults {
@@ -221,6 +253,8 @@ struct SweepResults {
   std::vector<MethodRow> samples_rows;
   OffsetOptions offset;
   std::vector<OffsetRow> offset_rows;
+  WboitOptions wboit;
+  std::vector<WboitRow> wboit_rows;
   double seconds = 0;                 // wall time of the whole run
 };
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Charts one sweep of `zblend sweep` from its CSV (docs/sweeps.md).
 
-usage: sweep_charts.py NAME CSV PNG, NAME one of orbit, depth, layers, alpha, samples, offset.
+usage: sweep_charts.py NAME CSV PNG, NAME one of orbit, depth, layers, alpha, samples, offset,
+wboit.
 The PNG is written beside its target and renamed, so a failed run leaves no partial file.
 """
 import csv
@@ -204,6 +205,53 @@ def chart_offset(rows, fig):
                  "against the exact line reference")
 
 
+def chart_wboit(rows, fig):
+    """Left: wboit's mean error over the scenes against its weight range, a line per
+    accumulation width. Then per scene: error against memory traffic, wboit at each
+    accumulation width (its best weight range there) beside the patents' methods."""
+    wb = [r for r in rows if r["method"] == "wboit"]
+    base = [r for r in rows if r["method"] != "wboit"]
+    scenes = list(OrderedDict.fromkeys(r["scene"] for r in rows))
+    axes = list(fig.subplots(2, 3).flat)
+    ax = axes[0]
+    widths = list(OrderedDict.fromkeys(r["acc_bits"] for r in wb))
+    for i, a in enumerate(widths):
+        by_w = OrderedDict()
+        for r in wb:
+            if r["acc_bits"] == a:
+                by_w.setdefault(int(r["weight_bits"]), []).append(float(r["delta_e_mean"]))
+        ax.plot(list(by_w), [sum(v) / len(v) for v in by_w.values()], marker=".",
+                label=f"A = {a} bits", **style(i))
+    ax.set_xlabel("weight range W (F from 1 to 2^W - 1)")
+    ax.set_ylabel(f"mean CIEDE2000 over the {len(scenes)} scenes")
+    ax.set_title("wboit: weight range against accumulation width", fontsize=10)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+    for ax, scene in zip(axes[1:], scenes):
+        for i, m in enumerate(OrderedDict.fromkeys(r["method"] for r in base)):
+            for r in base:
+                if r["scene"] == scene and r["method"] == m:
+                    ax.scatter(float(r["bytes"]) / 1e3, float(r["delta_e_mean"]), s=40,
+                               color=style(i + 1)["color"], label=m, zorder=3)
+        pts = []
+        for a in widths:
+            cand = [r for r in wb if r["scene"] == scene and r["acc_bits"] == a]
+            best = min(cand, key=lambda r: float(r["delta_e_mean"]))
+            pts.append((float(best["bytes"]) / 1e3, float(best["delta_e_mean"]),
+                        f"{a}/{best['weight_bits']}"))
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], marker="s", color="black",
+                label="wboit A/W", zorder=2)
+        for x, y, t in pts:
+            ax.annotate(t, (x, y), textcoords="offset points", xytext=(3, 3), fontsize=7)
+        ax.set_xscale("log")
+        ax.set_xlabel("memory traffic (kB, read + written)")
+        ax.set_ylabel("mean CIEDE2000")
+        ax.set_title(scene, fontsize=10)
+        ax.grid(True, alpha=0.3)
+    axes[1].legend(fontsize=7)
+    fig.suptitle("Weighted blended OIT against the patents' methods: error and memory traffic")
+
+
 CHARTS = {
     "orbit": chart_orbit,
     "depth": chart_depth,
@@ -211,6 +259,7 @@ CHARTS = {
     "alpha": lambda rows, fig: chart_layer_family("alpha", rows, fig),
     "samples": chart_samples,
     "offset": chart_offset,
+    "wboit": chart_wboit,
 }
 
 
@@ -224,9 +273,10 @@ def main(argv):
     if not rows:
         sys.exit(f"sweep_charts: {csv_path}: no rows")
     panels = name in ("layers", "alpha", "samples")
-    fig = plt.figure(figsize=(17, 10) if name == "offset" else (14, 8) if panels else (11, 5.5))
+    big = name in ("offset", "wboit")
+    fig = plt.figure(figsize=(17, 10) if big else (14, 8) if panels else (11, 5.5))
     CHARTS[name](rows, fig)
-    fig.tight_layout(rect=(0, 0, 0.86 if panels else 1, 0.97 if name == "offset" else 1))
+    fig.tight_layout(rect=(0, 0, 0.86 if panels else 1, 0.97 if big else 1))
     tmp = png_path + ".tmp.png"
     try:
         fig.savefig(tmp, dpi=100)

@@ -51,10 +51,12 @@ constexpr int coverage_bits(int n) { return coverage_log2(n + 1); }
 // accumulation and revealage planes and the weight's range, the RTL's ACC_BITS, REV_BITS and
 // WEIGHT_BITS. One accumulation channel is acc_bits wide (unsigned, saturating); revealage is
 // a rev_bits unorm (all ones = 1.0); the depth weight F runs from 1 to 2^weight_bits - 1.
+// The defaults are the knees of docs/sweeps.md "wboit": 12-bit channels saturate, wider ones
+// gain nothing; weight ranges beyond 2^4 weigh the layers no better.
 struct WboitFormat {
   int acc_bits = 16;
   int rev_bits = 8;
-  int weight_bits = 8;
+  int weight_bits = 4;
   friend bool operator==(const WboitFormat& x, const WboitFormat& y) {
     return x.acc_bits == y.acc_bits && x.rev_bits == y.rev_bits &&
            x.weight_bits == y.weight_bits;

@@ -413,3 +413,60 @@ TEST(SweepOutput, MarkdownShowsEachChartRun) {
 }
 
 }  // namespace
+
+namespace {
+
+// wboit's weight range and accumulation width (docs/sweeps.md "wboit"): the defaults sit at
+// the knees, depth weighting beats none, a 12-bit channel saturates at wide weight ranges, and
+// the patents' methods win where the sweep's chart says.
+class WboitSweep : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { rows_ = new std::vector<WboitRow>(wboit_sweep(WboitOptions{})); }
+  static void TearDownTestSuite() { delete rows_; }
+  static const std::vector<WboitRow>& rows() { return *rows_; }
+  static double error(const std::string& scene, const std::string& method, int a = 0,
+                      int w = -1) {
+    for (const WboitRow& r : rows())
+      if (r.scene == scene && r.method == method &&
+          (method != "wboit" || (r.format.acc_bits == a && r.format.weight_bits == w)))
+        return r.error.delta_e_mean;
+    ADD_FAILURE() << scene << " " << method << " not in the sweep";
+    return 0;
+  }
+  static std::vector<WboitRow>* rows_;
+};
+std::vector<WboitRow>* WboitSweep::rows_ = nullptr;
+
+TEST_F(WboitSweep, DefaultWeightAtTheKnee) {
+  const WboitFormat def;
+  EXPECT_EQ(wboit_best_weight(rows(), def.acc_bits), def.weight_bits);
+  // Wider channels gain less than 0.1 CIEDE2000 at the default weight range; 12 bits lose.
+  const double at_default = wboit_mean_error(rows(), def.acc_bits, def.weight_bits);
+  EXPECT_GT(at_default - wboit_mean_error(rows(), 32, def.weight_bits), -1e-9);
+  EXPECT_LT(at_default - wboit_mean_error(rows(), 32, def.weight_bits), 0.1);
+  EXPECT_GT(wboit_mean_error(rows(), 12, def.weight_bits), at_default + 0.5);
+}
+
+TEST_F(WboitSweep, DepthWeightingBeatsTheWeightedAverage) {
+  const WboitFormat def;
+  EXPECT_GT(wboit_mean_error(rows(), def.acc_bits, 0),
+            wboit_mean_error(rows(), def.acc_bits, def.weight_bits) + 0.2);
+}
+
+TEST_F(WboitSweep, NarrowChannelsSaturateAtWideWeightRanges) {
+  EXPECT_GT(wboit_mean_error(rows(), 12, 16), wboit_mean_error(rows(), 12, 2) + 0.4);
+  EXPECT_LT(wboit_mean_error(rows(), 32, 16), wboit_mean_error(rows(), 12, 16) - 0.4);
+}
+
+// Four layers of alpha 0.9: three-pass keeps the nearest layer on top at less traffic than
+// wboit, which averages them; on cad's shells and the particles wboit beats it.
+TEST_F(WboitSweep, WhereThreePassWins) {
+  const WboitFormat d;
+  EXPECT_LT(error("layers-4-a90", "three-pass") * 3,
+            error("layers-4-a90", "wboit", d.acc_bits, d.weight_bits));
+  EXPECT_LT(error("cad", "wboit", d.acc_bits, d.weight_bits), error("cad", "three-pass"));
+  EXPECT_LT(error("particles", "wboit", d.acc_bits, d.weight_bits),
+            error("particles", "three-pass"));
+}
+
+}  // namespace

@@ -141,8 +141,8 @@ TEST(Wboit, WidePlanesMatchEquationSix) {
 // The paper's equation with exact premultiplication and 1 - a = k / 255, on the default
 // planes. The 8-bit premultiplied colour is off by up to half a unit, which the average
 // divides by alpha (up to 1 unit for alphas from 128); 1 - a on 0..256 by up to 0.5 / 256 a
-// layer; and the term shift (S = 12) drops up to a unit of terms as small as 15 (a far layer
-// of weight 1). Together within 5 units.
+// layer; and the term shift (S = 8) drops up to a unit of every term. Together within 5
+// units.
 TEST(Wboit, DefaultPlanesNearEquationSix) {
   std::mt19937 rng(11);
   const WboitFormat def{};
@@ -182,7 +182,7 @@ TEST(Wboit, OrderIndependent) {
 // A full-weight layer (p = a = 254, z = 0: u = 255, F = 255^3 >> 16 = 253) keeps 4 bits of
 // headroom: 16 layers fit in a 16-bit channel, the 17th saturates it.
 TEST(Wboit, SixteenFullWeightLayersFit) {
-  const WboitFormat def{};
+  const WboitFormat def{16, 8, 8};
   const Layer full{0, {254, 254, 254, 254}};
   const uint32_t term = uint32_t((254ull * 254 * 253) >> 12);  // S = 8 + 20 - 16
   const zb::RenderResult r16 = run_wboit(std::vector<Layer>(16, full), def);
