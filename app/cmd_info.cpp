@@ -10,6 +10,7 @@
 #include "scene/scene_suite.h"
 #include "scene/builtin_scenes.h"
 #include "offset_plan.h"
+#include "wboit_plan.h"
 #include "sizing.h"
 #include "sizing_report.h"
 
@@ -95,6 +96,7 @@ struct SizingCommand {
   std::string json;
   double max_hidden_drawn = 0;     // percent, with --max-visible-missing: the offset search
   double max_visible_missing = 0;
+  double max_delta_e = 0;          // the wboit planes' search
 };
 
 void run_sizing(const SizingCommand& c) {
@@ -145,11 +147,37 @@ void run_offset_plan(const SizingCommand& c) {
         c.max_visible_missing));
 }
 
+// zblend plan --scene S --max-delta-e D: weighted blended OIT's planes for the scene
+// (lab/wboit_plan.h).
+void run_wboit_plan(const SizingCommand& c) {
+  if (!(c.max_delta_e >= 0 && c.max_delta_e <= 100))
+    throw UsageError(fmt::format("--max-delta-e: {} is out of range (0 to 100, mean CIEDE2000)",
+                                 c.max_delta_e));
+  const Viewport vp = check_viewport(c.width, c.height, kDefaultDepthBits);
+  const std::vector<OutputPath> outputs = {{"--json", c.json, ".json"}};
+  check_outputs(outputs);
+  const Scene scene = resolve_scene(c.scene, c.camera);
+  create_output_dirs(outputs);
+  print_warnings("zblend plan", scene);
+  WboitPlanOptions o;
+  o.viewport = vp;
+  o.max_delta_e = c.max_delta_e;
+  fmt::print(stderr, "wboit planes for {}: {} formats and the patents' methods...\n", c.scene,
+             lab::WboitOptions{}.acc_bits.size() * lab::WboitOptions{}.weight_bits.size());
+  const WboitPlan plan = plan_wboit(scene, o);
+  fmt::print("{}", wboit_plan_text(c.scene, o, plan));
+  if (!c.json.empty()) write_or_fail(write_file_atomic(c.json, wboit_plan_json(c.scene, o, plan)));
+  if (!plan.found)
+    throw VerificationError(fmt::format("no wboit format meets --max-delta-e {}: the best is "
+                                        "{:.3f}", c.max_delta_e,
+                                        plan.choice.error.delta_e_mean));
+}
+
 // The plan command's three forms: --method alone; --scene with --max-error; --scene with
 // --max-hidden-drawn and --max-visible-missing.
 void run_plan_command(const CLI::App& cmd, const std::string& method, const SizingCommand& c) {
-  const char* scene_options[] = {"--max-error", "--max-hidden-drawn", "--max-visible-missing",
-                                 "--camera", "--width", "--height", "--json"};
+  const char* scene_options[] = {"--max-error",  "--max-hidden-drawn", "--max-visible-missing",
+                                 "--max-delta-e", "--camera", "--width", "--height", "--json"};
   if (cmd.count("--method")) {
     if (cmd.count("--scene"))
       throw UsageError("--method, --scene: give one of them (--method M: a method's passes; "
@@ -166,6 +194,13 @@ void run_plan_command(const CLI::App& cmd, const std::string& method, const Sizi
                      "sized to the scene)");
   }
   const bool offset = cmd.count("--max-hidden-drawn") || cmd.count("--max-visible-missing");
+  if (cmd.count("--max-delta-e")) {
+    if (cmd.count("--max-error") || offset)
+      throw UsageError("--max-delta-e: give it alone (the wboit planes), not with --max-error or "
+                       "the hidden-line offset's bounds");
+    run_wboit_plan(c);
+    return;
+  }
   if (offset) {
     if (cmd.count("--max-error"))
       throw UsageError("--max-error, --max-hidden-drawn: give one of them (--max-error: a model "
@@ -195,7 +230,8 @@ void add_info_commands(CLI::App& app) {
   auto* plan = app.add_subcommand(
       "plan", "Show the passes of a method and their pipeline state (--method), pick the "
               "hidden-line depth offset for a scene (--scene, --max-hidden-drawn, "
-              "--max-visible-missing), or size a model "
+              "--max-visible-missing), size weighted blended OIT's planes (--scene, "
+              "--max-delta-e), or size a model "
               "to a scene (--scene, --max-error): the cheapest method and narrowest depth bits, "
               "coverage samples and tile size within the error, verified (docs/sizing.md)");
   auto method = std::make_shared<std::string>();
@@ -215,6 +251,10 @@ void add_info_commands(CLI::App& app) {
   plan->add_option("--max-visible-missing", sizing->max_visible_missing,
                    "With --scene and --max-hidden-drawn: the bound on visible edge pixels "
                    "missing (percent)");
+  plan->add_option("--max-delta-e", sizing->max_delta_e,
+                   "With --scene: size weighted blended OIT's planes, the narrowest accumulation "
+                   "word whose mean CIEDE2000 against 'reference' stays within this; the "
+                   "patents' methods measured beside it");
   plan->add_option("--camera", sizing->camera,
                    "With --scene: camera eye=x,y,z,at=x,y,z,fov=deg[,up=x,y,z]");
   plan->add_option("--width,-W", sizing->width, "With --scene: frame width in pixels")

@@ -2,6 +2,7 @@
 // the patents' methods, on scenes where the order of high-alpha layers matters.
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 
 #include <fmt/core.h>
 
@@ -24,25 +25,32 @@ std::vector<Scene> wboit_scenes() {
   return out;
 }
 
+std::vector<WboitRow> wboit_scene_rows(const Scene& scene, const WboitOptions& o) {
+  std::vector<WboitRow> rows;
+  RasterizedScene rs = rasterize_scene(scene, o.viewport);
+  const Framebuffer ref = render_reference(rs);
+  auto run = [&](const std::string& method, const WboitFormat& f) {
+    rs.viewport.wboit = f;
+    const PassPlan* plan = find_plan(method);
+    if (!plan) throw std::invalid_argument("wboit sweep: unknown method '" + method + "'");
+    GoldenRop rop;
+    const RenderResult r = render(rs, *plan, rop);
+    const Traffic t = plan_traffic(r.passes, *plan, rs.viewport);
+    rows.push_back({scene.name, method, f, t.read + t.written,
+                    compare_images(r.framebuffer, ref)});
+  };
+  for (const std::string& b : o.baselines) run(b, WboitFormat{});
+  for (const int a : o.acc_bits)
+    for (const int w : o.weight_bits) run("wboit", WboitFormat{a, 8, w});
+  return rows;
+}
+
 std::vector<WboitRow> wboit_sweep(const WboitOptions& o, const SweepProgress& progress) {
   std::vector<WboitRow> rows;
   const std::vector<Scene> scenes = wboit_scenes();
   for (size_t i = 0; i < scenes.size(); ++i) {
     const Scene& scene = scenes[i];
-    RasterizedScene rs = rasterize_scene(scene, o.viewport);
-    const Framebuffer ref = render_reference(rs);
-    auto run = [&](const std::string& method, const WboitFormat& f) {
-      rs.viewport.wboit = f;
-      const PassPlan& plan = *find_plan(method);
-      GoldenRop rop;
-      const RenderResult r = render(rs, plan, rop);
-      const Traffic t = plan_traffic(r.passes, plan, rs.viewport);
-      rows.push_back({scene.name, method, f, t.read + t.written,
-                      compare_images(r.framebuffer, ref)});
-    };
-    for (const std::string& b : o.baselines) run(b, WboitFormat{});
-    for (const int a : o.acc_bits)
-      for (const int w : o.weight_bits) run("wboit", WboitFormat{a, 8, w});
+    for (WboitRow& r : wboit_scene_rows(scene, o)) rows.push_back(std::move(r));
     if (progress)
       progress(fmt::format("wboit: {}/{} {}, {} formats", i + 1, scenes.size(), scene.name,
                            o.acc_bits.size() * o.weight_bits.size()));

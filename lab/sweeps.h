@@ -220,7 +220,11 @@ struct WboitRow {
   ImageError error;      // against the reference
 };
 
-// wboit at every acc_bits x weight_bits (revealage 8 bits) and each baseline, on every scene.
+// wboit at every acc_bits x weight_bits (revealage 8 bits) and each baseline, on one scene
+// rasterized at o.viewport.
+std::vector<WboitRow> wboit_scene_rows(const Scene& scene, const WboitOptions& o);
+
+// wboit_scene_rows on every scene of wboit_scenes().
 std::vector<WboitRow> wboit_sweep(const WboitOptions& o, const SweepProgress& progress = {});
 
 // Mean over the scenes of wboit's mean CIEDE2000 at one format.

@@ -183,6 +183,14 @@ if "$zblend" plan --scene parts --max-hidden-drawn 5 --max-visible-missing 5 -W 
 expect_zblend_error "plan offset one bound" "--max-visible-missing: needed with the other bound" plan --scene cad --max-hidden-drawn 1
 expect_zblend_error "plan offset and error" "--max-error, --max-hidden-drawn: give one of them" plan --scene cad --max-error 3 --max-hidden-drawn 1 --max-visible-missing 1
 expect_zblend_error "plan offset range" "--max-hidden-drawn: 101 is out of range \(0 to 100" plan --scene cad --max-hidden-drawn 101 --max-visible-missing 1
+# The wboit planes: a choice and its JSON within the bound, exit 1 beyond every format, alone.
+wboit_json="$tmp/wboit-plan.json"
+if "$zblend" plan --scene cad --max-delta-e 1 -W 80 -H 60 --json "$wboit_json" 2>/dev/null |
+   grep -q "^choice: ACC_BITS" && grep -q '"found": true' "$wboit_json"; then ok; else bad "plan wboit: no choice"; fi
+if "$zblend" plan --scene layers-4-a90 --max-delta-e 0.5 -W 80 -H 60 >/dev/null 2>&1; then
+  bad "plan wboit: a bound no format meets passed"; else ok; fi
+expect_zblend_error "plan wboit and error" "--max-delta-e: give it alone" plan --scene cad --max-delta-e 1 --max-error 3
+expect_zblend_error "plan wboit range" "--max-delta-e: 101 is out of range" plan --scene cad --max-delta-e 101
 
 # ---- unknown options name the closest one, in every subcommand and zblend_tb ------------------
 expect_zblend_error "render typo" "^zblend render: error: unknown option '--scnee'; did you mean '--scene'\?$" render --scnee cad
