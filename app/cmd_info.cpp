@@ -132,7 +132,10 @@ void run_offset_plan(const SizingCommand& c) {
       throw UsageError(fmt::format("{}: {} is out of range (0 to 100, percent of the edge "
                                    "pixels)", name, v));
   const Viewport vp = check_viewport(c.width, c.height, kDefaultDepthBits);
+  const std::vector<OutputPath> outputs = {{"--json", c.json, ".json"}};
+  check_outputs(outputs);
   const Scene scene = resolve_scene(c.scene, c.camera);
+  create_output_dirs(outputs);
   print_warnings("zblend plan", scene);
   OffsetPlanOptions o;
   o.viewport = vp;
@@ -141,6 +144,7 @@ void run_offset_plan(const SizingCommand& c) {
   o.progress = [](const std::string& line) { fmt::print(stderr, "{}\n", line); };
   const OffsetPlan plan = plan_offset(scene, o);
   fmt::print("{}", offset_plan_text(c.scene, o, plan));
+  if (!c.json.empty()) write_or_fail(write_file_atomic(c.json, offset_plan_json(c.scene, o, plan)));
   if (!plan.found)
     throw VerificationError(fmt::format(
         "no offset meets --max-hidden-drawn {} and --max-visible-missing {}", c.max_hidden_drawn,
@@ -206,8 +210,6 @@ void run_plan_command(const CLI::App& cmd, const std::string& method, const Sizi
       throw UsageError("--max-error, --max-hidden-drawn: give one of them (--max-error: a model "
                        "sized to the scene; --max-hidden-drawn and --max-visible-missing: the "
                        "hidden-line offset)");
-    if (cmd.count("--json"))
-      throw UsageError("--json: goes with --max-error, not the hidden-line offset");
     for (const char* o : {"--max-hidden-drawn", "--max-visible-missing"})
       if (!cmd.count(o))
         throw UsageError(fmt::format("{}: needed with the other bound of the hidden-line offset "
@@ -261,7 +263,8 @@ void add_info_commands(CLI::App& app) {
       ->capture_default_str();
   plan->add_option("--height,-H", sizing->height, "With --scene: frame height in pixels")
       ->capture_default_str();
-  plan->add_option("--json", sizing->json, "With --scene: the report as JSON (make plan-rtl)");
+  plan->add_option("--json", sizing->json,
+                   "With --scene: the report as JSON (--max-error: make plan-rtl reads it)");
   plan->callback([plan, method, sizing] { run_plan_command(*plan, *method, *sizing); });
 }
 

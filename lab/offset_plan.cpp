@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <fmt/core.h>
+#include <nlohmann/json.hpp>
 
 #include "pipeline/passes.h"
 #include "pipeline/render.h"
@@ -19,6 +20,20 @@ std::string offset_text(const DepthOffset& o) {
                           : fmt::format("{} units + {:g} x slope", o.units, o.slope_q8 / 256.0);
   if (o.clamp != 0) t += fmt::format(", at most {}", o.clamp);
   return t;
+}
+
+nlohmann::json trial_json(const OffsetTrial& t) {
+  const DepthOffset& o = t.setting.offset;
+  return {{"knob", t.setting.knob},
+          {"value", std::isinf(t.setting.value) ? nlohmann::json(nullptr)
+                                                : nlohmann::json(t.setting.value)},
+          {"offset", {{"units", o.units}, {"slope_q8", o.slope_q8}, {"clamp", o.clamp},
+                      {"faces", o.faces}}},
+          {"hidden_drawn", t.error.hidden_drawn},
+          {"visible_missing", t.error.visible_missing},
+          {"hidden_drawn_share", t.error.hidden_drawn_share()},
+          {"visible_missing_share", t.error.visible_missing_share()},
+          {"within", t.meets}};
 }
 
 }  // namespace
@@ -76,6 +91,23 @@ std::string offset_plan_text(const std::string& scene, const OffsetPlanOptions& 
                          ? ", the plans' default"
                          : "");
   return out;
+}
+
+std::string offset_plan_json(const std::string& scene, const OffsetPlanOptions& o,
+                             const OffsetPlan& plan) {
+  nlohmann::json j{{"scene", scene},
+                   {"width", o.viewport.width},
+                   {"height", o.viewport.height},
+                   {"max_hidden_drawn", o.max_hidden_drawn},
+                   {"max_visible_missing", o.max_visible_missing},
+                   {"edge_pixels", plan.trials.empty() ? size_t{0}
+                                                       : plan.trials.front().error.edge_pixels},
+                   {"found", plan.found},
+                   {"choice", trial_json(plan.choice)},
+                   {"choice_is_default", lab::is_default_offset(plan.choice.setting.offset)}};
+  j["trials"] = nlohmann::json::array();
+  for (const OffsetTrial& t : plan.trials) j["trials"].push_back(trial_json(t));
+  return j.dump(2) + "\n";
 }
 
 }  // namespace zb

@@ -41,5 +41,7 @@ OffsetPlan plan_offset(const Scene& scene, const OffsetPlanOptions& o);
 // The report: every setting's shares and the choice, as zblend plan prints it.
 std::string offset_plan_text(const std::string& scene, const OffsetPlanOptions& o,
                              const OffsetPlan& plan);
+std::string offset_plan_json(const std::string& scene, const OffsetPlanOptions& o,
+                             const OffsetPlan& plan);
 
 }  // namespace zb

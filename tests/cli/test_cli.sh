@@ -178,8 +178,9 @@ expect_error "tb fragments 0" "--fragments: 0 is out of range" "$tb" --suite ran
 # ---- plan: --method and --scene ------------------------------------------------------------
 expect_zblend_error "plan method and scene" "^zblend: error: --method, --scene: give one of them" plan --method three-pass --scene cad
 # The hidden-line offset: both bounds, not with --max-error, within 0 to 100 percent.
-if "$zblend" plan --scene parts --max-hidden-drawn 5 --max-visible-missing 5 -W 80 -H 60 2>/dev/null |
-   grep -q "^choice: "; then ok; else bad "plan offset: no choice"; fi
+offset_json="$tmp/offset-plan.json"
+if "$zblend" plan --scene parts --max-hidden-drawn 5 --max-visible-missing 5 -W 80 -H 60 --json "$offset_json" 2>/dev/null |
+   grep -q "^choice: " && grep -q '"found": true' "$offset_json" && grep -q '"choice_is_default"' "$offset_json"; then ok; else bad "plan offset: no choice"; fi
 expect_zblend_error "plan offset one bound" "--max-visible-missing: needed with the other bound" plan --scene cad --max-hidden-drawn 1
 expect_zblend_error "plan offset and error" "--max-error, --max-hidden-drawn: give one of them" plan --scene cad --max-error 3 --max-hidden-drawn 1 --max-visible-missing 1
 expect_zblend_error "plan offset range" "--max-hidden-drawn: 101 is out of range \(0 to 100" plan --scene cad --max-hidden-drawn 101 --max-visible-missing 1
