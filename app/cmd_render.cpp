@@ -19,6 +19,7 @@
 #include "io/image.h"
 #include "metrics/memory_use.h"
 #include "pipeline/passes.h"
+#include "reference/line_reference.h"
 #include "reference/reference.h"
 #include "pipeline/render.h"
 #include "rop/rop.h"
@@ -293,6 +294,7 @@ void run_render(const RenderOptions& o) {
   if (rs) print_header_once();
 
   std::vector<MethodRun> runs;
+  std::optional<LineVisibility> lines;  // the line reference, when a method draws edges
   uint64_t mismatches = 0;
   for (const std::string& m : methods) {
     MethodRun run;
@@ -309,6 +311,15 @@ void run_render(const RenderOptions& o) {
       run.host_ms = reference_ms;
     }
     if (need_reference) run.error = compare_images(run.image, reference);
+    // Edges are judged against the exact line reference, not the shaded one (docs/lab.md).
+    if (const PassPlan* plan = find_plan(m); need_reference && plan && plan_draws_edges(*plan)) {
+      if (!lines) {
+        FrameGeometry g = *rs;
+        if (g.lines.empty()) g.lines = setup_lines(scene, vp, g.triangles);
+        lines = line_visibility(g.triangles, g.lines, vp);
+      }
+      run.line_error = compare_lines(run.image, *lines, kEdgeColor);
+    }
     mismatches += run.mismatches;
     print_header_once();
     if (!o.quiet) fmt::print(stderr, "  {:<12} {:8.1f} ms\n", m, run.host_ms);

@@ -19,7 +19,8 @@ std::string summary_csv(const std::vector<MethodRun>& runs) {
   std::string csv =
       "method,passes,fragments,reads,writes,bytes_read,bytes_written,rmse,psnr_db,max_abs,"
       "share_over_2,share_over_16,delta_e_mean,delta_e_max,host_ms,rtl_cycles,"
-      "rtl_stream_cycles,rtl_tile_cycles,mismatches\n";
+      "rtl_stream_cycles,rtl_tile_cycles,mismatches,edge_pixels,hidden_drawn_share,"
+      "visible_missing_share\n";
   for (const MethodRun& r : runs) {
     std::string cost = ",,,,,";  // passes, fragments, reads, writes, bytes: none for reference
     std::string rtl = ",,,";
@@ -37,7 +38,12 @@ std::string summary_csv(const std::vector<MethodRun>& runs) {
                               psnr_text(r.error->psnr), r.error->max_abs, r.error->share_over_2,
                               r.error->share_over_16, r.error->delta_e_mean, r.error->delta_e_max)
                 : ",,,,,,";
-    csv += fmt::format("{},{},{},{:.1f},{}\n", r.method, cost, error, r.host_ms, rtl);
+    const std::string lines =
+        r.line_error ? fmt::format("{},{:.6f},{:.6f}", r.line_error->edge_pixels,
+                                   r.line_error->hidden_drawn_share(),
+                                   r.line_error->visible_missing_share())
+                     : ",,";
+    csv += fmt::format("{},{},{},{:.1f},{},{}\n", r.method, cost, error, r.host_ms, rtl, lines);
   }
   return csv;
 }
@@ -67,6 +73,13 @@ void print_table(const std::vector<MethodRun>& runs) {
     else
       fmt::print(rtl ? " {:>10} {:>10}\n" : "\n", "-", "-");
   }
+  // The shaded error of a wireframe measures nothing: its own against the line reference.
+  for (const MethodRun& r : runs)
+    if (r.line_error)
+      fmt::print("{:<16} edges against the exact line reference: {:.3f}% of its {} edge pixels "
+                 "drawn hidden, {:.3f}% visible missing\n",
+                 r.method, 100 * r.line_error->hidden_drawn_share(), r.line_error->edge_pixels,
+                 100 * r.line_error->visible_missing_share());
 }
 
 std::string stats_json(const std::vector<MethodRun>& runs, const std::string& header_json) {
@@ -85,6 +98,12 @@ std::string stats_json(const std::vector<MethodRun>& runs, const std::string& he
           {"delta_e_mean", e.delta_e_mean},
           {"delta_e_max", e.delta_e_max}};
     }
+    if (r.line_error)
+      m["line_error"] = {{"edge_pixels", r.line_error->edge_pixels},
+                         {"hidden_drawn", r.line_error->hidden_drawn},
+                         {"visible_missing", r.line_error->visible_missing},
+                         {"hidden_drawn_share", r.line_error->hidden_drawn_share()},
+                         {"visible_missing_share", r.line_error->visible_missing_share()}};
     if (r.total) {
       const PassStats& s = *r.total;
       m["passes"] = r.passes;

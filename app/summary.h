@@ -7,6 +7,7 @@
 
 #include "pipeline/render.h"
 #include "rop/backend.h"
+#include "metrics/line_metrics.h"
 #include "metrics/metrics.h"
 
 namespace zb::app {
@@ -19,6 +20,8 @@ struct MethodRun {
   Traffic traffic;                 // memory traffic of the passes (render.h)
   size_t passes = 0;
   std::optional<ImageError> error;  // none under --no-error
+  // Methods that draw edges: against the exact line reference (line_metrics.h).
+  std::optional<LineError> line_error;
   double host_ms = 0;
   bool rtl = false;                // ran on the RTL: cycles are meaningful
   uint64_t tile_io_cycles = 0;     // RTL cycles loading and storing tiles

@@ -9,6 +9,7 @@
 
 #include <fmt/core.h>
 
+#include "geometry/frame_geometry.h"
 #include "pipeline/passes.h"
 #include "reference/reference.h"
 #include "pipeline/render.h"
@@ -101,9 +102,11 @@ class Search {
     out_.floor_max = *std::max_element(allowance_.begin(), allowance_.end());
 
     // 1. The cheapest method within E, each at the widest depth; coverage-aa at the fewest
-    // samples within E at that depth.
+    // samples within E at that depth. Wireframes (edge passes) draw no shaded image: the
+    // hidden-line offset search sizes them (offset_plan.h).
     std::vector<SizingTrial> firsts;
     for (const PassPlan& plan : pass_plans()) {
+      if (plan_draws_edges(plan)) continue;
       if (!uses_coverage(plan.name)) {
         firsts.push_back(trial("method", plan.name, widest, kDefaultCoverageSamples));
         continue;

@@ -24,7 +24,9 @@ uint64_t MethodCost::traffic_bytes(int tile, int depth_bits, int coverage_sample
                                                uint64_t(depth_bits)};
   uint64_t io = 0;
   for (size_t p = 0; p < bits.size(); ++p) io += at(tile).plane_pixels[p] * bits[p];
-  const uint64_t access = 32 * (totals.color_reads + totals.color_writes) +
+  const uint64_t word = uint64_t(4 * wboit.acc_bits + wboit.rev_bits);
+  const uint64_t access = 32 * (totals.color_reads + totals.color_writes - accum_accesses) +
+                          word * accum_accesses +
                           uint64_t(depth_bits) * (totals.depth_reads + totals.depth_writes);
   return (io + access + 7) / 8;
 }
@@ -50,6 +52,7 @@ void CostCounter::begin_frame(int width, int height, int depth_bits, Rgba8 clear
   width_ = width;
   height_ = height;
   cost_ = MethodCost{};
+  cost_.wboit = wboit;
   grids_.clear();
   for (const int size : kAnalysisTileSizes) {
     Grid g;
@@ -86,6 +89,7 @@ void CostCounter::draw(const Fragment* fragments, size_t count) {
 PassStats CostCounter::end_pass() {
   const PassStats s = inner_.end_pass();
   cost_.totals += s;
+  if (state_.blend == BlendMode::kAccumulate) cost_.accum_accesses += s.color_reads + s.color_writes;
   ++cost_.passes;
   for (size_t k = 0; k < grids_.size(); ++k) {
     Grid& g = grids_[k];

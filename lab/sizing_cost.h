@@ -31,6 +31,10 @@ struct TileCost {
 struct MethodCost {
   uint64_t passes = 0;
   PassStats totals;              // fragments and the datapath's colour and depth accesses
+  // Of totals' colour reads and writes, those of accumulate passes: the accumulation word's
+  // (4 * wboit.acc_bits + wboit.rev_bits bits each).
+  uint64_t accum_accesses = 0;
+  WboitFormat wboit;
   uint64_t frame_ops = 0;        // host frame operations (depth peeling): clears, copies, resolve
   uint64_t frame_op_pixels = 0;  // pixels those touch, frame_ops * width * height
   std::vector<TileCost> tiles;   // one per kAnalysisTileSizes
@@ -40,7 +44,8 @@ struct MethodCost {
   // frame operation (a tile port writes a word a clock).
   uint64_t cycles(int tile) const { return at(tile).rtl_cycles() + frame_op_pixels; }
   // Bytes moved, rounded up from bits: tile loads and stores (each plane its width) and
-  // the datapath's colour (32 bits) and depth (depth_bits) reads and writes in tile memory.
+  // the datapath's colour (32 bits; the accumulation word in accumulate passes) and depth
+  // (depth_bits) reads and writes in tile memory.
   uint64_t traffic_bytes(int tile, int depth_bits, int coverage_samples) const;
   // The tile size of least cycles (then least bytes, then the smaller tile: less memory).
   int best_tile(int depth_bits, int coverage_samples) const;

@@ -9,6 +9,7 @@
 #include "pipeline/passes.h"
 #include "pipeline/render.h"
 #include "rop/rop.h"
+#include "scene/failure_scenes.h"
 #include "scene/scene_suite.h"
 #include "sizing.h"
 #include "sizing_cost.h"
@@ -236,14 +237,31 @@ TEST(Sizing, TransparentSceneAtZeroErrorPicksAnExactPeel) {
 }
 
 // Twelve layers of alpha 0.1: depth-peel-8 misses four, which still show through the eight in
-// front by 0.9^8 = 43%; everything else misses more. Nothing meets E = 0 (the floor is
-// depth-peel-12's own error), and the best achievable is reported.
-TEST(Sizing, NothingMeetsTheBoundOnTwelveLayers) {
+// front by 0.9^8 = 43%, and the patents' methods blend out of order. wboit's depth weights
+// (nearer weighs more) come close to the exact weights a (1 - a)^k of low-alpha layers: it is
+// the one method within E = 0, whose floor allows a unit per layer (12 here).
+TEST(Sizing, WboitAloneMeetsTwelveLowAlphaLayers) {
   SizingOptions o;
   o.width = 64;
   o.height = 48;
   o.max_error = 0;
   const SizingResult r = size_model(layers_scene(12, 0.1f), o);
+  ASSERT_TRUE(r.found);
+  EXPECT_EQ(r.choice.method, "wboit");
+  for (const SizingTrial& t : r.trials)
+    if (t.step == "method") {
+      EXPECT_EQ(t.meets, t.method == "wboit") << t.method;
+    }
+}
+
+// particles: 40 and more layers of many alphas in random order. Nothing meets E = 0 (the
+// floor is the exact-order composite's own error), and the best achievable is reported.
+TEST(Sizing, NothingMeetsTheBoundOnParticles) {
+  SizingOptions o;
+  o.width = 64;
+  o.height = 48;
+  o.max_error = 0;
+  const SizingResult r = size_model(particles_scene(), o);
   EXPECT_FALSE(r.found);
   EXPECT_GT(r.choice.beyond_rounding, 0);
   for (const SizingTrial& t : r.trials) {
