@@ -99,16 +99,26 @@ struct SizingCommand {
   double max_delta_e = 0;          // the wboit planes' search
 };
 
+// The scene of a --scene plan, after its --json path is checked and its directory made.
+Scene plan_scene(const SizingCommand& c) {
+  const std::vector<OutputPath> outputs = {{"--json", c.json, ".json"}};
+  check_outputs(outputs);
+  Scene scene = resolve_scene(c.scene, c.camera);
+  create_output_dirs(outputs);
+  print_warnings("zblend plan", scene);
+  return scene;
+}
+
+void write_plan_json(const SizingCommand& c, const std::string& json) {
+  if (!c.json.empty()) write_or_fail(write_file_atomic(c.json, json));
+}
+
 void run_sizing(const SizingCommand& c) {
   if (c.max_error < 0 || c.max_error > 255)
     throw UsageError(fmt::format("--max-error: {} is out of range (0 to 255, 8-bit units)",
                                  c.max_error));
   const Viewport vp = check_viewport(c.width, c.height, kDefaultDepthBits);
-  const std::vector<OutputPath> outputs = {{"--json", c.json, ".json"}};
-  check_outputs(outputs);
-  const Scene scene = resolve_scene(c.scene, c.camera);
-  create_output_dirs(outputs);
-  print_warnings("zblend plan", scene);
+  const Scene scene = plan_scene(c);
   SizingOptions o;
   o.width = vp.width;
   o.height = vp.height;
@@ -116,7 +126,7 @@ void run_sizing(const SizingCommand& c) {
   o.progress = [](const std::string& line) { fmt::print(stderr, "{}\n", line); };
   const SizingResult r = size_model(scene, o);
   fmt::print("{}", sizing_text(c.scene, o, r));
-  if (!c.json.empty()) write_or_fail(write_file_atomic(c.json, sizing_json(c.scene, o, r)));
+  write_plan_json(c, sizing_json(c.scene, o, r));
   if (!r.found)
     throw VerificationError(fmt::format("no method meets --max-error {}: the best achievable "
                                         "error is {} ({})", c.max_error,
@@ -132,11 +142,7 @@ void run_offset_plan(const SizingCommand& c) {
       throw UsageError(fmt::format("{}: {} is out of range (0 to 100, percent of the edge "
                                    "pixels)", name, v));
   const Viewport vp = check_viewport(c.width, c.height, kDefaultDepthBits);
-  const std::vector<OutputPath> outputs = {{"--json", c.json, ".json"}};
-  check_outputs(outputs);
-  const Scene scene = resolve_scene(c.scene, c.camera);
-  create_output_dirs(outputs);
-  print_warnings("zblend plan", scene);
+  const Scene scene = plan_scene(c);
   OffsetPlanOptions o;
   o.viewport = vp;
   o.max_hidden_drawn = c.max_hidden_drawn / 100;
@@ -144,7 +150,7 @@ void run_offset_plan(const SizingCommand& c) {
   o.progress = [](const std::string& line) { fmt::print(stderr, "{}\n", line); };
   const OffsetPlan plan = plan_offset(scene, o);
   fmt::print("{}", offset_plan_text(c.scene, o, plan));
-  if (!c.json.empty()) write_or_fail(write_file_atomic(c.json, offset_plan_json(c.scene, o, plan)));
+  write_plan_json(c, offset_plan_json(c.scene, o, plan));
   if (!plan.found)
     throw VerificationError(fmt::format(
         "no offset meets --max-hidden-drawn {} and --max-visible-missing {}", c.max_hidden_drawn,
@@ -158,11 +164,7 @@ void run_wboit_plan(const SizingCommand& c) {
     throw UsageError(fmt::format("--max-delta-e: {} is out of range (0 to 100, mean CIEDE2000)",
                                  c.max_delta_e));
   const Viewport vp = check_viewport(c.width, c.height, kDefaultDepthBits);
-  const std::vector<OutputPath> outputs = {{"--json", c.json, ".json"}};
-  check_outputs(outputs);
-  const Scene scene = resolve_scene(c.scene, c.camera);
-  create_output_dirs(outputs);
-  print_warnings("zblend plan", scene);
+  const Scene scene = plan_scene(c);
   WboitPlanOptions o;
   o.viewport = vp;
   o.max_delta_e = c.max_delta_e;
@@ -170,7 +172,7 @@ void run_wboit_plan(const SizingCommand& c) {
              lab::WboitOptions{}.acc_bits.size() * lab::WboitOptions{}.weight_bits.size());
   const WboitPlan plan = plan_wboit(scene, o);
   fmt::print("{}", wboit_plan_text(c.scene, o, plan));
-  if (!c.json.empty()) write_or_fail(write_file_atomic(c.json, wboit_plan_json(c.scene, o, plan)));
+  write_plan_json(c, wboit_plan_json(c.scene, o, plan));
   if (!plan.found)
     throw VerificationError(fmt::format("no wboit format meets --max-delta-e {}: the best is "
                                         "{:.3f}", c.max_delta_e,
