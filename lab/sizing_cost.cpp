@@ -14,14 +14,20 @@ const TileCost& MethodCost::at(int tile) const {
   throw std::invalid_argument("cost model: no tile size " + std::to_string(tile));
 }
 
-uint64_t tile_pixel_bits(int depth_bits, int coverage_samples) {
-  return 32u + 2u * uint64_t(depth_bits) + uint64_t(coverage_bits(coverage_samples));
+uint64_t tile_pixel_bits(int depth_bits, int coverage_samples, const WboitFormat& wboit) {
+  return 32u + 2u * uint64_t(depth_bits) + uint64_t(coverage_bits(coverage_samples)) +
+         accum_word_bits(wboit);
 }
 
-uint64_t MethodCost::traffic_bytes(int tile, int depth_bits, int coverage_samples) const {
+uint64_t accum_word_bits(const WboitFormat& f) {
+  return 4u * uint64_t(f.acc_bits) + uint64_t(f.rev_bits);
+}
+
+uint64_t MethodCost::traffic_bytes(int tile, int depth_bits, int coverage_samples,
+                                   const WboitFormat& wboit) const {
   const std::array<uint64_t, kTilePlanes> bits{32, uint64_t(depth_bits),
                                                uint64_t(coverage_bits(coverage_samples)),
-                                               uint64_t(depth_bits)};
+                                               uint64_t(depth_bits), accum_word_bits(wboit)};
   uint64_t io = 0;
   for (size_t p = 0; p < bits.size(); ++p) io += at(tile).plane_pixels[p] * bits[p];
   const uint64_t access = 32 * (totals.color_reads + totals.color_writes) +
