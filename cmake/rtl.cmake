@@ -16,7 +16,7 @@ set(ZBLEND_RTL_BEAT 8 CACHE STRING "zb_rop BEAT: tile port pixels per clock, a p
 # Weighted blended OIT (docs/datapath.md "7. Accumulate blend"): the golden model's WboitFormat.
 set(ZBLEND_RTL_ACC_BITS 16 CACHE STRING "zb_rop ACC_BITS: accumulation channel width, 8 to 32")
 set(ZBLEND_RTL_REV_BITS 8 CACHE STRING "zb_rop REV_BITS: revealage width, 8 to 16")
-set(ZBLEND_RTL_WEIGHT_BITS 8 CACHE STRING "zb_rop WEIGHT_BITS: depth weight range, 0 to 16")
+set(ZBLEND_RTL_WEIGHT_BITS 4 CACHE STRING "zb_rop WEIGHT_BITS: depth weight range, 0 to 16")
 if(NOT ZBLEND_RTL_DEPTH_BITS MATCHES "^[0-9]+$" OR ZBLEND_RTL_DEPTH_BITS LESS 8
    OR ZBLEND_RTL_DEPTH_BITS GREATER 32)
   message(FATAL_ERROR "ZBLEND_RTL_DEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS}: choose 8 to 32")

@@ -31,7 +31,7 @@ module zb_rop
   parameter int BEAT       = 8,    // tile port pixels per clock: 2..TILE_W, power of two
   parameter int ACC_BITS   = 16,   // accumulation channel, 8..32
   parameter int REV_BITS   = 8,    // revealage, 8..16
-  parameter int WEIGHT_BITS = 8,   // depth weight's range, 0..16
+  parameter int WEIGHT_BITS = 4,   // depth weight's range, 0..16
   localparam int AddrW     = $clog2(TILE_W * TILE_H),
   localparam int BeatAW    = $clog2(TILE_W * TILE_H / BEAT),
   localparam int CovW      = $clog2(COV_SAMPLES + 1),  // coverage count 0..N

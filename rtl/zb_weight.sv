@@ -10,7 +10,7 @@
 // and, for the revealage, t = k + (k >> 7) with k = 255 - a (X6), 3t (X7), both in X8.
 module zb_weight #(
   parameter int ACC_BITS    = 16,  // A
-  parameter int WEIGHT_BITS = 8    // W
+  parameter int WEIGHT_BITS = 4    // W
 ) (
   input  logic                    clk_i,
   input  logic [7:0]              m_zhi_i,    // M's fragment: the top 8 bits of its depth
