@@ -13,6 +13,10 @@ set(ZBLEND_RTL_COV_SAMPLES 16 CACHE STRING "zb_rop COV_SAMPLES: coverage samples
 set(ZBLEND_RTL_TILE 64 CACHE STRING "zb_rop TILE_W and TILE_H: square tile, a power of two >= 2")
 set(ZBLEND_RTL_WINDOW 8 CACHE STRING "zb_rop WINDOW: issue window slots, 2 to 16")
 set(ZBLEND_RTL_BEAT 8 CACHE STRING "zb_rop BEAT: tile port pixels per clock, a power of two, 2 to the tile")
+# Weighted blended OIT (docs/datapath.md "7. Accumulate blend"): the golden model's WboitFormat.
+set(ZBLEND_RTL_ACC_BITS 16 CACHE STRING "zb_rop ACC_BITS: accumulation channel width, 8 to 32")
+set(ZBLEND_RTL_REV_BITS 8 CACHE STRING "zb_rop REV_BITS: revealage width, 8 to 16")
+set(ZBLEND_RTL_WEIGHT_BITS 4 CACHE STRING "zb_rop WEIGHT_BITS: depth weight range, 0 to 16")
 if(NOT ZBLEND_RTL_DEPTH_BITS MATCHES "^[0-9]+$" OR ZBLEND_RTL_DEPTH_BITS LESS 8
    OR ZBLEND_RTL_DEPTH_BITS GREATER 32)
   message(FATAL_ERROR "ZBLEND_RTL_DEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS}: choose 8 to 32")
@@ -29,12 +33,24 @@ endif()
 if(NOT ZBLEND_RTL_BEAT MATCHES "^(2|4|8|16|32|64|128|256|512|1024)$" OR ZBLEND_RTL_BEAT GREATER ZBLEND_RTL_TILE)
   message(FATAL_ERROR "ZBLEND_RTL_BEAT=${ZBLEND_RTL_BEAT}: choose a power of two from 2 to the tile (${ZBLEND_RTL_TILE})")
 endif()
+foreach(width IN ITEMS "ACC_BITS;8;32" "REV_BITS;8;16" "WEIGHT_BITS;0;16")
+  list(GET width 0 name)
+  list(GET width 1 lo)
+  list(GET width 2 hi)
+  if(NOT ZBLEND_RTL_${name} MATCHES "^[0-9]+$" OR ZBLEND_RTL_${name} LESS lo
+     OR ZBLEND_RTL_${name} GREATER hi)
+    message(FATAL_ERROR "ZBLEND_RTL_${name}=${ZBLEND_RTL_${name}}: choose ${lo} to ${hi}")
+  endif()
+endforeach()
 set(ZBLEND_RTL_PARAMS -GWINDOW=${ZBLEND_RTL_WINDOW} -GBEAT=${ZBLEND_RTL_BEAT} -GDEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS} -GCOV_SAMPLES=${ZBLEND_RTL_COV_SAMPLES}
-    -GTILE_W=${ZBLEND_RTL_TILE} -GTILE_H=${ZBLEND_RTL_TILE})
+    -GTILE_W=${ZBLEND_RTL_TILE} -GTILE_H=${ZBLEND_RTL_TILE} -GACC_BITS=${ZBLEND_RTL_ACC_BITS}
+    -GREV_BITS=${ZBLEND_RTL_REV_BITS} -GWEIGHT_BITS=${ZBLEND_RTL_WEIGHT_BITS})
 # The same values for the C++ mirrors (rtlmodel/rtl_params.h).
 set(ZBLEND_RTL_DEFINES ZBLEND_RTL_DEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS}
     ZBLEND_RTL_COV_SAMPLES=${ZBLEND_RTL_COV_SAMPLES} ZBLEND_RTL_TILE=${ZBLEND_RTL_TILE}
-    ZBLEND_RTL_WINDOW=${ZBLEND_RTL_WINDOW} ZBLEND_RTL_BEAT=${ZBLEND_RTL_BEAT})
+    ZBLEND_RTL_WINDOW=${ZBLEND_RTL_WINDOW} ZBLEND_RTL_BEAT=${ZBLEND_RTL_BEAT}
+    ZBLEND_RTL_ACC_BITS=${ZBLEND_RTL_ACC_BITS} ZBLEND_RTL_REV_BITS=${ZBLEND_RTL_REV_BITS}
+    ZBLEND_RTL_WEIGHT_BITS=${ZBLEND_RTL_WEIGHT_BITS})
 
 # Verilator's optimisation options, the model's threads and the C++ flags of its hot code:
 # chosen by measurement (scripts/verilator_options.sh, docs/bench.md), overridable for it.
@@ -46,7 +62,7 @@ set(ZBLEND_VERILATOR_OPT_FAST "" CACHE STRING "C++ flags added to the model's ho
 # zblend_verilate(TARGET PREFIX P DIRECTORY D [SYSTEMC] [BUG] [COVERAGE] [TRACE]
 #                 [MUTANTS NETLIST]): a static library TARGET holding zb_rop Verilated with the
 # widths above. BUG adds the deliberate defects the checkers must catch, each switched on by a
-# plusarg (+zb_bug_blend, +zb_bug_window); SYSTEMC builds it with --sc. MUTANTS builds Yosys's
+# plusarg (+zb_bug_window, +zb_bug_accum; the blend's without either); SYSTEMC builds it with --sc. MUTANTS builds Yosys's
 # netlist of zb_rop's mutants (mutation/CMakeLists.txt) in its wrapper instead of rtl/: a
 # generated netlist, so no -Wall, and no assertions (Yosys drops them). TRACE adds FST tracing
 # and the waveform probe, model PREFIX_probe.
@@ -62,7 +78,8 @@ function(zblend_verilate target)
         ${PROJECT_SOURCE_DIR}/mutation/zb_rop_mutant.sv)
   endif()
   if(V_BUG)
-    list(APPEND args +define+ZB_INJECT_BLEND_BUG +define+ZB_INJECT_WINDOW_BUG)
+    list(APPEND args +define+ZB_INJECT_BLEND_BUG +define+ZB_INJECT_WINDOW_BUG
+         +define+ZB_INJECT_ACCUM_BUG)
   endif()
   set(kind "")
   if(V_SYSTEMC)

@@ -13,7 +13,8 @@ namespace zb::conformance {
 
 // The manifest's "suite" and "version" (conformance_spec.md, format v1).
 constexpr const char* kSuiteName = "zblend-conformance";
-constexpr int kSuiteVersion = 1;
+// Version 2: the random and hazard streams draw the accumulate blend (mode 5) too.
+constexpr int kSuiteVersion = 2;
 
 // Bad input to the kit (a malformed suite, a path it cannot use, an unknown test): one line.
 struct ConformanceError : std::runtime_error {

@@ -1,23 +1,30 @@
-// Formal (docs/formal.md, group mul8): zb_mul8 equals k * v for every (k, v), two cycles later.
-// The caller's contract, k3_i = 3k, is made here; nothing else is assumed. Proven by k-induction:
-// the unit is a pipeline without feedback, so two steps determine its state.
+// Formal (docs/formal.md, group mul8): zb_mul8 equals k * v for every (k, v), two cycles later,
+// at its default 8 x 8 bits and (jobs mul_term, mul_reveal) at the accumulate blend's widths.
+// The caller's contract, k3_i = 3k, is made here; nothing else is assumed. Proven by
+// k-induction: the unit is a pipeline without feedback, so two steps determine its state.
 // ZB_FORMAL_DEFECT_MUL8 breaks the contract (k3 = 2k): the proof must fail.
-module zb_mul8_check (
-  input logic       clk_i,
-  input logic [7:0] k_i,
-  input logic [7:0] v_i
+module zb_mul8_check #(
+  parameter int unsigned K_W = 8,
+  parameter int unsigned V_W = 8
+) (
+  input logic           clk_i,
+  input logic [K_W-1:0] k_i,
+  input logic [V_W-1:0] v_i
 );
-  logic [15:0] t, spec1_q, spec2_q;
-  logic [9:0]  k3;
-  logic [1:0]  filled_q = 2'd0;  // cycles since the start, up to the latency
+  logic [K_W+V_W-1:0] t, spec1_q, spec2_q;
+  logic [K_W+1:0]     k3;
+  logic [1:0]         filled_q = 2'd0;  // cycles since the start, up to the latency
 
 `ifdef ZB_FORMAL_DEFECT_MUL8
   assign k3 = {1'b0, k_i, 1'b0};
 `else
-  assign k3 = 10'(3 * k_i);
+  assign k3 = (K_W+2)'(k_i) + {1'b0, k_i, 1'b0};
 `endif
 
-  zb_mul8 dut (
+  zb_mul8 #(
+    .K_W(K_W),
+    .V_W(V_W)
+  ) dut (
     .clk_i(clk_i),
     .k_i  (k_i),
     .k3_i (k3),
@@ -27,7 +34,7 @@ module zb_mul8_check (
 
   // The specification: the product, delayed by the latency.
   always_ff @(posedge clk_i) begin
-    spec1_q <= 16'(k_i) * 16'(v_i);
+    spec1_q <= (K_W+V_W)'(k_i) * (K_W+V_W)'(v_i);
     spec2_q <= spec1_q;
     if (filled_q != 2'd2) filled_q <= filled_q + 2'd1;
   end

@@ -1,10 +1,10 @@
 // Formal (docs/formal.md, group raw): per-pixel read-after-write through zb_rop, bounded model
 // check, with the shadow-word technique: for an arbitrary pixel P ($anyconst) the harness keeps
-// the last depth, coverage and colour written to P (from the retire port's writes, in retire
-// order). What a fragment to P reads (depth and coverage after X1's forwarding mux, colour
-// after X7's forwarding and bypass mux) must equal that word once every older fragment has
-// written, i.e. when the reader itself retires (X4 for depth and coverage, X11 for colour; P's
-// fragments retire in issue order). The tile port is idle, so P's word before its first write
+// the last depth, coverage, colour and accumulation word written to P (from the retire port's
+// writes, in retire order). What a fragment to P reads (depth and coverage after X1's
+// forwarding mux, colour and the accumulation word after X7's forwarding and bypass muxes)
+// must equal that word once every older fragment has written, i.e. when the reader itself
+// retires (X4 for depth and coverage, X11 for the others; P's fragments retire in issue order). The tile port is idle, so P's word before its first write
 // is the RAM's (constant): the first read of P defines it.
 module zb_raw_check
 `include "zb_rop_dut.svh"
@@ -13,9 +13,11 @@ module zb_raw_check
   // formal-tap: tap_x1_zs dut.u_depth.x1_zs
   // formal-tap: tap_x1_cs dut.u_depth.x1_cs
   // formal-tap: tap_x7_dst dut.u_color.x7_dst
+  // formal-tap: tap_x7_acc dut.u_accum.x7_word
   logic [DEPTH_BITS-1:0] tap_x1_zs;
   logic [CovW-1:0]       tap_x1_cs;
   logic [31:0]           tap_x7_dst;
+  logic [AccW-1:0]       tap_x7_acc;
 
   // ---------------------------------------------------------------------------------------
   // The driver's contract; the tile port stays idle (P's word comes from the RAM).
@@ -32,7 +34,7 @@ module zb_raw_check
   always_comb begin
     ResetFirstCycle: assume (rst_ni == !first_q);
     StateWriteIdle: assume (!state_we_i || !busy);
-    BlendCodeValid: assume (!state_we_i || state_i.blend <= zb_pkg::BlendUnder);
+    BlendCodeValid: assume (!state_we_i || state_i.blend <= zb_pkg::BlendAccumulate);
     TilePortUnused: assume (!tile_req_i && !tile_clear_i);
     FragInTile: assume (!accept || (dx < 16'(TILE_W) && dy < 16'(TILE_H)));
     FragCoverageInRange: assume (!accept || frag_cov_i <= CovW'(COV_SAMPLES));
@@ -48,6 +50,7 @@ module zb_raw_check
   logic [DEPTH_BITS-1:0] rz2_q, rz3_q, rz4_q;
   logic [CovW-1:0]       rc2_q, rc3_q, rc4_q;
   logic [31:0]           rk8_q, rk9_q, rk10_q, rk11_q;
+  logic [AccW-1:0]       ra8_q, ra9_q, ra10_q, ra11_q;
 
   always_ff @(posedge clk_i) begin
     rz2_q  <= tap_x1_zs;
@@ -60,6 +63,10 @@ module zb_raw_check
     rk9_q  <= rk8_q;
     rk10_q <= rk9_q;
     rk11_q <= rk10_q;
+    ra8_q  <= tap_x7_acc;
+    ra9_q  <= ra8_q;
+    ra10_q <= ra9_q;
+    ra11_q <= ra10_q;
   end
 
   // ---------------------------------------------------------------------------------------
@@ -70,6 +77,7 @@ module zb_raw_check
   logic [DEPTH_BITS-1:0] sz_q;
   logic [CovW-1:0]       sc_q;
   logic [31:0]           sk_q;
+  logic [AccW-1:0]       sa_q;
   assign x4_p  = mon_x4_valid && mon_x4_addr == pix;
   assign x11_p = mon_x11_valid && mon_x11_addr == pix;
 
@@ -92,6 +100,7 @@ module zb_raw_check
     if (x4_p)  sz_q <= mon_dwe ? mon_wdepth : rz4_q;
     if (x4_p)  sc_q <= mon_vwe ? mon_wcov : rc4_q;
     if (x11_p) sk_q <= mon_cwe ? mon_wcolor : rk11_q;
+    if (x11_p) sa_q <= mon_awe ? mon_wacc : ra11_q;
   end
 
   always_comb begin
@@ -100,6 +109,7 @@ module zb_raw_check
       DepthReadAfterWrite: assert (!(x4_p && sz_valid_q) || rz4_q == sz_q);
       CovReadAfterWrite: assert (!(x4_p && sc_valid_q) || rc4_q == sc_q);
       ColorReadAfterWrite: assert (!(x11_p && sk_valid_q) || rk11_q == sk_q);
+      AccumReadAfterWrite: assert (!(x11_p && sk_valid_q) || ra11_q == sa_q);
     end
   end
 endmodule

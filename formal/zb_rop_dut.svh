@@ -9,7 +9,10 @@
   parameter int unsigned CNT_W       = 2,
   parameter int unsigned COV_SAMPLES = 1,
   parameter int unsigned WINDOW      = 2,
-  parameter int unsigned BEAT        = 2
+  parameter int unsigned BEAT        = 2,
+  parameter int unsigned ACC_BITS    = 8,   // the accumulation word at its narrowest: 40 bits
+  parameter int unsigned REV_BITS    = 8,
+  parameter int unsigned WEIGHT_BITS = 0
 ) (
   input logic                            clk_i,
   input logic                            rst_ni,
@@ -33,6 +36,7 @@
   input logic [BEAT*DEPTH_BITS-1:0]      tile_wdepth_i,
   input logic [BEAT*$clog2(COV_SAMPLES+1)-1:0] tile_wcov_i,
   input logic [BEAT*DEPTH_BITS-1:0]      tile_wpeel_i,
+  input logic [BEAT*(4*ACC_BITS+REV_BITS)-1:0] tile_wacc_i,
   input logic                            cnt_clear_i
 );
   localparam int unsigned AddrW = $clog2(TILE_W * TILE_H);
@@ -40,6 +44,7 @@
   localparam int unsigned YW    = $clog2(TILE_H);
   localparam int unsigned CovW  = $clog2(COV_SAMPLES + 1);
   localparam int unsigned CntW  = 6;   // harness counters: more than the fragments in flight
+  localparam int unsigned AccW  = 4 * ACC_BITS + REV_BITS;
 
   logic                  frag_ready, busy;
   logic                  mon_x4_valid, mon_dwe, mon_vwe, mon_x11_valid, mon_cwe;
@@ -47,6 +52,8 @@
   logic [DEPTH_BITS-1:0] mon_wdepth;
   logic [CovW-1:0]       mon_wcov;
   logic [31:0]           mon_wcolor;
+  logic                  mon_awe;
+  logic [AccW-1:0]       mon_wacc;
 
   zb_rop #(
     .DEPTH_BITS (DEPTH_BITS),
@@ -55,14 +62,17 @@
     .CNT_W      (CNT_W),
     .COV_SAMPLES(COV_SAMPLES),
     .WINDOW     (WINDOW),
-    .BEAT       (BEAT)
+    .BEAT       (BEAT),
+    .ACC_BITS   (ACC_BITS),
+    .REV_BITS   (REV_BITS),
+    .WEIGHT_BITS(WEIGHT_BITS)
   ) dut (
     .clk_i, .rst_ni, .state_we_i, .state_i, .tile_x0_i, .tile_y0_i, .frag_valid_i,
     .frag_ready_o(frag_ready),
     .frag_x_i, .frag_y_i, .frag_z_i, .frag_rgba_i, .frag_cov_i, .stall_i,
     .tile_req_i, .tile_we_i, .tile_clear_i, .tile_planes_i, .tile_addr_i, .tile_wcolor_i,
-    .tile_wdepth_i, .tile_wcov_i, .tile_wpeel_i,
-    .tile_rcolor_o(), .tile_rdepth_o(), .tile_rcov_o(), .tile_rpeel_o(),
+    .tile_wdepth_i, .tile_wcov_i, .tile_wpeel_i, .tile_wacc_i,
+    .tile_rcolor_o(), .tile_rdepth_o(), .tile_rcov_o(), .tile_rpeel_o(), .tile_racc_o(),
     .busy_o(busy),
     .cnt_clear_i,
     .cnt_frag_in_o(), .cnt_frag_passed_o(), .cnt_frag_killed_o(), .cnt_depth_reads_o(),
@@ -77,5 +87,7 @@
     .mon_x11_valid_o(mon_x11_valid),
     .mon_x11_addr_o (mon_x11_addr),
     .mon_cwe_o      (mon_cwe),
-    .mon_wcolor_o   (mon_wcolor)
+    .mon_wcolor_o   (mon_wcolor),
+    .mon_awe_o      (mon_awe),
+    .mon_wacc_o     (mon_wacc)
   );

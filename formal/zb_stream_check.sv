@@ -31,7 +31,7 @@ module zb_stream_check
   always_comb begin
     ResetFirstCycle: assume (rst_ni == !first_q);
     StateWriteIdle: assume (!state_we_i || !busy);
-    BlendCodeValid: assume (!state_we_i || state_i.blend <= zb_pkg::BlendUnder);
+    BlendCodeValid: assume (!state_we_i || state_i.blend <= zb_pkg::BlendAccumulate);
     TilePortIdle: assume (!(tile_req_i || tile_clear_i) || !busy);
     FragInTile: assume (!accept || (dx < 16'(TILE_W) && dy < 16'(TILE_H)));
     FragCoverageInRange: assume (!accept || frag_cov_i <= CovW'(COV_SAMPLES));

@@ -14,17 +14,22 @@ const TileCost& MethodCost::at(int tile) const {
   throw std::invalid_argument("cost model: no tile size " + std::to_string(tile));
 }
 
-uint64_t tile_pixel_bits(int depth_bits, int coverage_samples) {
-  return 32u + 2u * uint64_t(depth_bits) + uint64_t(coverage_bits(coverage_samples));
+uint64_t tile_pixel_bits(int depth_bits, int coverage_samples, const WboitFormat& wboit) {
+  return 32u + 2u * uint64_t(depth_bits) + uint64_t(coverage_bits(coverage_samples)) +
+         accum_word_bits(wboit);
+}
+
+uint64_t accum_word_bits(const WboitFormat& f) {
+  return 4u * uint64_t(f.acc_bits) + uint64_t(f.rev_bits);
 }
 
 uint64_t MethodCost::traffic_bytes(int tile, int depth_bits, int coverage_samples) const {
+  const uint64_t word = accum_word_bits(wboit);
   const std::array<uint64_t, kTilePlanes> bits{32, uint64_t(depth_bits),
                                                uint64_t(coverage_bits(coverage_samples)),
-                                               uint64_t(depth_bits)};
+                                               uint64_t(depth_bits), word};
   uint64_t io = 0;
   for (size_t p = 0; p < bits.size(); ++p) io += at(tile).plane_pixels[p] * bits[p];
-  const uint64_t word = uint64_t(4 * wboit.acc_bits + wboit.rev_bits);
   const uint64_t access = 32 * (totals.color_reads + totals.color_writes - accum_accesses) +
                           word * accum_accesses +
                           uint64_t(depth_bits) * (totals.depth_reads + totals.depth_writes);

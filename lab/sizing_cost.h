@@ -21,7 +21,7 @@ struct TileCost {
   uint64_t stream_cycles = 0;   // per touched tile: issue cycles as zb_rop's window, drain
   uint64_t tile_io_cycles = 0;  // per touched tile: setup, load and store beats (tile_io.h)
   uint64_t tile_beats = 0;      // beats loaded and stored
-  // Per plane (colour, depth, coverage, peel): pixels loaded plus pixels stored.
+  // Per plane (colour, depth, coverage, peel, accumulation): pixels loaded plus pixels stored.
   std::array<uint64_t, kTilePlanes> plane_pixels{};
   // The RTL's clock cycles for the frame without back-pressure (`zblend render --backend rtl`
   // reports them as rtl_cycles plus the tile I/O).
@@ -45,15 +45,18 @@ struct MethodCost {
   uint64_t cycles(int tile) const { return at(tile).rtl_cycles() + frame_op_pixels; }
   // Bytes moved, rounded up from bits: tile loads and stores (each plane its width) and
   // the datapath's colour (32 bits; the accumulation word in accumulate passes) and depth
-  // (depth_bits) reads and writes in tile memory.
+  // (depth_bits) reads and writes in tile memory. The accumulation plane and word are
+  // `wboit`'s, the frame's.
   uint64_t traffic_bytes(int tile, int depth_bits, int coverage_samples) const;
   // The tile size of least cycles (then least bytes, then the smaller tile: less memory).
   int best_tile(int depth_bits, int coverage_samples) const;
 };
 
 // Bits of one pixel in the tile memory: colour 32, depth and peel depth_bits each, coverage
-// coverage_bits(samples) (zb_rop's four planes).
-uint64_t tile_pixel_bits(int depth_bits, int coverage_samples);
+// coverage_bits(samples), the accumulation word (zb_rop's five planes).
+uint64_t tile_pixel_bits(int depth_bits, int coverage_samples, const WboitFormat& wboit = {});
+// The accumulation word's bits, 4 ACC_BITS + REV_BITS.
+uint64_t accum_word_bits(const WboitFormat& f);
 
 // Wraps a backend, forwarding every call, and counts the method's cost.
 class CostCounter final : public Backend {

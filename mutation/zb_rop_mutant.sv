@@ -12,6 +12,9 @@ module zb_rop
   parameter int unsigned COV_SAMPLES = 16,
   parameter int unsigned WINDOW      = 8,
   parameter int unsigned BEAT        = 8,
+  parameter int unsigned ACC_BITS    = 16,
+  parameter int unsigned REV_BITS    = 8,
+  parameter int unsigned WEIGHT_BITS = 4,
   parameter int unsigned MUT_W       = 11   // mutsel's width: mutants 1 .. 2^MUT_W - 1
 ) (
   input  logic                  clk_i,
@@ -37,10 +40,12 @@ module zb_rop
   input  logic [BEAT*DEPTH_BITS-1:0] tile_wdepth_i,
   input  logic [BEAT*$clog2(COV_SAMPLES + 1)-1:0] tile_wcov_i,
   input  logic [BEAT*DEPTH_BITS-1:0] tile_wpeel_i,
+  input  logic [BEAT*(4*ACC_BITS+REV_BITS)-1:0] tile_wacc_i,
   output logic [BEAT*32-1:0]         tile_rcolor_o,
   output logic [BEAT*DEPTH_BITS-1:0] tile_rdepth_o,
   output logic [BEAT*$clog2(COV_SAMPLES + 1)-1:0] tile_rcov_o,
   output logic [BEAT*DEPTH_BITS-1:0] tile_rpeel_o,
+  output logic [BEAT*(4*ACC_BITS+REV_BITS)-1:0] tile_racc_o,
   output logic                  busy_o,
   input  logic                  cnt_clear_i,
   output logic [CNT_W-1:0]      cnt_frag_in_o,
@@ -63,7 +68,9 @@ module zb_rop
   output logic                  mon_x11_valid_o,
   output logic [$clog2(TILE_W * TILE_H)-1:0] mon_x11_addr_o,
   output logic                  mon_cwe_o,
-  output logic [31:0]           mon_wcolor_o
+  output logic [31:0]           mon_wcolor_o,
+  output logic                  mon_awe_o,
+  output logic [4*ACC_BITS+REV_BITS-1:0] mon_wacc_o
 );
 
   logic [MUT_W-1:0] mutsel;
@@ -75,11 +82,13 @@ module zb_rop
     .clk_i, .rst_ni, .state_we_i, .state_i, .tile_x0_i, .tile_y0_i, .frag_valid_i,
     .frag_ready_o, .frag_x_i, .frag_y_i, .frag_z_i, .frag_rgba_i, .frag_cov_i, .stall_i,
     .tile_req_i, .tile_we_i, .tile_clear_i, .tile_planes_i, .tile_addr_i, .tile_wcolor_i,
-    .tile_wdepth_i, .tile_wcov_i, .tile_wpeel_i, .tile_rcolor_o, .tile_rdepth_o, .tile_rcov_o,
-    .tile_rpeel_o, .busy_o, .cnt_clear_i, .cnt_frag_in_o, .cnt_frag_passed_o,
+    .tile_wdepth_i, .tile_wcov_i, .tile_wpeel_i, .tile_wacc_i, .tile_rcolor_o, .tile_rdepth_o,
+    .tile_rcov_o, .tile_rpeel_o, .tile_racc_o, .busy_o, .cnt_clear_i, .cnt_frag_in_o,
+    .cnt_frag_passed_o,
     .cnt_frag_killed_o, .cnt_depth_reads_o, .cnt_depth_writes_o, .cnt_color_reads_o,
     .cnt_color_writes_o, .cnt_stall_cycles_o, .cnt_cycles_o, .cnt_tile_loads_o,
     .cnt_tile_stores_o, .mon_x4_valid_o, .mon_x4_addr_o, .mon_dwe_o, .mon_wdepth_o, .mon_vwe_o,
-    .mon_wcov_o, .mon_x11_valid_o, .mon_x11_addr_o, .mon_cwe_o, .mon_wcolor_o, .mutsel
+    .mon_wcov_o, .mon_x11_valid_o, .mon_x11_addr_o, .mon_cwe_o, .mon_wcolor_o, .mon_awe_o,
+    .mon_wacc_o, .mutsel
   );
 endmodule

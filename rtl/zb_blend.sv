@@ -128,11 +128,12 @@ module zb_blend
 `ifdef ZB_INJECT_BLEND_BUG
     // Deliberate defect for checker tests: alpha blend, odd source alpha (k = 255 - a even),
     // red bit 0 flipped. The flag rides the pipeline with the fragment. On unless the plusarg
-    // +zb_bug_window picks the issue window's defect instead (zb_issue_window).
+    // +zb_bug_window or +zb_bug_accum picks another defect (zb_issue_window, zb_accum).
     if (c == 0) begin : g_bug
       logic [4:1] bug_q;
       logic       bug_on;
-      initial bug_on = $test$plusargs("zb_bug_window") == 0;
+      initial bug_on = $test$plusargs("zb_bug_window") == 0
+                       && $test$plusargs("zb_bug_accum") == 0;
       always_ff @(posedge clk_i) begin
         bug_q <= {bug_q[3:1], bug_on && mode_i == zb_pkg::BlendAlpha && !k_i[0]};
       end

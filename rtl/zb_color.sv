@@ -1,10 +1,8 @@
 // zb_color: the colour side of the pipeline (docs/rtl.md "Pipeline"), X5..X11. The colour plane
 // is read at E5 (X5's address) and its word registered in X6 (the RAM's clock-to-out and the
-// plane's resolve get a cycle of their own); zb_blend blends X7..X11; the colour is written at
-// E11 when the fragment passed and the mask lets a channel through.
-// A write of the pixel at E5 or E6 is newer than the word read: it reaches X7 through the
-// forwarding registers. A write at E7 (the fragment in X11 as this one is in X7) is bypassed
-// into X7 ("Same-pixel distance").
+// plane's resolve get a cycle of their own); zb_forward gives X7 the pixel's newest word;
+// zb_blend blends X7..X11; the colour is written at E11 when the fragment passed and the mask
+// lets a channel through, except in accumulate mode (zb_accum writes its own word instead).
 module zb_color #(
   parameter int WORDS       = 4096,
   parameter int BEAT        = 8,
@@ -43,17 +41,12 @@ module zb_color #(
   output logic [31:0]                       x11_wcolor_o
 );
 
-  logic [31:0] cmem_rdata, x7_mem_q, x11_color, x7_dst;
-  logic        x10_cwe, x11_cwe;
-  logic        fwd5_hit, fwd6_hit;    // X5's read meets X11's write at E5; X6 meets it at E6
-  logic        fwd6_hit_q;            // X6: X5's read met a write of its pixel at E5
-  logic [31:0] fwd6_color_q;          // the word written at that edge
-  logic        fwd_hit_q;             // X7: a write of its pixel at E5 or E6
-  logic [31:0] fwd_color_q;           // that word
-  logic        byp_hit_q;             // X7: the fragment now in X11 writes X7's pixel now
+  logic [31:0] cmem_rdata, x11_color, x7_dst;
+  logic        color_on, x10_cwe, x11_cwe;
 
-  assign x10_cwe = x10_valid_i & x10_pass_i & (color_mask_i != 4'h0);
-  assign x11_cwe = x11_valid_i & x11_pass_i & (color_mask_i != 4'h0);
+  assign color_on = (color_mask_i != 4'h0) & (blend_i != zb_pkg::BlendAccumulate);
+  assign x10_cwe  = x10_valid_i & x10_pass_i & color_on;
+  assign x11_cwe  = x11_valid_i & x11_pass_i & color_on;
 
   zb_plane #(
     .WIDTH    (32),
@@ -78,26 +71,27 @@ module zb_color #(
     .rdata_o     (cmem_rdata)
   );
 
-  // Forwarding: the RAM's word for a read at the edge of a write to it is undefined
-  // (no_rw_check), and a write at E5 or E6 is newer than the word read. Bypass: the fragment
-  // now in X11 writes X7's pixel at this edge, the newest word of the pixel; it takes
-  // precedence over fwd_color_q.
-  assign fwd5_hit = x5_valid_i & x11_cwe & (x5_addr_i == x11_addr_i);
-  assign fwd6_hit = x6_valid_i & x11_cwe & (x6_addr_i == x11_addr_i);
-
-  always_ff @(posedge clk_i) begin
-    x7_mem_q     <= cmem_rdata;
-    fwd6_hit_q   <= fwd5_hit;
-    fwd6_color_q <= x11_color;
-    fwd_hit_q    <= fwd6_hit | fwd6_hit_q;
-    fwd_color_q  <= fwd6_hit ? x11_color : fwd6_color_q;
-    byp_hit_q    <= x6_valid_i & x10_cwe & (x6_addr_i == x10_addr_i);
-  end
+  zb_forward #(
+    .WIDTH (32),
+    .ADDR_W($clog2(WORDS))
+  ) u_forward (
+    .clk_i      (clk_i),
+    .rst_ni     (rst_ni),
+    .x5_valid_i (x5_valid_i),
+    .x6_valid_i (x6_valid_i),
+    .x5_addr_i  (x5_addr_i),
+    .x6_addr_i  (x6_addr_i),
+    .x10_addr_i (x10_addr_i),
+    .x11_addr_i (x11_addr_i),
+    .x10_we_i   (x10_cwe),
+    .x11_we_i   (x11_cwe),
+    .x11_wdata_i(x11_color),
+    .x6_rdata_i (cmem_rdata),
+    .x7_word_o  (x7_dst)
+  );
 
   assign x11_cwe_o    = x11_cwe;
   assign x11_wcolor_o = x11_color;
-
-  assign x7_dst = byp_hit_q ? x11_color : (fwd_hit_q ? fwd_color_q : x7_mem_q);
 
   zb_blend #(
     .COV_SAMPLES(COV_SAMPLES)
@@ -112,24 +106,5 @@ module zb_color #(
     .q_i    (x7_q_i),
     .color_o(x11_color)
   );
-
-`ifndef SYNTHESIS
-`ifndef ZB_NO_SVA
-  // A write of the pixel at the read edge (X5 meets X11) or the next (X6 meets X11) reaches X7
-  // as the forwarded word; one at E7 (X6 meets X10) as the bypass.
-  ColorForwardCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      fwd6_hit |=> fwd_hit_q);
-  ColorReadEdgeForwardCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      fwd5_hit |=> fwd6_hit_q);
-  ColorForwardHeld: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      fwd6_hit_q |=> fwd_hit_q);
-  ColorBypassCovers: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (x6_valid_i && x10_cwe && x6_addr_i == x10_addr_i) |=> (byp_hit_q && x11_cwe));
-  ColorForwardPath: cover property (@(posedge clk_i) disable iff (!rst_ni) fwd6_hit);
-  ColorReadEdgeForwardPath: cover property (@(posedge clk_i) disable iff (!rst_ni) fwd5_hit);
-  ColorBypassPath: cover property (@(posedge clk_i) disable iff (!rst_ni)
-      x6_valid_i && x10_cwe && x6_addr_i == x10_addr_i);
-`endif
-`endif
 
 endmodule

@@ -50,8 +50,8 @@ module zb_depth #(
 
   localparam int CovW = $clog2(COV_SAMPLES + 1);
 
-  logic unused_color;  // the colour plane is zb_color's
-  assign unused_color = tile_planes_i.color;
+  logic [1:0] unused_planes;  // the colour and accumulation planes: zb_color's, zb_accum's
+  assign unused_planes = {tile_planes_i.accum, tile_planes_i.color};
 
   // ---------------------------------------------------------------------------------------
   // The planes, read at E0, written at E4. Peel: written only by the tile port.

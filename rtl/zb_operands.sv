@@ -13,7 +13,8 @@ module zb_operands #(
   output logic [31:0]                        x7_k_o,       // X7: zb_blend's operands
   output logic [39:0]                        x7_k3_o,
   output logic [31:0]                        x7_add_o,
-  output logic [4*(8+$clog2(COV_SAMPLES+1))-1:0] x7_q_o
+  output logic [4*(8+$clog2(COV_SAMPLES+1))-1:0] x7_q_o,
+  output logic [31:0]                        x6_ms_o       // X6: m(s, a), for zb_weight
 );
 
   localparam int CovW = $clog2(COV_SAMPLES + 1);
@@ -156,6 +157,8 @@ module zb_operands #(
       endcase
     end
   end
+
+  assign x6_ms_o = x6_ms_q;
 
   always_ff @(posedge clk_i) begin
     x7_k_o   <= x6_k;

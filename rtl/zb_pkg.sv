@@ -19,11 +19,12 @@ package zb_pkg;
   } depth_func_e;
 
   typedef enum logic [2:0] {
-    BlendReplace  = 3'd0,
-    BlendAlpha    = 3'd1,
-    BlendAdditive = 3'd2,
-    BlendCoverage = 3'd3,
-    BlendUnder    = 3'd4
+    BlendReplace    = 3'd0,
+    BlendAlpha      = 3'd1,
+    BlendAdditive   = 3'd2,
+    BlendCoverage   = 3'd3,
+    BlendUnder      = 3'd4,
+    BlendAccumulate = 3'd5   // weighted blended OIT: the accumulation word, not the colour
   } blend_mode_e;
 
   // The pass state register; the first field is the most significant.
@@ -38,6 +39,7 @@ package zb_pkg;
 
   // The planes of the resident tile, as the tile port selects them (tile_planes_i).
   typedef struct packed {
+    logic accum;     // [4] accumulation and revealage (accumulate mode)
     logic peel;      // [3]
     logic coverage;  // [2]
     logic depth;     // [1]

@@ -8,14 +8,16 @@
 //   M        here: issue, the depth, coverage and peel reads
 //   X1..X4   zb_depth: depth, coverage, peel: data, compare, decide, write (edge E4)
 //   X1..X6   zb_operands: fragment side of the blend: m(s, a), k, 3k, coverage weight terms
+//   M..X8    zb_weight: fragment side of the accumulate blend: depth weight, w, the terms
 //   X5..X11  zb_color: colour read at edge E5, blend (zb_blend, 4 stages), write at edge E11
+//   X5..X11  zb_accum: the accumulation word, read and written as the colour (accumulate mode)
 // This module holds the pass state, M, the pipeline's valid, address and pass bits (arrays
 // indexed by stage), the counters and the assertions that span stages.
 // A fragment issues at least Span = 4 cycles after an older one to its pixel, so every read
 // sees every older write: from the memory; at and just after the edge of the older fragment's
 // write, from the forwarding registers that hold it (the RAMs need no read-during-write
-// behaviour); or, a colour write two edges after the read, from that write's data itself,
-// bypassed into the younger fragment's X7.
+// behaviour); or, a colour (or accumulation) write two edges after the read, from that write's
+// data itself, bypassed into the younger fragment's X7.
 // Reset: rst_ni, asynchronous, active low, on control state only (valid bits, window, pass
 // state, counters). Memories and data registers are not reset.
 module zb_rop
@@ -27,9 +29,13 @@ module zb_rop
   parameter int COV_SAMPLES = 16,  // N of the sample pattern: 1, 2, 4, 8 or 16
   parameter int WINDOW     = 8,    // issue window slots, 2..16
   parameter int BEAT       = 8,    // tile port pixels per clock: 2..TILE_W, power of two
+  parameter int ACC_BITS   = 16,   // accumulation channel, 8..32
+  parameter int REV_BITS   = 8,    // revealage, 8..16
+  parameter int WEIGHT_BITS = 4,   // depth weight's range, 0..16
   localparam int AddrW     = $clog2(TILE_W * TILE_H),
   localparam int BeatAW    = $clog2(TILE_W * TILE_H / BEAT),
-  localparam int CovW      = $clog2(COV_SAMPLES + 1)  // coverage count 0..N
+  localparam int CovW      = $clog2(COV_SAMPLES + 1),  // coverage count 0..N
+  localparam int AccW      = 4 * ACC_BITS + REV_BITS   // {r, acc_A, acc_B, acc_G, acc_R}
 ) (
   input  logic                  clk_i,
   input  logic                  rst_ni,
@@ -58,10 +64,12 @@ module zb_rop
   input  logic [BEAT*DEPTH_BITS-1:0] tile_wdepth_i,
   input  logic [BEAT*CovW-1:0]       tile_wcov_i,
   input  logic [BEAT*DEPTH_BITS-1:0] tile_wpeel_i,
+  input  logic [BEAT*AccW-1:0]       tile_wacc_i,
   output logic [BEAT*32-1:0]         tile_rcolor_o,
   output logic [BEAT*DEPTH_BITS-1:0] tile_rdepth_o,
   output logic [BEAT*CovW-1:0]       tile_rcov_o,
   output logic [BEAT*DEPTH_BITS-1:0] tile_rpeel_o,
+  output logic [BEAT*AccW-1:0]       tile_racc_o,
   output logic                  busy_o,
   input  logic                  cnt_clear_i,
   output logic [CNT_W-1:0]      cnt_frag_in_o,
@@ -76,8 +84,9 @@ module zb_rop
   output logic [CNT_W-1:0]      cnt_tile_loads_o,    // beats loaded
   output logic [CNT_W-1:0]      cnt_tile_stores_o,   // beats read
   // Retire port (docs/testbench.md "A mismatch"), for a testbench's monitor: the plane writes
-  // as the planes take them at this cycle's edge. X4 writes depth and coverage, X11 colour; a
-  // fragment's stage is valid whether or not it writes. Taps only: no logic of its own.
+  // as the planes take them at this cycle's edge. X4 writes depth and coverage, X11 colour or
+  // (accumulate mode) the accumulation word; a fragment's stage is valid whether or not it
+  // writes. Taps only: no logic of its own.
   output logic                  mon_x4_valid_o,
   output logic [AddrW-1:0]      mon_x4_addr_o,
   output logic                  mon_dwe_o,
@@ -87,7 +96,9 @@ module zb_rop
   output logic                  mon_x11_valid_o,
   output logic [AddrW-1:0]      mon_x11_addr_o,
   output logic                  mon_cwe_o,
-  output logic [31:0]           mon_wcolor_o
+  output logic [31:0]           mon_wcolor_o,
+  output logic                  mon_awe_o,
+  output logic [AccW-1:0]       mon_wacc_o
 );
 
   localparam int XW    = $clog2(TILE_W);
@@ -109,6 +120,15 @@ module zb_rop
   if (BEAT < 2 || BEAT > TILE_W || (BEAT & (BEAT - 1)) != 0) begin : g_bad_beat
     `ZB_PARAM_ERROR("zb_rop: BEAT must be a power of two, 2..TILE_W");
   end
+  if (ACC_BITS < 8 || ACC_BITS > 32) begin : g_bad_acc
+    `ZB_PARAM_ERROR("zb_rop: ACC_BITS must be 8..32");
+  end
+  if (REV_BITS < 8 || REV_BITS > 16) begin : g_bad_rev
+    `ZB_PARAM_ERROR("zb_rop: REV_BITS must be 8..16");
+  end
+  if (WEIGHT_BITS < 0 || WEIGHT_BITS > 16) begin : g_bad_weight
+    `ZB_PARAM_ERROR("zb_rop: WEIGHT_BITS must be 0..16");
+  end
 `endif
 
   // ---------------------------------------------------------------------------------------
@@ -116,7 +136,9 @@ module zb_rop
   // ---------------------------------------------------------------------------------------
   zb_pkg::pass_state_t state_q;
   logic                st_cov;  // coverage mode (docs/datapath.md "Coverage blend")
+  logic                st_acc;  // accumulate mode (docs/datapath.md "Accumulate blend")
   assign st_cov = state_q.blend == zb_pkg::BlendCoverage;
+  assign st_acc = state_q.blend == zb_pkg::BlendAccumulate;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -131,8 +153,8 @@ module zb_rop
   // words from the forwarding registers. Its colour read (E5) comes before the older colour
   // write: at Span that write is at the younger's E7, so X7 takes the older one's write data
   // (bypass); at Span + 1 at E6, and at Span + 2 at the read edge E5: X6 catches either in
-  // zb_color's forwarding registers. Below 4 the older result would not exist yet when the
-  // younger's X7 needs it.
+  // zb_color's forwarding registers (zb_accum's alike). Below 4 the older result would not
+  // exist yet when the younger's X7 needs it.
   localparam int Span = 4;
   localparam int Last = 11;   // the colour write's stage
 
@@ -301,6 +323,8 @@ module zb_rop
   logic [39:0]        x7_k3;
   logic [4*QW-1:0]    x7_q;
 
+  logic [31:0]        x6_ms;
+
   zb_operands #(
     .COV_SAMPLES(COV_SAMPLES)
   ) u_operands (
@@ -312,7 +336,29 @@ module zb_rop
     .x7_k_o     (x7_k),
     .x7_k3_o    (x7_k3),
     .x7_add_o   (x7_add),
-    .x7_q_o     (x7_q)
+    .x7_q_o     (x7_q),
+    .x6_ms_o    (x6_ms)
+  );
+
+  // ---------------------------------------------------------------------------------------
+  // M..X8: the fragment side of the accumulate blend (zb_weight).
+  // ---------------------------------------------------------------------------------------
+  logic [4*ACC_BITS-1:0] x8_term;
+  logic [8:0]            x8_t;
+  logic [10:0]           x8_t3;
+
+  zb_weight #(
+    .ACC_BITS   (ACC_BITS),
+    .WEIGHT_BITS(WEIGHT_BITS)
+  ) u_weight (
+    .clk_i    (clk_i),
+    .m_zhi_i  (m_z_q[DEPTH_BITS-1 -: 8]),
+    .m_a_i    (m_rgba_q[31:24]),
+    .m_a3_i   (m_a3_q),
+    .x6_ms_i  (x6_ms),
+    .x8_term_o(x8_term),
+    .x8_t_o   (x8_t),
+    .x8_t3_o  (x8_t3)
   );
 
   // ---------------------------------------------------------------------------------------
@@ -352,6 +398,43 @@ module zb_rop
     .x11_wcolor_o (mon_wcolor_o)
   );
 
+  // ---------------------------------------------------------------------------------------
+  // X5..X11: the accumulation word (zb_accum).
+  // ---------------------------------------------------------------------------------------
+  zb_accum #(
+    .WORDS   (Words),
+    .BEAT    (BEAT),
+    .ACC_BITS(ACC_BITS),
+    .REV_BITS(REV_BITS)
+  ) u_accum (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .acc_mode_i  (st_acc),
+    .color_mask_i(state_q.color_mask),
+    .tile_req_i  (tile_req_i),
+    .tile_we_i   (tile_we_i),
+    .tile_clear_i(tile_clear_i),
+    .tile_en_i   (tile_planes_i.accum),
+    .tile_addr_i (tile_addr_i),
+    .tile_wacc_i (tile_wacc_i),
+    .tile_racc_o (tile_racc_o),
+    .x5_valid_i  (x_valid_q[5]),
+    .x6_valid_i  (x_valid_q[6]),
+    .x10_valid_i (x_valid_q[10]),
+    .x11_valid_i (x_valid_q[11]),
+    .x5_addr_i   (x_addr_q[5]),
+    .x6_addr_i   (x_addr_q[6]),
+    .x10_addr_i  (x_addr_q[10]),
+    .x11_addr_i  (x_addr_q[11]),
+    .x10_pass_i  (x_pass_q[10]),
+    .x11_pass_i  (x_pass_q[11]),
+    .x8_term_i   (x8_term),
+    .x8_t_i      (x8_t),
+    .x8_t3_i     (x8_t3),
+    .x11_awe_o   (mon_awe_o),
+    .x11_wacc_o  (mon_wacc_o)
+  );
+
   assign busy_o = i_busy | w_busy | m_valid_q | (|x_valid_q);
 
   assign mon_x4_valid_o  = x_valid_q[4];
@@ -383,7 +466,7 @@ module zb_rop
   assign x4_pass     = x_pass_q[4];
   assign x4_color_on = x4_valid & x4_pass & (state_q.color_mask != 4'h0);
   // Replace with all four channels written needs no destination colour; the other modes
-  // (alpha, additive, coverage, under) blend with it.
+  // (alpha, additive, coverage, under) blend with it, and accumulate reads its own word.
   assign reads_dest  = (state_q.blend != zb_pkg::BlendReplace) | (state_q.color_mask != 4'hf);
 
   always_comb begin
@@ -470,9 +553,9 @@ module zb_rop
       m_valid_q |-> !depth_older);
   ColorReadAfterWrite: assert property (@(posedge clk_i) disable iff (!rst_ni)
       x_valid_q[5] |-> !color_older);
-  // Only the five blend codes are loaded.
+  // Only the six blend codes are loaded.
   BlendCodeValid: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      state_we_i |-> (state_i.blend <= zb_pkg::BlendUnder));
+      state_we_i |-> (state_i.blend <= zb_pkg::BlendAccumulate));
 `endif
 `endif
 

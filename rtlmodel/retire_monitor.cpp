@@ -69,10 +69,15 @@ bool RetireMonitor::observe(const RetirePort& p, uint64_t tile_cycle, size_t acc
     go_ = take(RetireStage::kX4, p.x4_addr & mask, tile_cycle, p.x4_valid ? accepted : 0, w) &&
           go_;
   }
-  if (p.x11_valid || p.cwe) {
+  if (p.x11_valid || p.cwe || p.awe) {
     PixelWrites w;
     w.color = p.cwe;
     w.rgba = p.cwe ? unpack_rgba(p.wcolor) : Rgba8{};
+    w.accum = p.awe;
+    if (p.awe) {
+      w.acc = p.wacc.acc;
+      w.reveal = p.wacc.reveal;
+    }
     go_ = take(RetireStage::kX11, p.x11_addr & mask, tile_cycle, p.x11_valid ? accepted : 0, w) &&
           go_;
   }

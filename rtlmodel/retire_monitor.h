@@ -17,11 +17,12 @@ namespace zb {
 
 // zb_rop's mon_* outputs after a rising edge: the writes the planes take at the next one.
 struct RetirePort {
-  bool x4_valid = false, dwe = false, vwe = false, x11_valid = false, cwe = false;
+  bool x4_valid = false, dwe = false, vwe = false, x11_valid = false, cwe = false, awe = false;
   uint32_t x4_addr = 0, wdepth = 0, wcov = 0, x11_addr = 0, wcolor = 0;
+  AccumWord wacc;
 };
 
-// X4 writes depth and coverage, X11 colour.
+// X4 writes depth and coverage, X11 colour or (accumulate mode) the accumulation word.
 enum class RetireStage : uint8_t { kX4, kX11 };
 const char* to_string(RetireStage s);
 
@@ -38,7 +39,7 @@ struct Retire {
   int x = 0, y = 0;                 // the pixel
   int tile_x0 = 0, tile_y0 = 0;
   uint64_t tile_cycle = 0;          // cycles since the tile's setup cycle; the write's edge ends it
-  PixelWrites writes;               // the RTL's: X4 depth and coverage, X11 colour
+  PixelWrites writes;               // the RTL's: X4 depth and coverage, X11 colour, accumulation
 };
 
 // Beat `beat` of the tile at (tile_x0, tile_y0) as the store read it.

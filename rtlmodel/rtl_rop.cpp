@@ -61,6 +61,9 @@ static_assert(VParams::DEPTH_BITS == kRtlDepthBits, "tb mirror of DEPTH_BITS dis
 static_assert(VParams::COV_SAMPLES == kRtlCoverageSamples, "tb mirror of COV_SAMPLES disagrees");
 static_assert(VParams::CNT_W == 32, "the driver reads 32-bit counters");
 static_assert(VParams::BEAT == kRtlBeat, "tb mirror of BEAT disagrees with the RTL");
+static_assert(VParams::ACC_BITS == kRtlWboit.acc_bits, "tb mirror of ACC_BITS disagrees");
+static_assert(VParams::REV_BITS == kRtlWboit.rev_bits, "tb mirror of REV_BITS disagrees");
+static_assert(VParams::WEIGHT_BITS == kRtlWboit.weight_bits, "tb mirror of WEIGHT_BITS disagrees");
 
 namespace {
 
@@ -84,10 +87,10 @@ struct XorShift {
   }
 };
 
-// Lane `lane` (`width` bits) of a tile port: a Verilated integer up to 64 bits, VlWide beyond.
+// Bits [lo, lo + width) of a port, width at most 32: a Verilated integer up to 64 bits,
+// VlWide beyond.
 template <class Port>
-void put_lane(Port& port, unsigned lane, unsigned width, uint32_t v) {
-  const unsigned lo = lane * width;
+void put_bits(Port& port, unsigned lo, unsigned width, uint32_t v) {
   if constexpr (std::is_integral_v<Port>) {
     const uint64_t m = (width >= 64 ? ~uint64_t{0} : (uint64_t{1} << width) - 1) << lo;
     port = Port((uint64_t(port) & ~m) | (uint64_t{v} << lo & m));
@@ -101,8 +104,7 @@ void put_lane(Port& port, unsigned lane, unsigned width, uint32_t v) {
   }
 }
 template <class Port>
-uint32_t get_lane(const Port& port, unsigned lane, unsigned width) {
-  const unsigned lo = lane * width;
+uint32_t get_bits(const Port& port, unsigned lo, unsigned width) {
   if constexpr (std::is_integral_v<Port>) {
     return uint32_t(uint64_t(port) >> lo & ((uint64_t{1} << width) - 1));
   } else {
@@ -116,13 +118,42 @@ uint32_t get_lane(const Port& port, unsigned lane, unsigned width) {
   }
 }
 
-// The tile port's lane widths per plane (kPlane* order: colour pack_rgba, depth, coverage
-// count, peel depth).
+// Lane `lane` of a tile port whose lanes are `width` bits.
+template <class Port>
+void put_lane(Port& port, unsigned lane, unsigned width, uint32_t v) {
+  put_bits(port, lane * width, width, v);
+}
+template <class Port>
+uint32_t get_lane(const Port& port, unsigned lane, unsigned width) {
+  return get_bits(port, lane * width, width);
+}
+
+// The accumulation word {r, acc_A, acc_B, acc_G, acc_R} at word `index` of a port.
+constexpr unsigned kAccBits = unsigned(kRtlWboit.acc_bits), kRevBits = unsigned(kRtlWboit.rev_bits);
+constexpr unsigned kAccumBits = 4 * kAccBits + kRevBits;
+template <class Port>
+void put_accum(Port& port, unsigned index, const AccumWord& w) {
+  const unsigned lo = index * kAccumBits;
+  for (unsigned c = 0; c < 4; ++c) put_bits(port, lo + c * kAccBits, kAccBits, w.acc[c]);
+  put_bits(port, lo + 4 * kAccBits, kRevBits, w.reveal);
+}
+template <class Port>
+AccumWord get_accum(const Port& port, unsigned index) {
+  const unsigned lo = index * kAccumBits;
+  AccumWord w;
+  for (unsigned c = 0; c < 4; ++c) w.acc[c] = get_bits(port, lo + c * kAccBits, kAccBits);
+  w.reveal = get_bits(port, lo + 4 * kAccBits, kRevBits);
+  return w;
+}
+
+// The tile port's lane widths per word plane (kPlane* order: colour pack_rgba, depth,
+// coverage count, peel depth).
 constexpr unsigned kColorBits = 32, kDepthBits = kRtlDepthBits,
                    kCovBits = coverage_bits(kRtlCoverageSamples);
-constexpr unsigned kLaneBits[kTilePlanes] = {kColorBits, kDepthBits, kCovBits, kDepthBits};
+constexpr unsigned kLaneBits[kWordPlanes] = {kColorBits, kDepthBits, kCovBits, kDepthBits};
 
-// The beat the tile port read at the last edge (colour, depth, coverage; peel is never stored).
+// The beat the tile port read at the last edge (colour, depth, coverage, accumulation; peel is
+// never stored).
 template <class Model>
 BeatWords read_beat(const Model& t) {
   BeatWords w{};
@@ -130,11 +161,12 @@ BeatWords read_beat(const Model& t) {
     w[0][l] = get_lane(t.tile_rcolor_o, l, kColorBits);
     w[1][l] = get_lane(t.tile_rdepth_o, l, kDepthBits);
     w[2][l] = get_lane(t.tile_rcov_o, l, kCovBits);
+    w.accum[l] = get_accum(t.tile_racc_o, l);
   }
   return w;
 }
 
-// A beat onto the tile port's write lanes (colour, depth, coverage, peel).
+// A beat onto the tile port's write lanes (colour, depth, coverage, peel, accumulation).
 template <class Model>
 void put_beat(Model& t, const BeatWords& w) {
   for (unsigned l = 0; l < unsigned(kRtlBeat); ++l) {
@@ -142,7 +174,22 @@ void put_beat(Model& t, const BeatWords& w) {
     put_lane(t.tile_wdepth_i, l, kDepthBits, w[1][l]);
     put_lane(t.tile_wcov_i, l, kCovBits, w[2][l]);
     put_lane(t.tile_wpeel_i, l, kDepthBits, w[3][l]);
+    put_accum(t.tile_wacc_i, l, w.accum[l]);
   }
+}
+
+// Random bits for every lane of `w`'s planes not in `keep` (kPlane* mask): lanes the RTL must
+// not read.
+template <class Bits>
+void scramble(BeatWords& w, uint8_t keep, Bits&& bits) {
+  for (size_t pl = 0; pl < kWordPlanes; ++pl)
+    if (!(keep >> pl & 1))
+      for (auto& v : w[pl]) v = bits(kLaneBits[pl]);
+  if (!(keep & kPlaneAccum))
+    for (AccumWord& a : w.accum) {
+      for (uint32_t& c : a.acc) c = bits(kAccBits);
+      a.reveal = bits(kRevBits);
+    }
 }
 
 // A fragment as streamed: the datapath's fields and its index in the pass.
@@ -302,6 +349,9 @@ struct Sim {
     p.x11_index = wave.x11_index;
     p.x11_golden_cwe = wave.x11_cwe;
     p.x11_golden_color = wave.x11_color;
+    p.x11_golden_awe = wave.x11_awe;
+    for (unsigned c = 0; c < 4; ++c) p.x11_golden_acc[c] = wave.x11_acc[c];
+    p.x11_golden_reveal = wave.x11_reveal;
     p.mismatch = wave.mismatch || cycle == view.mismatch;
     p.eval();
   }
@@ -355,11 +405,10 @@ struct RtlRop::Impl {
     while ((1u << beat_aw) < unsigned(sweep.beats())) ++beat_aw;
     auto idle_tile_port = [&] {
       t.tile_we_i = bits(1);
-      t.tile_planes_i = bits(4);
+      t.tile_planes_i = bits(kTilePlanes);
       t.tile_addr_i = bits(beat_aw);
       BeatWords w;
-      for (size_t pl = 0; pl < kTilePlanes; ++pl)
-        for (auto& v : w[pl]) v = bits(kLaneBits[pl]);
+      scramble(w, 0, bits);
       put_beat(t, w);
     };
     auto idle_fragment = [&] {
@@ -408,6 +457,8 @@ struct RtlRop::Impl {
       p.x11_addr = t.mon_x11_addr_o;
       p.cwe = t.mon_cwe_o;
       p.wcolor = t.mon_wcolor_o;
+      p.awe = t.mon_awe_o;
+      p.wacc = get_accum(t.mon_wacc_o, 0);
       go = s.monitor->observe(p, s.cycle - run.load_begin, k) && go;
     };
     t.tile_x0_i = x0;
@@ -432,9 +483,7 @@ struct RtlRop::Impl {
       for (int k = 0; k < sweep.beats(); ++k) {
         t.tile_addr_i = k;
         BeatWords w = sweep.load(src, k);
-        for (size_t pl = 0; pl < kTilePlanes; ++pl)  // the planes not loaded: unread lanes
-          if (!(io.load >> pl & 1))
-            for (auto& v : w[pl]) v = bits(kLaneBits[pl]);
+        scramble(w, io.load, bits);  // the planes not loaded: unread lanes
         put_beat(t, w);
         s.tick();
         refuses("tile_req_i (a load)");
@@ -608,13 +657,19 @@ struct RtlRop::Impl {
       t.tile_addr_i = uint32_t(b);
       s.tick();
       const BeatWords w = read_beat(t);
-      for (size_t p = 0; p < 3; ++p)
-        for (unsigned l = 0; l < unsigned(kRtlBeat); ++l)
+      for (unsigned l = 0; l < unsigned(kRtlBeat); ++l) {
+        for (size_t p = 0; p < 3; ++p)
           if ((planes >> p & 1) && w[p][l] != first[b][p][l])
             throw std::runtime_error(fmt::format(
                 "rtl: tile ({},{}) read {} {:#x} at beat {} lane {} again after its store, "
                 "which read {:#x}: the store changed the plane",
                 x0, y0, kPlane[p], w[p][l], b, l, first[b][p][l]));
+        if ((planes & kPlaneAccum) && w.accum[l] != first[b].accum[l])
+          throw std::runtime_error(fmt::format(
+              "rtl: tile ({},{}) read accumulation {} at beat {} lane {} again after its "
+              "store, which read {}: the store changed the plane",
+              x0, y0, accum_text(w.accum[l]), b, l, accum_text(first[b].accum[l])));
+      }
     }
     const uint64_t beats = first.size(), most = 2 * beats - 1;  // 2^TileCntW - 1
     t.tile_we_i = 1;
@@ -659,6 +714,13 @@ RtlRop::~RtlRop() = default;
 
 void RtlRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
                          int coverage_samples, const WboitFormat& wboit) {
+  if (wboit != kRtlWboit)
+    throw std::invalid_argument(fmt::format(
+        "rtl backend: accumulation {} bits, revealage {} bits, weight {} bits; the Verilated "
+        "zb_rop has ACC_BITS {}, REV_BITS {}, WEIGHT_BITS {} (CMake ZBLEND_RTL_ACC_BITS, "
+        "_REV_BITS, _WEIGHT_BITS)",
+        wboit.acc_bits, wboit.rev_bits, wboit.weight_bits, kRtlWboit.acc_bits,
+        kRtlWboit.rev_bits, kRtlWboit.weight_bits));
   if (coverage_samples != kRtlCoverageSamples)
     throw std::invalid_argument("rtl backend: coverage samples " +
                                 std::to_string(coverage_samples) + ", the Verilated zb_rop has " +
@@ -670,7 +732,7 @@ void RtlRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_colo
     throw std::invalid_argument("rtl backend: frame size " + std::to_string(width) + "x" +
                                 std::to_string(height) + " outside 1..65535");
   impl_->fb = Framebuffer(width, height, depth_bits, clear_color, coverage_samples, wboit);
-  impl_->tiles = TileStates(width, height, kRtlTileW, depth_bits, clear_color);
+  impl_->tiles = TileStates(width, height, kRtlTileW, depth_bits, clear_color, wboit);
   impl_->in_pass = false;
 }
 
@@ -766,7 +828,7 @@ PassStats RtlRop::end_pass() {
 }
 
 // The host's frame operation on the driver's frame copy; the next pass loads it into the
-// tile memory (colour, depth, coverage and peel planes).
+// tile memory (colour, depth, coverage, peel and accumulation planes).
 void RtlRop::frame_op(const FrameOp& op) {
   if (impl_->fb.width == 0) throw std::logic_error("rtl backend: frame_op before begin_frame");
   if (impl_->in_pass) throw std::logic_error("rtl backend: frame_op inside a pass");

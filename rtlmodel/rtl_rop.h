@@ -23,8 +23,9 @@ struct RtlOptions {
   double backpressure = 0;  // probability per cycle of stall_i, and (independently) of a valid gap
   uint64_t seed = 1;        // back-pressure pattern; deterministic
   std::string trace_path;   // FST of the whole run when set
-  // Verilator plusargs for the model. The bug build (zbrtl_bug) reads +zb_bug_window: the issue
-  // window's defect instead of the blend's (docs/testbench.md "A checker that can fail").
+  // Verilator plusargs for the model. The bug build (zbrtl_bug) reads +zb_bug_window and
+  // +zb_bug_accum: the issue window's or the accumulation's defect instead of the blend's
+  // (docs/testbench.md "A checker that can fail").
   std::vector<std::string> plusargs;
   bool assertions = true;   // the RTL's assertions; off shows what the comparison alone catches
   // Each tile's streaming cycles must be the issue schedule's (rtl_timing.h, the cost model's

@@ -8,12 +8,31 @@
 
 namespace zb {
 
+std::string accum_text(const std::array<uint32_t, 4>& acc, uint32_t reveal) {
+  return "acc(" + std::to_string(acc[0]) + "," + std::to_string(acc[1]) + "," +
+         std::to_string(acc[2]) + "," + std::to_string(acc[3]) + ") reveal " +
+         std::to_string(reveal);
+}
+std::string accum_text(const AccumWord& w) { return accum_text(w.acc, w.reveal); }
+
+AccumWord accum_clear_word(const WboitFormat& f) {
+  AccumWord w;
+  w.reveal = wboit_reveal_one(f.rev_bits);
+  return w;
+}
+
+// The plane a pass with a colour mask reads and writes: the accumulation word in accumulate
+// mode, else the colour.
+static uint8_t blended_plane(const RopState& s) {
+  if (s.color_mask == 0) return 0;
+  return s.blend == BlendMode::kAccumulate ? kPlaneAccum : kPlaneColor;
+}
+
 // As zb_rop: coverage mode reads depth (nearer) and the coverage plane; the peel test is not
-// used there. Colour is read only by a pass that writes it.
+// used there. Colour (or the accumulation word) is read only by a pass that writes it.
 uint8_t planes_read(const RopState& s) {
   const bool cov = is_coverage_pass(s);
-  uint8_t p = 0;
-  if (s.color_mask != 0) p |= kPlaneColor;
+  uint8_t p = blended_plane(s);
   if (s.depth_test || cov) p |= kPlaneDepth;
   if (cov) p |= kPlaneCoverage;
   if (s.peel_test && !cov) p |= kPlanePeel;
@@ -21,8 +40,7 @@ uint8_t planes_read(const RopState& s) {
 }
 
 uint8_t planes_written(const RopState& s) {
-  uint8_t p = 0;
-  if (s.color_mask != 0) p |= kPlaneColor;
+  uint8_t p = blended_plane(s);
   if (s.depth_test && s.depth_write) p |= kPlaneDepth;
   if (is_coverage_pass(s)) p |= kPlaneCoverage;
   return p;
@@ -30,7 +48,8 @@ uint8_t planes_written(const RopState& s) {
 
 BeatWords clear_beat(const TileIo& io) {
   BeatWords w{};
-  for (size_t p = 0; p < kTilePlanes; ++p) w[p][0] = io.clear_value[p];
+  for (size_t p = 0; p < kWordPlanes; ++p) w[p][0] = io.clear_value[p];
+  w.accum[0] = io.accum_clear;
   return w;
 }
 
@@ -53,6 +72,7 @@ BeatWords TileSweep::load(const Framebuffer& fb, int k) const {
     w[1][size_t(l)] = fb.depth[size_t(i)];
     w[2][size_t(l)] = fb.coverage[size_t(i)];
     w[3][size_t(l)] = fb.peel[size_t(i)];
+    w.accum[size_t(l)] = AccumWord{fb.accum[size_t(i)], fb.reveal[size_t(i)]};
   }
   return w;
 }
@@ -64,6 +84,10 @@ void TileSweep::store(const BeatWords& w, uint8_t planes, Framebuffer& fb, int k
     if (planes & kPlaneColor) fb.color[size_t(i)] = unpack_rgba(w[0][size_t(l)]);
     if (planes & kPlaneDepth) fb.depth[size_t(i)] = w[1][size_t(l)];
     if (planes & kPlaneCoverage) fb.coverage[size_t(i)] = uint8_t(w[2][size_t(l)]);
+    if (planes & kPlaneAccum) {
+      fb.accum[size_t(i)] = w.accum[size_t(l)].acc;
+      fb.reveal[size_t(i)] = w.accum[size_t(l)].reveal;
+    }
   }
 }
 
@@ -76,8 +100,9 @@ uint64_t tile_io_cycles(uint64_t beats, const TileIo& io) {
   return kRtlTileSetup + (io.load ? beats : 0) + (io.store ? beats : 0);
 }
 
-TileStates::TileStates(int width, int height, int tile, int depth_bits, Rgba8 clear_color)
-    : depth_bits_(depth_bits) {
+TileStates::TileStates(int width, int height, int tile, int depth_bits, Rgba8 clear_color,
+                       const WboitFormat& wboit)
+    : depth_bits_(depth_bits), accum_clear_(accum_clear_word(wboit)) {
   if (width < 1 || height < 1 || tile < 1)
     throw std::invalid_argument("tile states: empty frame or tile");
   const size_t n = size_t((width + tile - 1) / tile) * size_t((height + tile - 1) / tile);
@@ -86,6 +111,7 @@ TileStates::TileStates(int width, int height, int tile, int depth_bits, Rgba8 cl
   fresh[1] = {true, depth_max(depth_bits)};
   fresh[2] = {true, 0};
   fresh[3] = {true, 0};
+  fresh[4] = {true, 0};  // its value is accum_clear_
   planes_.assign(n, fresh);
 }
 
@@ -101,8 +127,9 @@ void TileStates::frame_op(const FrameOp& op) {
                              resolve_under(c.b, op.value.b, c.a), resolve_under(c.a, op.value.a, c.a)});
         }
         break;
-      case FrameOpKind::kResolveWboit:  // colour made per pixel from the accumulation
-        t[0].cleared = false;
+      case FrameOpKind::kResolveWboit:  // colour made per pixel from the accumulation; a
+        // cleared accumulation (acc_A = 0, r = 1.0) leaves a uniform colour as it is
+        if (!t[4].cleared) t[0].cleared = false;
         break;
     }
 }
@@ -115,7 +142,10 @@ TileIo TileStates::plan(size_t tile, const RopState& s) const {
     const Plane& pl = planes_.at(tile)[size_t(p)];
     if (pl.cleared) {
       io.clear |= uint8_t(1u << p);
-      io.clear_value[size_t(p)] = pl.value;
+      if (p == kAccumPlane)
+        io.accum_clear = accum_clear_;
+      else
+        io.clear_value[size_t(p)] = pl.value;
     } else {
       io.load |= uint8_t(1u << p);
     }

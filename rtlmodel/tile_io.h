@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "rop/fragment.h"
@@ -23,9 +24,31 @@ constexpr Rgba8 unpack_rgba(uint32_t v) {
   return {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
 }
 
-// zb_pkg::planes_t: bit p selects plane p of the tile port.
-enum : uint8_t { kPlaneColor = 1, kPlaneDepth = 2, kPlaneCoverage = 4, kPlanePeel = 8 };
-constexpr int kTilePlanes = 4;
+// zb_pkg::planes_t: bit p selects plane p of the tile port. The first four hold a word of at
+// most 32 bits a pixel (kWordPlanes); the accumulation plane (accumulate mode, docs/datapath.md
+// "7. Accumulate blend") a wider one, AccumWord.
+enum : uint8_t {
+  kPlaneColor = 1, kPlaneDepth = 2, kPlaneCoverage = 4, kPlanePeel = 8, kPlaneAccum = 16
+};
+constexpr int kTilePlanes = 5;
+constexpr int kWordPlanes = 4;
+constexpr int kAccumPlane = 4;  // kPlaneAccum's number
+
+// A pixel's accumulation word, zb_rop's {r, acc_A, acc_B, acc_G, acc_R} (acc_R at bit 0):
+// Framebuffer::accum and Framebuffer::reveal of one pixel.
+struct AccumWord {
+  std::array<uint32_t, 4> acc{};  // R, G, B, A
+  uint32_t reveal = 0;
+  friend bool operator==(const AccumWord& x, const AccumWord& y) {
+    return x.acc == y.acc && x.reveal == y.reveal;
+  }
+  friend bool operator!=(const AccumWord& x, const AccumWord& y) { return !(x == y); }
+};
+// The cleared word: accumulation 0, revealage 1.0.
+AccumWord accum_clear_word(const WboitFormat& f);
+// "acc(r,g,b,a) reveal n", for reports.
+std::string accum_text(const AccumWord& w);
+std::string accum_text(const std::array<uint32_t, 4>& acc, uint32_t reveal);
 
 // The planes a pass with state `s` may read, and may write (every pixel of a written plane is
 // stored, so it must be whole in the tile memory: loaded or fast-cleared).
@@ -33,10 +56,11 @@ uint8_t planes_read(const RopState& s);
 uint8_t planes_written(const RopState& s);
 
 // One tile's traffic in one pass: plane masks, and per plane the fast clear's value (colour
-// pack_rgba, depth, coverage count, peel depth).
+// pack_rgba, depth, coverage count, peel depth; the accumulation plane's in accum_clear).
 struct TileIo {
   uint8_t clear = 0, load = 0, store = 0;
-  std::array<uint32_t, kTilePlanes> clear_value{};
+  std::array<uint32_t, kWordPlanes> clear_value{};
+  AccumWord accum_clear;
 };
 
 // Beats of a w x h tile: a beat is `beat` neighbours of one row. Loads and stores move the
@@ -48,9 +72,15 @@ uint64_t tile_beats(int w, int h, int beat);
 constexpr uint64_t kRtlTileSetup = 1;
 uint64_t tile_io_cycles(uint64_t beats, const TileIo& io);
 
-// One beat at the built model's port: per plane (kPlane* bit order) and lane, the word (colour
-// pack_rgba, depth, coverage count, peel depth).
-using BeatWords = std::array<std::array<uint32_t, kRtlBeat>, kTilePlanes>;
+// One beat at the built model's port: per word plane (kPlane* bit order) and lane, the word
+// (colour pack_rgba, depth, coverage count, peel depth), w[p][lane]; and per lane the
+// accumulation word, w.accum[lane].
+struct BeatWords {
+  std::array<std::array<uint32_t, kRtlBeat>, kWordPlanes> words{};
+  std::array<AccumWord, kRtlBeat> accum{};
+  std::array<uint32_t, kRtlBeat>& operator[](size_t p) { return words[p]; }
+  const std::array<uint32_t, kRtlBeat>& operator[](size_t p) const { return words[p]; }
+};
 
 // The fast clear's beat: each plane's clear value in lane 0.
 BeatWords clear_beat(const TileIo& io);
@@ -64,7 +94,8 @@ class TileSweep {
   int beats() const { return int(tile_beats(kRtlTileW, kRtlTileH, kRtlBeat)); }
   // Beat k's words from `fb`: lanes beyond the frame's edge 0.
   BeatWords load(const Framebuffer& fb, int k) const;
-  // Beat k's words of `planes` (colour, depth, coverage) into `fb`, lanes within the frame.
+  // Beat k's words of `planes` (colour, depth, coverage, accumulation) into `fb`, lanes within
+  // the frame.
   void store(const BeatWords& words, uint8_t planes, Framebuffer& fb, int k) const;
   // Beat k's lane l in the frame (its index in `fb`'s planes), or -1 beyond its edge.
   int64_t pixel(const Framebuffer& fb, int k, int l) const;
@@ -79,8 +110,10 @@ class TileStates {
  public:
   TileStates() = default;
   // A frame just begun: every plane cleared (colour `clear_color`, depth the far value,
-  // coverage 0, peel 0), as Framebuffer's constructor fills it.
-  TileStates(int width, int height, int tile, int depth_bits, Rgba8 clear_color);
+  // coverage 0, peel 0, accumulation accum_clear_word(wboit)), as Framebuffer's constructor
+  // fills it.
+  TileStates(int width, int height, int tile, int depth_bits, Rgba8 clear_color,
+             const WboitFormat& wboit = {});
 
   void frame_op(const FrameOp& op);
   TileIo plan(size_t tile, const RopState& s) const;
@@ -92,6 +125,7 @@ class TileStates {
     uint32_t value = 0;
   };
   int depth_bits_ = 24;
+  AccumWord accum_clear_;
   std::vector<std::array<Plane, kTilePlanes>> planes_;
 };
 

@@ -24,7 +24,8 @@ struct Stage {
 constexpr Stage kStages[] = {
     {"u_input", "I/S: zb_input"},         {"u_window", "W: zb_issue_window"},
     {"u_depth", "X1..X4: zb_depth"},       {"u_operands", "X1..X6: zb_operands"},
-    {"u_color", "X5..X11: zb_color"},      {"u_counters", "counters: zb_counters"},
+    {"u_weight", "M..X8: zb_weight"},      {"u_color", "X5..X11: zb_color"},
+    {"u_accum", "X5..X11: zb_accum"},      {"u_counters", "counters: zb_counters"},
     {"u_tile_counters", "tile port counters: zb_counters"},
 };
 
@@ -104,13 +105,17 @@ void WaveProbe::retire(const Retire& r, const PixelWrites* g) {
     x11_index = r.fragment;
     x11_cwe = g && g->color;
     x11_color = g ? pack_rgba(g->rgba) : 0;
+    x11_awe = g && g->accum;
+    x11_acc = g ? g->acc : std::array<uint32_t, 4>{};
+    x11_reveal = g ? g->reveal : 0;
   }
 }
 
 void WaveProbe::next_cycle() {
-  x4_retire = x4_dwe = x4_vwe = x11_retire = x11_cwe = mismatch = false;
+  x4_retire = x4_dwe = x4_vwe = x11_retire = x11_cwe = x11_awe = mismatch = false;
   x4_index = x11_index = kNone;
-  x4_depth = x4_cov = x11_color = 0;
+  x4_depth = x4_cov = x11_color = x11_reveal = 0;
+  x11_acc = {};
 }
 
 bool ProbeSink::retire(const Retire& r) {

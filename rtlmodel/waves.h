@@ -3,6 +3,7 @@
 // its rising edge (where the cycle's inputs are sampled and its writes land) at c * 10 + 5 ns.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -40,8 +41,9 @@ struct WaveProbe {
   uint32_t pass_no = 0, frag_index = kNone, frag_prim = kNone;
   bool x4_retire = false, x4_dwe = false, x4_vwe = false;
   uint32_t x4_index = kNone, x4_depth = 0, x4_cov = 0;
-  bool x11_retire = false, x11_cwe = false;
-  uint32_t x11_index = kNone, x11_color = 0;
+  bool x11_retire = false, x11_cwe = false, x11_awe = false;
+  uint32_t x11_index = kNone, x11_color = 0, x11_reveal = 0;
+  std::array<uint32_t, 4> x11_acc{};
   bool mismatch = false;
   void retire(const Retire& r, const PixelWrites* golden);
   void next_cycle();  // after a rising edge: the retires and the flag were that cycle's

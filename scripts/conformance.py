@@ -23,6 +23,7 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SUITE_VERSION = 2  # conformance/suite.h kSuiteVersion
 SV = os.path.join(ROOT, "conformance", "sv")
 
 
@@ -107,8 +108,8 @@ def load_suite(suite, only):
             m = json.load(f)
     except (OSError, ValueError) as e:
         usage_error(f"{path}: {e} (write a suite with `zblend conformance export DIR`)")
-    if m.get("suite") != "zblend-conformance" or m.get("version") != 1:
-        usage_error(f"{path}: not a version 1 zblend conformance suite")
+    if m.get("suite") != "zblend-conformance" or m.get("version") != SUITE_VERSION:
+        usage_error(f"{path}: not a version {SUITE_VERSION} zblend conformance suite")
     configs = {c["name"]: c for c in m["configs"]}
     tests = m["tests"]
     if only:

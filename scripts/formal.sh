@@ -63,6 +63,8 @@ done
 RopSmall="TILE=2 BEAT=2 DEPTH_BITS=8 COV_SAMPLES=1 CNT_W=2"
 jobs=(
   "mul8|induction|2|2|yes|zb_mul8_check||smtbmc"
+  "mul_term|induction|2|2|no|zb_mul8_check|K_W=12|smtbmc"
+  "mul_reveal|induction|2|2|no|zb_mul8_check|K_W=9 V_W=9|smtbmc"
   "premul_c0|induction|4|4|yes|zb_premul_check|CHAN=0|smtbmc"
   "premul_c1|induction|4|4|no|zb_premul_check|CHAN=1|smtbmc"
   "premul_c2|induction|4|4|no|zb_premul_check|CHAN=2|smtbmc"
@@ -91,7 +93,8 @@ defects=(
   "stream_skid_drops|stream|force dut.u_input.s_valid_d=1'b0|"
   "window_hits_lost|window|force dut.hit_q=6'b0|"
   "raw_depth_forward_off|raw|force dut.u_depth.dfwd_hit_q=1'b0|"
-  "raw_color_bypass_off|raw|force dut.u_color.byp_hit_q=1'b0|"
+  "raw_color_bypass_off|raw|force dut.u_color.u_forward.byp_hit_q=1'b0|"
+  "raw_accum_bypass_off|raw|force dut.u_accum.u_forward.byp_hit_q=1'b0|"
   "raw_interlock_off|raw|force dut.u_window.hit_q=6'b0|"
 )
 

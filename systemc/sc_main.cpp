@@ -44,10 +44,14 @@ std::vector<std::pair<std::string, zb::Trace>> make_traces(const Options& o) {
       throw UsageError(fmt::format("--trace: {}", e.what()));
     }
     const zb::Trace& t = out.back().second;
-    if (t.depth_bits != zb::kRtlDepthBits || t.coverage_samples != zb::kRtlCoverageSamples)
+    if (t.depth_bits != zb::kRtlDepthBits || t.coverage_samples != zb::kRtlCoverageSamples ||
+        t.wboit != zb::kRtlWboit)
       throw UsageError(fmt::format(
-          "--trace: {} depth bits and {} coverage samples; the Verilated zb_rop has {} and {}",
-          t.depth_bits, t.coverage_samples, zb::kRtlDepthBits, zb::kRtlCoverageSamples));
+          "--trace: {} depth bits, {} coverage samples, accumulation/revealage/weight bits "
+          "{}/{}/{}; the Verilated zb_rop has {}, {}, {}/{}/{}",
+          t.depth_bits, t.coverage_samples, t.wboit.acc_bits, t.wboit.rev_bits,
+          t.wboit.weight_bits, zb::kRtlDepthBits, zb::kRtlCoverageSamples, zb::kRtlWboit.acc_bits,
+          zb::kRtlWboit.rev_bits, zb::kRtlWboit.weight_bits));
     return out;
   }
   const zb::Viewport vp = zb::app::check_viewport(o.width, o.height, zb::kDefaultDepthBits);

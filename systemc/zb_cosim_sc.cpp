@@ -40,14 +40,16 @@ void ZbCosimSc::compare(CosimResult& r, const char* where) {
       const size_t i = g.index(x, y);
       const Rgba8 a = g.color[i], b = t.color[i];
       if (a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a && g.depth[i] == t.depth[i] &&
-          g.coverage[i] == t.coverage[i] && g.peel[i] == t.peel[i])
+          g.coverage[i] == t.coverage[i] && g.peel[i] == t.peel[i] && g.accum[i] == t.accum[i] &&
+          g.reveal[i] == t.reveal[i])
         continue;
       if (r.mismatches++ == 0)
         r.first_mismatch = fmt::format(
-            "{}: pixel ({},{}): golden rgba {},{},{},{} depth {} coverage {} peel {}; "
-            "rtl rgba {},{},{},{} depth {} coverage {} peel {}", where, x, y, a.r, a.g, a.b, a.a,
-            g.depth[i], g.coverage[i], g.peel[i], b.r, b.g, b.b, b.a, t.depth[i], t.coverage[i],
-            t.peel[i]);
+            "{}: pixel ({},{}): golden rgba {},{},{},{} depth {} coverage {} peel {} {}; "
+            "rtl rgba {},{},{},{} depth {} coverage {} peel {} {}", where, x, y, a.r, a.g, a.b,
+            a.a, g.depth[i], g.coverage[i], g.peel[i], accum_text(g.accum[i], g.reveal[i]), b.r,
+            b.g, b.b, b.a, t.depth[i], t.coverage[i], t.peel[i],
+            accum_text(t.accum[i], t.reveal[i]));
     }
 }
 
@@ -58,7 +60,7 @@ CosimResult ZbCosimSc::run_trace(const std::string& name, const Trace& t) {
   const sc_core::sc_time golden0 = golden_.busy_time(), rtl0 = rtl_.busy_time();
   const uint64_t gtile0 = golden_.tile_io_cycles(), rtile0 = rtl_.tile_io_cycles();
   send(PassCommand::begin_frame(t.width, t.height, t.depth_bits, t.clear_color,
-                                t.coverage_samples));
+                                t.coverage_samples, t.wboit));
   for (size_t p = 0; p < t.passes.size(); ++p) {
     const TracePass& pass = t.passes[p];
     for (const FrameOp& op : pass.frame_ops) send(PassCommand::frame_op(op));

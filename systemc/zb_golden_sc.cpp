@@ -22,7 +22,7 @@ void ZbGoldenSc::run() {
     const PassCommand c = cmd_i.read();
     switch (c.kind) {
       case PassCommand::Kind::kBeginFrame:
-        rop_.begin_frame(c.width, c.height, c.depth_bits, c.clear, c.coverage_samples);
+        rop_.begin_frame(c.width, c.height, c.depth_bits, c.clear, c.coverage_samples, c.wboit);
         tiles_ = TileStates(c.width, c.height, kRtlTileW, c.depth_bits, c.clear);
         break;
       case PassCommand::Kind::kBeginPass:

@@ -14,28 +14,58 @@ static_assert(Vzb_rop_sc_zb_rop::TILE_W == kRtlTileW, "zbsc_vlt's TILE_W disagre
 static_assert(Vzb_rop_sc_zb_rop::DEPTH_BITS == kRtlDepthBits, "DEPTH_BITS disagrees");
 static_assert(Vzb_rop_sc_zb_rop::COV_SAMPLES == kRtlCoverageSamples, "COV_SAMPLES disagrees");
 static_assert(Vzb_rop_sc_zb_rop::BEAT == kRtlBeat, "BEAT disagrees");
+static_assert(Vzb_rop_sc_zb_rop::ACC_BITS == kRtlWboit.acc_bits, "ACC_BITS disagrees");
+static_assert(Vzb_rop_sc_zb_rop::REV_BITS == kRtlWboit.rev_bits, "REV_BITS disagrees");
+static_assert(Vzb_rop_sc_zb_rop::WEIGHT_BITS == kRtlWboit.weight_bits, "WEIGHT_BITS disagrees");
 
 namespace {
 
 constexpr uint64_t kDrainLimit = 1000;  // as rtlmodel/rtl_rop.cpp: cycles busy_o may stay high
 
-// Lane `lane` of `width` bits in a tile port's value: an integer up to 64 bits, sc_bv beyond.
+// Bits [lo, lo + width) of a port's value, width at most 32: an integer up to 64 bits, sc_bv
+// beyond.
 template <class T>
-void put_lane(T& v, int lane, int width, uint32_t x) {
+void put_bits(T& v, int lo, int width, uint32_t x) {
   if constexpr (std::is_integral_v<T>) {
-    const uint64_t m = ((uint64_t{1} << width) - 1) << (lane * width);
-    v = T((uint64_t(v) & ~m) | (uint64_t{x} << (lane * width) & m));
+    const uint64_t m = ((uint64_t{1} << width) - 1) << lo;
+    v = T((uint64_t(v) & ~m) | (uint64_t{x} << lo & m));
   } else {
-    v.range(lane * width + width - 1, lane * width) = x;
+    v.range(lo + width - 1, lo) = x;
   }
 }
 template <class T>
-uint32_t get_lane(const T& v, int lane, int width) {
+uint32_t get_bits(const T& v, int lo, int width) {
   if constexpr (std::is_integral_v<T>) {
-    return uint32_t(uint64_t(v) >> (lane * width) & ((uint64_t{1} << width) - 1));
+    return uint32_t(uint64_t(v) >> lo & ((uint64_t{1} << width) - 1));
   } else {
-    return v.range(lane * width + width - 1, lane * width).to_uint();
+    return v.range(lo + width - 1, lo).to_uint();
   }
+}
+// Lane `lane` of `width` bits in a tile port's value.
+template <class T>
+void put_lane(T& v, int lane, int width, uint32_t x) {
+  put_bits(v, lane * width, width, x);
+}
+template <class T>
+uint32_t get_lane(const T& v, int lane, int width) {
+  return get_bits(v, lane * width, width);
+}
+// The accumulation word {r, acc_A, acc_B, acc_G, acc_R} at word `index`.
+constexpr int kAccBits = kRtlWboit.acc_bits, kRevBits = kRtlWboit.rev_bits;
+constexpr int kAccumW = 4 * kAccBits + kRevBits;
+template <class T>
+void put_accum(T& v, int index, const AccumWord& w) {
+  for (int c = 0; c < 4; ++c)
+    put_bits(v, index * kAccumW + c * kAccBits, kAccBits, w.acc[size_t(c)]);
+  put_bits(v, index * kAccumW + 4 * kAccBits, kRevBits, w.reveal);
+}
+template <class T>
+AccumWord get_accum(const T& v, int index) {
+  AccumWord w;
+  for (int c = 0; c < 4; ++c)
+    w.acc[size_t(c)] = get_bits(v, index * kAccumW + c * kAccBits, kAccBits);
+  w.reveal = get_bits(v, index * kAccumW + 4 * kAccBits, kRevBits);
+  return w;
 }
 
 // The model's plusargs, set before it exists: none. The bug build reads them ($test$plusargs) and
@@ -73,10 +103,12 @@ ZbRtlSc::ZbRtlSc(sc_core::sc_module_name name)
   r.tile_wdepth_i(tile_wdepth_);
   r.tile_wcov_i(tile_wcov_);
   r.tile_wpeel_i(tile_wpeel_);
+  r.tile_wacc_i(tile_wacc_);
   r.tile_rcolor_o(tile_rcolor_);
   r.tile_rdepth_o(tile_rdepth_);
   r.tile_rcov_o(tile_rcov_);
   r.tile_rpeel_o(tile_rpeel_);
+  r.tile_racc_o(tile_racc_);
   r.busy_o(busy_);
   r.cnt_clear_i(cnt_clear_);
   r.cnt_frag_in_o(cnt_frag_in_);
@@ -100,6 +132,8 @@ ZbRtlSc::ZbRtlSc(sc_core::sc_module_name name)
   r.mon_x11_addr_o(mon_x11_addr_);
   r.mon_cwe_o(mon_cwe_);
   r.mon_wcolor_o(mon_wcolor_);
+  r.mon_awe_o(mon_awe_);
+  r.mon_wacc_o(mon_wacc_);
   SC_HAS_PROCESS(ZbRtlSc);
   SC_THREAD(run);
 }
@@ -126,12 +160,14 @@ void ZbRtlSc::run() {
     const PassCommand c = cmd_i.read();
     switch (c.kind) {
       case PassCommand::Kind::kBeginFrame:
-        if (c.coverage_samples != kRtlCoverageSamples || c.depth_bits != kRtlDepthBits)
+        if (c.coverage_samples != kRtlCoverageSamples || c.depth_bits != kRtlDepthBits ||
+            c.wboit != kRtlWboit)
           throw std::invalid_argument("zb_rtl_sc: the Verilated zb_rop has " +
-                                      std::to_string(kRtlDepthBits) + " depth bits and " +
-                                      std::to_string(kRtlCoverageSamples) + " coverage samples");
-        fb_ = Framebuffer(c.width, c.height, c.depth_bits, c.clear, c.coverage_samples);
-        tiles_ = TileStates(c.width, c.height, kRtlTileW, c.depth_bits, c.clear);
+                                      std::to_string(kRtlDepthBits) + " depth bits, " +
+                                      std::to_string(kRtlCoverageSamples) + " coverage samples "
+                                      "and the build's ACC_BITS, REV_BITS and WEIGHT_BITS");
+        fb_ = Framebuffer(c.width, c.height, c.depth_bits, c.clear, c.coverage_samples, c.wboit);
+        tiles_ = TileStates(c.width, c.height, kRtlTileW, c.depth_bits, c.clear, c.wboit);
         break;
       case PassCommand::Kind::kBeginPass:
         state_value_ = c.state;
@@ -176,16 +212,19 @@ void ZbRtlSc::run_tile(size_t tile, int x0, int y0, uint32_t b, uint32_t e, Pass
     Bits<kRtlBeat * 32> color{};
     Bits<kRtlBeat * kRtlDepthBits> depth{}, peel{};
     Bits<kRtlBeat * kCovW> cov{};
+    Bits<kRtlBeat * kAccumW> acc{};
     for (int l = 0; l < kRtlBeat; ++l) {
       put_lane(color, l, 32, w[0][size_t(l)]);
       put_lane(depth, l, kRtlDepthBits, w[1][size_t(l)]);
       put_lane(cov, l, kCovW, w[2][size_t(l)]);
       put_lane(peel, l, kRtlDepthBits, w[3][size_t(l)]);
+      put_accum(acc, l, w.accum[size_t(l)]);
     }
     tile_wcolor_.write(color);
     tile_wdepth_.write(depth);
     tile_wcov_.write(cov);
     tile_wpeel_.write(peel);
+    tile_wacc_.write(acc);
   };
   put_beat(clear_beat(io));
   tile_clear_.write(io.clear != 0);
@@ -269,6 +308,7 @@ void ZbRtlSc::run_tile(size_t tile, int x0, int y0, uint32_t b, uint32_t e, Pass
         w[0][size_t(l)] = get_lane(tile_rcolor_.read(), l, 32);
         w[1][size_t(l)] = get_lane(tile_rdepth_.read(), l, kRtlDepthBits);
         w[2][size_t(l)] = get_lane(tile_rcov_.read(), l, kCovW);
+        w.accum[size_t(l)] = get_accum(tile_racc_.read(), l);
       }
       sweep.store(w, io.store, fb_, k);
     }

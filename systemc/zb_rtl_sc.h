@@ -53,6 +53,7 @@ class ZbRtlSc : public sc_core::sc_module {
   using Bits = std::conditional_t<W <= 32, uint32_t,
                                   std::conditional_t<W <= 64, uint64_t, sc_dt::sc_bv<W>>>;
   static constexpr int kCovW = coverage_bits(kRtlCoverageSamples);
+  static constexpr int kAccumW = 4 * kRtlWboit.acc_bits + kRtlWboit.rev_bits;
   Sig<bool> rst_n_, state_we_, frag_valid_, frag_ready_, stall_, tile_req_, tile_we_, tile_clear_,
       busy_, cnt_clear_;
   Sig<uint32_t> state_, tile_x0_, tile_y0_, frag_x_, frag_y_, frag_z_, frag_rgba_, frag_cov_,
@@ -62,10 +63,12 @@ class ZbRtlSc : public sc_core::sc_module {
   Sig<Bits<kRtlBeat * 32>> tile_wcolor_, tile_rcolor_;
   Sig<Bits<kRtlBeat * kRtlDepthBits>> tile_wdepth_, tile_rdepth_, tile_wpeel_, tile_rpeel_;
   Sig<Bits<kRtlBeat * kCovW>> tile_wcov_, tile_rcov_;
+  Sig<Bits<kRtlBeat * kAccumW>> tile_wacc_, tile_racc_;
   // The retire port: bound because SystemC needs every port bound; the lock-step monitor is the
   // C++ testbench's (tb/).
-  Sig<bool> mon_x4_valid_, mon_dwe_, mon_vwe_, mon_x11_valid_, mon_cwe_;
+  Sig<bool> mon_x4_valid_, mon_dwe_, mon_vwe_, mon_x11_valid_, mon_cwe_, mon_awe_;
   Sig<uint32_t> mon_x4_addr_, mon_wdepth_, mon_wcov_, mon_x11_addr_, mon_wcolor_;
+  Sig<Bits<kAccumW>> mon_wacc_;
   std::unique_ptr<Vzb_rop_sc> rtl_;
 
   Framebuffer fb_;

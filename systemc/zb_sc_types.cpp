@@ -2,7 +2,8 @@
 
 namespace zb::sc {
 
-PassCommand PassCommand::begin_frame(int w, int h, int depth_bits, Rgba8 clear, int samples) {
+PassCommand PassCommand::begin_frame(int w, int h, int depth_bits, Rgba8 clear, int samples,
+                                     const WboitFormat& wboit) {
   PassCommand c;
   c.kind = Kind::kBeginFrame;
   c.width = w;
@@ -10,6 +11,7 @@ PassCommand PassCommand::begin_frame(int w, int h, int depth_bits, Rgba8 clear, 
   c.depth_bits = depth_bits;
   c.clear = clear;
   c.coverage_samples = samples;
+  c.wboit = wboit;
   return c;
 }
 

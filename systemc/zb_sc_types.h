@@ -18,13 +18,15 @@ struct PassCommand {
   int width = 0, height = 0, depth_bits = kDefaultDepthBits;
   Rgba8 clear{};
   int coverage_samples = kDefaultCoverageSamples;
+  WboitFormat wboit{};
   // kBeginPass
   RopState state{};
   uint64_t fragments = 0;
   // kFrameOp
   FrameOp op{};
 
-  static PassCommand begin_frame(int w, int h, int depth_bits, Rgba8 clear, int samples);
+  static PassCommand begin_frame(int w, int h, int depth_bits, Rgba8 clear, int samples,
+                                 const WboitFormat& wboit);
   static PassCommand begin_pass(const RopState& s, uint64_t fragments);
   static PassCommand end_pass();
   static PassCommand frame_op(const FrameOp& op);

@@ -1,7 +1,7 @@
 // Co-simulation: the golden model and the RTL in lock-step on the same calls. Every write the
 // RTL makes is compared at its cycle with the golden model's write for that fragment
-// (scoreboard.h); after every pass and frame operation every colour, depth, coverage and peel
-// bit of the frame is compared too, and the pass counters. The first mismatch stops the run
+// (scoreboard.h); after every pass and frame operation every colour, depth, coverage, peel,
+// accumulation and revealage bit of the frame is compared too, and the pass counters. The first mismatch stops the run
 // with a report naming both sides and an FST of the cycles around it.
 #pragma once
 

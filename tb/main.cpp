@@ -161,9 +161,9 @@ void add_options(CLI::App& app, Config& c, Args& a) {
 #ifdef ZB_TB_BUG  // zblend_tb_bug: the RTL holds deliberate defects, one switched on per run
   app.add_option("--defect", a.defect,
                  "the injected defect: blend (alpha blend with an odd source alpha flips red "
-                 "bit 0) or window (the issue window lets a fragment pass an older one to its "
-                 "pixel)")
-      ->check(CLI::IsMember({"blend", "window"}))
+                 "bit 0), window (the issue window lets a fragment pass an older one to its "
+                 "pixel) or accum (the accumulation word's bypass is never taken)")
+      ->check(CLI::IsMember({"blend", "window", "accum"}))
       ->capture_default_str();
 #endif
 #ifdef ZB_TB_MUT  // zblend_tb_mut: the RTL is Yosys's mutant netlist (docs/mutation.md)
@@ -190,6 +190,7 @@ void check_args(const CLI::App& app, Config& c, const Args& a) {
   c.iterations = a.iterations;
   c.fragments = static_cast<uint64_t>(a.fragments);
   if (a.defect == "window") c.plusargs.push_back("+zb_bug_window");
+  if (a.defect == "accum") c.plusargs.push_back("+zb_bug_accum");
   if (a.mutant) c.plusargs.push_back(fmt::format("+zb_mutant={}", a.mutant));
   // The mismatch waveform's directory is made only if a mismatch writes it.
   app::check_outputs({{"--mismatch-fst", c.mismatch_fst, ".fst"}});

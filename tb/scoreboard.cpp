@@ -17,7 +17,8 @@ bool same(RetireStage stage, const PixelWrites& r, const PixelWrites& g) {
   if (stage == RetireStage::kX4)
     return r.depth == g.depth && (!r.depth || r.z == g.z) && r.coverage == g.coverage &&
            (!r.coverage || r.cov == g.cov);
-  return r.color == g.color && (!r.color || r.rgba == g.rgba);
+  return r.color == g.color && (!r.color || r.rgba == g.rgba) && r.accum == g.accum &&
+         (!r.accum || (r.acc == g.acc && r.reveal == g.reveal));
 }
 
 // Earlier in one model's time: tiles run in tile order, then by cycle.
@@ -33,7 +34,8 @@ std::string describe_writes(RetireStage stage, const PixelWrites& w, int depth_b
   if (stage == RetireStage::kX4)
     return (w.depth ? fmt::format("depth 0x{:0{}x}", w.z, zd) : std::string("no depth")) +
            (w.coverage ? fmt::format(", coverage {}", w.cov) : std::string(", no coverage"));
-  return w.color ? "colour " + rgba_text(w.rgba) : std::string("no colour");
+  return (w.color ? "colour " + rgba_text(w.rgba) : std::string("no colour")) +
+         (w.accum ? ", accumulation " + accum_text(w.acc, w.reveal) : std::string());
 }
 
 void Scoreboard::begin_pass() {
@@ -91,22 +93,28 @@ bool Scoreboard::store(const StoreBeat& b) {
   for (int l = 0; l < kRtlBeat; ++l) {
     const int64_t i = sweep.pixel(*golden_, b.beat, l);
     if (i < 0) continue;
+    Divergence d;
+    d.store = true;
+    d.retire.x = int(i % golden_->width);
+    d.retire.y = int(i / golden_->width);
+    d.retire.tile_x0 = b.tile_x0;
+    d.retire.tile_y0 = b.tile_y0;
+    d.retire.tile_cycle = b.tile_cycle;
+    d.retire.stage = RetireStage::kX11;  // after every retire of the tile
     for (int p = 0; p < 3; ++p) {
       if (!(b.planes & (1u << p))) continue;
       const uint32_t got = (*b.words)[size_t(p)][size_t(l)], exp = want[size_t(p)][size_t(l)];
       if (got == exp) continue;
-      Divergence d;
-      d.store = true;
-      d.retire.x = int(i % golden_->width);
-      d.retire.y = int(i / golden_->width);
-      d.retire.tile_x0 = b.tile_x0;
-      d.retire.tile_y0 = b.tile_y0;
-      d.retire.tile_cycle = b.tile_cycle;
-      d.retire.stage = RetireStage::kX11;  // after every retire of the tile
       d.what = p == 0 ? fmt::format("tile store beat {} lane {}: colour rtl {} golden {}", b.beat,
                                     l, rgba_text(unpack_rgba(got)), rgba_text(unpack_rgba(exp)))
                       : fmt::format("tile store beat {} lane {}: {} rtl 0x{:x} golden 0x{:x}",
                                     b.beat, l, kNames[p], got, exp);
+      return diverge(std::move(d));
+    }
+    const AccumWord& got = b.words->accum[size_t(l)];
+    if ((b.planes & kPlaneAccum) && got != want.accum[size_t(l)]) {
+      d.what = fmt::format("tile store beat {} lane {}: accumulation rtl {} golden {}", b.beat, l,
+                           accum_text(got), accum_text(want.accum[size_t(l)]));
       return diverge(std::move(d));
     }
   }

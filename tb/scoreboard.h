@@ -61,7 +61,8 @@ class Scoreboard final : public RetireSink {
   std::optional<Divergence> first_;
 };
 
-// "depth 0x00abcd", "no depth", ... for one stage's writes.
+// "depth 0x00abcd", "no depth", "no colour, accumulation acc(..) reveal n", ... for one
+// stage's writes.
 std::string describe_writes(RetireStage stage, const PixelWrites& w, int depth_bits);
 
 }  // namespace zb

@@ -112,7 +112,7 @@ RopState random_state(Rng& r) {
   s.depth_test = !r.chance(0.15);
   s.depth_func = DepthFunc(r.below(8));
   s.depth_write = r.chance(0.6);
-  s.blend = BlendMode(r.below(kBlendModes));  // replace, alpha, additive, coverage, under
+  s.blend = BlendMode(r.below(kBlendModes));  // replace .. accumulate
   const uint32_t m = r.below(4);
   s.color_mask = m == 0 ? uint8_t(r.below(16)) : uint8_t(kMaskRgba);
   s.peel_test = r.chance(0.3);
@@ -248,8 +248,9 @@ RopState HazardStimulus::next_state() {
                                      DepthFunc::kNotequal};
     st.depth_func = busy[rng_.below(4)];
     static const BlendMode rmw[] = {BlendMode::kAlpha, BlendMode::kAdditive,
-                                    BlendMode::kCoverage, BlendMode::kUnder};
-    st.blend = rmw[rng_.below(4)];
+                                    BlendMode::kCoverage, BlendMode::kUnder,
+                                    BlendMode::kAccumulate};
+    st.blend = rmw[rng_.below(5)];
   }
   return st;
 }
@@ -360,8 +361,8 @@ Tally suite_window(const Config& c) {
 }
 
 // tiles: the tile planes' fast-clear bookkeeping. Passes from a menu that includes passes
-// writing nothing at all (so a plane is fast-cleared twice with no store between), clears and
-// peel copies between them, on one or two tiles, some passes touching one tile only; depths
+// writing nothing at all (so a plane is fast-cleared twice with no store between) and
+// accumulate passes (the accumulation plane), clears, peel copies and resolves between them, on one or two tiles, some passes touching one tile only; depths
 // beside the last depth clear value; frames a few rows high or one or two tiles high.
 Tally suite_tiles(const Config& c) {
   Tally t;
@@ -390,22 +391,24 @@ Tally suite_tiles(const Config& c) {
         }
         if (r.chance(0.3)) cs.frame_op({FrameOpKind::kClearColor, {pick_channel(r), pick_channel(r), pick_channel(r), pick_alpha(r)}, 0, false});
         if (r.chance(0.2)) cs.frame_op({FrameOpKind::kCopyDepthToPeel, {}, 0, false});
+        if (r.chance(0.15)) cs.frame_op({FrameOpKind::kResolveWboit, {}, 0, false});
         RopState st;
-        const uint32_t kind = r.below(6);
+        const uint32_t kind = r.below(7);
         if (kind >= 4 && r.chance(0.5)) {  // peel against a cleared plane: its clear value's bits
           zclear = r.below(zmax);
           cs.frame_op({FrameOpKind::kClearDepth, {}, zclear, false});
           cs.frame_op({FrameOpKind::kCopyDepthToPeel, {}, 0, false});
         }
         static const char* kNames[] = {"write-all", "write-none", "read-blend", "coverage",
-                                       "peel", "write-none-peel"};
+                                       "peel", "write-none-peel", "accumulate"};
         st.depth_test = kind != 0;
         st.depth_func = kind == 0 ? DepthFunc::kAlways : DepthFunc(1 + r.below(6));
         st.depth_write = kind == 0 || kind == 3 || (kind == 4 && r.chance(0.5));
         st.blend = kind == 0 ? BlendMode::kReplace : kind == 3 ? BlendMode::kCoverage
-                 : kind == 1 || kind == 5 ? BlendMode::kReplace : BlendMode::kAlpha;
+                 : kind == 1 || kind == 5 ? BlendMode::kReplace
+                 : kind == 6 ? BlendMode::kAccumulate : BlendMode::kAlpha;
         st.color_mask = kind == 1 || kind == 5 ? 0 : kMaskRgba;
-        st.peel_test = kind >= 4;
+        st.peel_test = kind == 4 || kind == 5 || (kind == 6 && r.chance(0.3));
         const int xs = r.chance(0.3) ? std::min(w, kRtlTileW) : w;  // one tile only
         std::vector<Fragment> f;
         for (int y = 0; y < h; ++y) {
@@ -610,6 +613,10 @@ const std::vector<Suite>& suites() {
        "a store's last write-back meeting the next fast clear, then clears with no store "
        "between, probed at every pixel",
        suite_clears},
+      {"accum",
+       "accumulate passes (weighted blended OIT) with same-pixel fragments at issue distances "
+       "4 to 7 (bypass, forwarding), runs and random ones; resolves between",
+       suite_accum},
       {"blend",
        "alpha and additive over all 2^24 (s, a, d), 2^16 (a, d) on A; coverage over all "
        "(k, s, d)",

@@ -101,6 +101,7 @@ Tally suite_hazard(const Config& c);  // runs on 1-4 pixels; fragments per clock
 Tally suite_window(const Config& c);  // directed issue-window streams
 Tally suite_tiles(const Config& c);   // fast-clear bookkeeping across passes and tiles
 Tally suite_clears(const Config& c);  // a store's write-back meeting the next clear (suite_clears.cpp)
+Tally suite_accum(const Config& c);   // accumulate mode at same-pixel distances 4..7 (suite_accum.cpp)
 Tally suite_blend(const Config& c);   // the blend unit, exhaustively, through the pipeline
 
 struct Suite {

@@ -116,7 +116,7 @@ int zb_golden_begin_pass(zb_golden* g, uint32_t state) {
     zb::RopState s;
     if (state >> zb::kStateBits || !zb::unpack_state(uint16_t(state), s))
       return {ZB_EARG, fmt::format("state 0x{:x} is not a pass state register (bits 13 and up "
-                                   "zero, blend [7:5] at most 4; docs/datapath.md \"The pass "
+                                   "zero, blend [7:5] at most 5; docs/datapath.md \"The pass "
                                    "state\")", state)};
     h.rop.begin_pass(s);
     h.in_pass = true;
@@ -178,9 +178,10 @@ int zb_golden_frame_op(zb_golden* g, int kind, uint32_t value_rgba, uint32_t dep
     if (h.in_pass)
       return {ZB_EORDER, "a pass is open: frame operations come between passes (end it with "
                          "zb_golden_end_pass first)"};
-    if (kind < 0 || kind >= int(zb::kFrameOpKinds))
-      return {ZB_EARG, fmt::format("kind {} is not a frame operation (0 clear colour, 1 clear "
-                                   "depth, 2 copy depth to peel, 3 resolve under)", kind)};
+    // The resolve of the accumulate blend (kind 4) reads planes the kit does not carry.
+    if (kind < 0 || kind > int(zb::FrameOpKind::kResolveUnder))
+      return {ZB_EARG, fmt::format("kind {} is not a frame operation of the kit (0 clear colour, "
+                                   "1 clear depth, 2 copy depth to peel, 3 resolve under)", kind)};
     zb::FrameOp op;
     op.kind = zb::FrameOpKind(kind);
     op.value = unpack(value_rgba);

@@ -58,8 +58,9 @@ int zb_golden_create(zb_golden** out, int width, int height, int depth_bits,
 void zb_golden_destroy(zb_golden* g);
 
 /* Starts a pass with the pass state register (docs/datapath.md "The pass state"): [0]
- * depth_test, [3:1] depth_func, [4] depth_write, [7:5] blend (0 to 4), [11:8] color_mask, [12]
- * peel_test; every other bit zero. Fails inside a pass. */
+ * depth_test, [3:1] depth_func, [4] depth_write, [7:5] blend (0 to 5), [11:8] color_mask, [12]
+ * peel_test; every other bit zero. Blend 5 (accumulate) writes only the accumulation planes,
+ * which no ZB_PLANE_* reads. Fails inside a pass. */
 int zb_golden_begin_pass(zb_golden* g, uint32_t state);
 
 /* One fragment through the datapath, in stream order: pixel (x, y), depth z (at most ZMAX),

@@ -202,16 +202,18 @@ module zb_conf_adapter #(
     .tile_req_i        (tile_req),
     .tile_we_i         (tile_we),
     .tile_clear_i      (1'b0),
-    .tile_planes_i     (4'b1111),
+    .tile_planes_i     (5'b01111),  // no accumulation plane: the kit has no accumulate tests
     .tile_addr_i       (tile_addr),
     .tile_wcolor_i     (wcolor_q),
     .tile_wdepth_i     (wdepth_q),
     .tile_wcov_i       (wcov_q),
     .tile_wpeel_i      (wpeel_q),
+    .tile_wacc_i       ('0),
     .tile_rcolor_o     (rcolor),
     .tile_rdepth_o     (rdepth),
     .tile_rcov_o       (rcov),
     .tile_rpeel_o      (rpeel),
+    .tile_racc_o       (),
     .busy_o            (busy),
     .cnt_clear_i       (1'b0),
     .cnt_frag_in_o     (),
@@ -234,7 +236,9 @@ module zb_conf_adapter #(
     .mon_x11_valid_o   (ret_c_valid_o),
     .mon_x11_addr_o    (mon_x11_addr),
     .mon_cwe_o         (ret_cwe_o),
-    .mon_wcolor_o      (ret_wcolor_o)
+    .mon_wcolor_o      (ret_wcolor_o),
+    .mon_awe_o         (),
+    .mon_wacc_o        ()
   );
 
   assign ret_d_pixel_o = 32'(mon_x4_addr);

@@ -91,9 +91,9 @@ static void test_errors(void) {
   EXPECT_ERROR(zb_golden_push(g, 0, 0, 0, 0, 0, &wrote, NULL, NULL, NULL), ZB_EORDER, g, "zb_golden_push");
   EXPECT_ERROR(zb_golden_end_pass(g, &in, NULL, NULL, NULL, NULL, NULL), ZB_EORDER, g, "zb_golden_end_pass");
 
-  /* Bad state words: bits above 12, blend codes 5 to 7. */
+  /* Bad state words: bits above 12, blend codes 6 and 7. */
   EXPECT_ERROR(zb_golden_begin_pass(g, 1u << 13), ZB_EARG, g, "zb_golden_begin_pass");
-  EXPECT_ERROR(zb_golden_begin_pass(g, 5u << 5), ZB_EARG, g, "zb_golden_begin_pass");
+  EXPECT_ERROR(zb_golden_begin_pass(g, 6u << 5), ZB_EARG, g, "zb_golden_begin_pass");
   EXPECT_ERROR(zb_golden_begin_pass(g, 7u << 5), ZB_EARG, g, "zb_golden_begin_pass");
   EXPECT_ERROR(zb_golden_begin_pass(g, 0xffffffffu), ZB_EARG, g, "zb_golden_begin_pass");
   CHECK(zb_golden_begin_pass(g, STATE_COVERAGE) == ZB_OK, "begin: %s", zb_golden_last_error(g));

@@ -76,9 +76,9 @@ cp -r "$suite" "$tmp/damaged"
 sed -i '1s/.*/00000000/' "$tmp/damaged/random/expect.color.hex"
 expect2 "a changed expect file" "the expect files of test 'random' do not match its signature_sha256" \
   "$tmp/damaged" "$out" --tests random
-echo '{"suite": "zblend-conformance", "version": 2, "tests": []}' >"$tmp/damaged/manifest.json"
-expect2 "a later version" "version 2 is not supported" "$tmp/damaged" "$out"
-echo '{"suite": "zblend-conformance", "version": 1, "tests": [{"name": "../x"}]}' >"$tmp/damaged/manifest.json"
+echo '{"suite": "zblend-conformance", "version": 3, "tests": []}' >"$tmp/damaged/manifest.json"
+expect2 "a later version" "version 3 is not supported" "$tmp/damaged" "$out"
+echo '{"suite": "zblend-conformance", "version": 2, "tests": [{"name": "../x"}]}' >"$tmp/damaged/manifest.json"
 expect2 "a test without its fields" "manifest.json: .*key 'width' not found|is not a directory name" "$tmp/damaged" "$out"
 echo 'not json' >"$tmp/damaged/manifest.json"
 expect2 "not JSON" "manifest.json: .*parse error" "$tmp/damaged" "$out"

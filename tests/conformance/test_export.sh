@@ -19,7 +19,7 @@ cat "$tmp/a.log"
 python3 - "$tmp/a/manifest.json" >"$tmp/tests" <<'PY' || bad "manifest unreadable"
 import json, sys
 m = json.load(open(sys.argv[1]))
-assert m["suite"] == "zblend-conformance" and m["version"] == 1
+assert m["suite"] == "zblend-conformance" and m["version"] == 2
 configs = {c["name"] for c in m["configs"]}
 for t in m["tests"]:
     assert t["config"] in configs, t["name"]

@@ -148,8 +148,9 @@ TEST(CostModel, CountsTheDriversTileLoop) {
   // A 64 x 64 tile clipped to the 128 x 96 frame's first tile: all 64 x 64 inside.
   EXPECT_EQ(c.at(64).tile_io_cycles, 1u + 64u * 8u);
   EXPECT_EQ(c.frame_op_pixels, 0u);
-  // The pixel in bits: colour 32, depth and peel 24 each, coverage 5 (0..16).
-  EXPECT_EQ(tile_pixel_bits(24, 16), 85u);
+  // The pixel in bits: colour 32, depth and peel 24 each, coverage 5 (0..16), the
+  // accumulation word 4 * 16 + 8.
+  EXPECT_EQ(tile_pixel_bits(24, 16), 157u);
   // Bytes at 16x16 tiles: 6 tiles of 256 pixels of colour (32 bits) and depth (24) stored,
   // plus 800 depth reads and writes (24 bits) and 800 colour writes (32 bits).
   EXPECT_EQ(c.traffic_bytes(16, 24, 16), (6u * 256u * 56u + 800u * (24u + 24u + 32u)) / 8u);

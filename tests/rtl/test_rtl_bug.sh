@@ -2,7 +2,9 @@
 # The checkers can fail. zblend_tb_bug runs the RTL with deliberate defects, one per run:
 #   blend   (default) the alpha blend flips bit 0 of red when the source alpha is odd;
 #   window  a fragment entering the issue window in the cycle another to its pixel is picked
-#           misses it, and may issue one cycle after it instead of Span cycles (a hazard).
+#           misses it, and may issue one cycle after it instead of Span cycles (a hazard);
+#   accum   the accumulation word's bypass is never taken: an accumulate fragment issued Span
+#           cycles after one to its pixel adds to the word before that one's write.
 # The lock-step scoreboard must stop each at its first wrong write, naming the fragment, the
 # cycle, both values and the pixel's history, with an FST; the end-of-pass comparison
 # (--no-lockstep) must catch each on its own too; the window defect also the RTL's assertions
@@ -19,6 +21,13 @@ end_of_pass blend --suite random --seed 1 --fragments 300000
 # The window defect changes when fragments issue as well as what they write: each net alone.
 lockstep window X11 --defect window --no-assertions --no-timing-check --suite hazard,random --seed 1
 end_of_pass window --defect window --no-assertions --no-timing-check --suite hazard,random --seed 1
+# The accumulation defect: the accum suite's same-pixel fragments at distance 4.
+lockstep accum X11 --defect accum --suite accum --seed 1
+grep -qE '^  X11: rtl wrote no colour, accumulation acc\([0-9,]+\) reveal [0-9]+; golden no colour, accumulation acc' \
+  "$tmp/out.txt" || fail "accum: the X11 line does not name both accumulation writes"
+end_of_pass accum --defect accum --suite accum --seed 1
+grep -qE '^  accumulation: rtl=acc\([0-9,]+\) reveal [0-9]+ golden=acc' "$tmp/out.txt" ||
+  fail "accum: the pixel report has no accumulation line"
 # The timing check alone (before the pass ends): the tile streamed faster than the schedule.
 "$tb" --defect window --no-assertions --no-lockstep --suite hazard --seed 1 -q --mismatch-fst "" \
   >"$tmp/out.txt" 2>&1

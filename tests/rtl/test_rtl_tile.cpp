@@ -4,6 +4,8 @@
 // golden model, pixel for pixel).
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "rop/rop.h"
@@ -45,8 +47,10 @@ struct Both {
   RtlRop rtl;
   GoldenRop golden;
   void begin_frame() {
-    rtl.begin_frame(kW, kH, kRtlDepthBits, Rgba8{10, 20, 30, 255}, kRtlCoverageSamples);
-    golden.begin_frame(kW, kH, kRtlDepthBits, Rgba8{10, 20, 30, 255}, kRtlCoverageSamples);
+    rtl.begin_frame(kW, kH, kRtlDepthBits, Rgba8{10, 20, 30, 255}, kRtlCoverageSamples,
+                    kRtlWboit);
+    golden.begin_frame(kW, kH, kRtlDepthBits, Rgba8{10, 20, 30, 255}, kRtlCoverageSamples,
+                       kRtlWboit);
   }
   void pass(const RopState& s, const std::vector<Fragment>& f) {
     for (Backend* b : {static_cast<Backend*>(&rtl), static_cast<Backend*>(&golden)}) {
@@ -64,6 +68,8 @@ struct Both {
     EXPECT_EQ(r.color, g.color);
     EXPECT_EQ(r.depth, g.depth);
     EXPECT_EQ(r.coverage, g.coverage);
+    EXPECT_EQ(r.accum, g.accum);
+    EXPECT_EQ(r.reveal, g.reveal);
   }
   const TileRun& only_run() const {
     EXPECT_EQ(rtl.tile_runs().size(), 1u) << "the pass ran another tile than tile 0";
@@ -144,6 +150,52 @@ TEST(TilePort, CopiedAndResolvedPlanesStayCleared) {
   m.expect_same_frame();
 }
 
+// The accumulate blend's planes: the accumulation word is fast-cleared to revealage 1.0 and
+// stored, the colour plane neither loaded nor stored; the resolve of a cleared accumulation
+// leaves a cleared colour cleared (every pixel keeps it), of a stored one makes it words.
+TEST(TilePort, AccumulationPlaneClearedStoredAndResolved) {
+  Both m;
+  m.begin_frame();
+  m.frame_op(op(FrameOpKind::kResolveWboit));
+  RopState acc;
+  acc.depth_write = false;
+  acc.blend = BlendMode::kAccumulate;
+  m.pass(acc, sparse_in_tile0(300, Rgba8{100, 150, 200, 128}));
+  EXPECT_EQ(m.only_run().load_beats, 0u);
+  EXPECT_EQ(m.only_run().io.clear, kPlaneDepth | kPlaneAccum);
+  EXPECT_EQ(m.only_run().io.accum_clear, accum_clear_word(kRtlWboit));
+  EXPECT_EQ(m.only_run().io.store, kPlaneAccum);
+  m.expect_same_frame();
+  m.pass(acc, sparse_in_tile0(200, Rgba8{10, 20, 30, 255}));
+  EXPECT_EQ(m.only_run().io.load, kPlaneAccum) << "the first pass stored the accumulation";
+  m.expect_same_frame();
+  m.frame_op(op(FrameOpKind::kResolveWboit));
+  RopState replace;
+  m.pass(replace, sparse_in_tile0(100, Rgba8{1, 2, 3, 255}));
+  EXPECT_EQ(m.only_run().io.load, kPlaneColor) << "the resolve made the tile's colour words";
+  m.expect_same_frame();
+}
+
+// The accumulation word's widths are the Verilated model's: another format is refused, naming
+// both.
+TEST(TilePort, RefusesAnotherAccumulationFormat) {
+  RtlRop rtl;
+  WboitFormat other = kRtlWboit;
+  other.acc_bits = kRtlWboit.acc_bits == 12 ? 13 : 12;
+  try {
+    rtl.begin_frame(8, 8, kRtlDepthBits, Rgba8{}, kRtlCoverageSamples, other);
+    FAIL() << "begin_frame took another accumulation width";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("accumulation " + std::to_string(other.acc_bits) +
+                                         " bits"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("ACC_BITS " + std::to_string(kRtlWboit.acc_bits)),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(TileStates, PlanesFollowThePassState) {
   RopState s;
   EXPECT_EQ(planes_read(s), kPlaneColor | kPlaneDepth);
@@ -160,6 +212,12 @@ TEST(TileStates, PlanesFollowThePassState) {
   s.depth_write = false;
   EXPECT_EQ(planes_read(s), kPlaneColor | kPlaneDepth | kPlanePeel);
   EXPECT_EQ(planes_written(s), kPlaneColor);
+  s.blend = BlendMode::kAccumulate;  // the accumulation word instead of the colour
+  EXPECT_EQ(planes_read(s), kPlaneAccum | kPlaneDepth | kPlanePeel);
+  EXPECT_EQ(planes_written(s), kPlaneAccum);
+  s.color_mask = 0;
+  EXPECT_EQ(planes_read(s), kPlaneDepth | kPlanePeel);
+  EXPECT_EQ(planes_written(s), 0);
   // Beats: rows times beats a row, a partial beat counted whole.
   EXPECT_EQ(tile_beats(64, 64, 8), 512u);
   EXPECT_EQ(tile_beats(9, 2, 8), 4u);
