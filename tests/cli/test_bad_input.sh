@@ -199,8 +199,8 @@ if "$zblend" render -q --scene one.obj --camera eye=0.3,0.3,3,at=0.3,0.3,0,fov=4
 if "$tb" --replay "$tmp/good.zbt" >/dev/null; then ok; else bad "replay of a good trace"; fi
 { printf 'ZBTRACX'; tail -c +8 "$tmp/good.zbt"; } >magic.zbt
 expect_error "replay bad magic" "trace 'magic.zbt': byte 0: not a zblend trace \(bad magic\)" "$tb" --replay magic.zbt
-head -c 30 "$tmp/good.zbt" >cut.zbt
-expect_error "replay truncated header" "trace 'cut.zbt': byte 30: truncated, expected the clear colour" "$tb" --replay cut.zbt
+head -c 33 "$tmp/good.zbt" >cut.zbt
+expect_error "replay truncated header" "trace 'cut.zbt': byte 33: truncated, expected the clear colour" "$tb" --replay cut.zbt
 head -c -10 "$tmp/good.zbt" >cut2.zbt
 expect_error "replay truncated pass" "trace 'cut2.zbt': byte [0-9]+: pass 3: [0-9]+ fragments announced, [0-9]+ bytes left" \
   "$tb" --replay cut2.zbt

@@ -51,7 +51,9 @@ fi
 # Both backends, compared bit for bit, with back-pressure.
 if "$zblend" render -q --scene sphere-torus --method all --width 48 --height 36 --backend both \
      --backpressure 0.25 --out-dir "$tmp/both"; then
-  grep -qE '^three-pass,3,.*,[0-9]+,[0-9]+,0$' "$tmp/both/summary.csv" && ok || bad "both: mismatches column"
+  # mismatches, then the line-error columns (empty: three-pass draws no edges)
+  grep -qE '^three-pass,3,.*,[0-9]+,[0-9]+,0,,,$' "$tmp/both/summary.csv" && ok || bad "both: mismatches column"
+  grep -qE '^hidden-line,2,.*,0,[0-9]+,[0-9.]+,[0-9.]+$' "$tmp/both/summary.csv" && ok || bad "both: line error columns"
 else
   bad "render --backend both"
 fi
@@ -60,7 +62,8 @@ fi
 regr01=/usr/share/assimp/models/OBJ/regr01.obj
 if "$zblend" render -q --scene "$regr01" --method all --width 40 --height 30 --backend both \
      --out-dir "$tmp/regr01"; then
-  grep -qE '^three-pass,3,.*,0$' "$tmp/regr01/summary.csv" && ok || bad "regr01 both: mismatches"
+  grep -qE '^three-pass,3,.*,0,,,$' "$tmp/regr01/summary.csv" && ok || bad "regr01 both: mismatches"
+  grep -qE '^wboit,2,.*,0,,,$' "$tmp/regr01/summary.csv" && ok || bad "regr01 both: wboit mismatches"
 else
   bad "render regr01.obj --backend both"
 fi
