@@ -1,5 +1,6 @@
 // Formal (docs/formal.md, group mul8): zb_mul8 equals k * v for every (k, v), two cycles later,
-// at its default 8 x 8 bits and (jobs mul_term, mul_reveal) at the accumulate blend's widths.
+// at its default 8 x 8 bits and (jobs mul_pairs, mul_wide) at other widths: five digits of v
+// (three pairs, an odd V_W padded), a 12-bit k (the accumulate blend's shapes, scaled to z3).
 // The caller's contract, k3_i = 3k, is made here; nothing else is assumed. Proven by
 // k-induction: the unit is a pipeline without feedback, so two steps determine its state.
 // ZB_FORMAL_DEFECT_MUL8 breaks the contract (k3 = 2k): the proof must fail.

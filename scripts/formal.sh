@@ -63,8 +63,8 @@ done
 RopSmall="TILE=2 BEAT=2 DEPTH_BITS=8 COV_SAMPLES=1 CNT_W=2"
 jobs=(
   "mul8|induction|2|2|yes|zb_mul8_check||smtbmc"
-  "mul_term|induction|2|2|no|zb_mul8_check|K_W=12|smtbmc"
-  "mul_reveal|induction|2|2|no|zb_mul8_check|K_W=9 V_W=9|smtbmc"
+  "mul_pairs|induction|2|2|no|zb_mul8_check|K_W=4 V_W=9|smtbmc"
+  "mul_wide|induction|2|2|no|zb_mul8_check|K_W=12 V_W=4|smtbmc"
   "premul_c0|induction|4|4|yes|zb_premul_check|CHAN=0|smtbmc"
   "premul_c1|induction|4|4|no|zb_premul_check|CHAN=1|smtbmc"
   "premul_c2|induction|4|4|no|zb_premul_check|CHAN=2|smtbmc"

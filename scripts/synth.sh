@@ -12,12 +12,15 @@ usage() {
   cat <<'EOF'
 usage: scripts/synth.sh [options]
   --out DIR           output directory (default out/synth)
-  --tile N            TILE_W = TILE_H = N (default 32: a 64x64 tile needs more than HX8K's
-                      32 block RAMs)
+  --tile N            TILE_W = N, and TILE_H unless --tile-h (default 32: a 64x64 tile needs
+                      more than HX8K's 32 block RAMs)
+  --tile-h N          TILE_H (default 16: with the accumulation plane a 32x32 tile needs 51
+                      block RAMs, 32x16 needs 31)
   --beat N            BEAT, tile port pixels a clock (default 2: the widest whose block RAMs
                       fit HX8K's 32 with this tile; 4 would need 37)
   --depth-bits N      DEPTH_BITS (default 24)
   --cov-samples N     COV_SAMPLES (default 16)
+  --set NAME=VALUE    another zb_rop parameter (ACC_BITS, WINDOW, CNT_W, ...), repeatable
   --freq MHZ          nextpnr target clock (default 100)
   --seeds "S1 S2..."  nextpnr placement seeds; the first is the reported one, all give the
                       spread (default "1 2 3")
@@ -26,13 +29,15 @@ usage: scripts/synth.sh [options]
   --no-pnr            stop after Yosys (no nextpnr)
   -h, --help          this text
 Exit status: 0 done; 1 a tool failed (synthesis error, check -assert, a latch); 2 usage;
-3 below --require-mhz.
+3 below --require-mhz; 4 the harness needs more logic cells than the HX8K has (nextpnr's
+packing counts them before placement; the report says how many).
 EOF
 }
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=out/synth
 tile=32
+tile_h=16
 beat=2
 depth_bits=24
 cov_samples=16
@@ -40,13 +45,18 @@ freq=100
 seeds="1 2 3"
 require_mhz=""
 pnr=1
+extra=""
+extra_args=""
 while [[ $# -gt 0 ]]; do
   case $1 in
     --out) out=${2:?}; shift 2 ;;
     --tile) tile=${2:?}; shift 2 ;;
+    --tile-h) tile_h=${2:?}; shift 2 ;;
     --beat) beat=${2:?}; shift 2 ;;
     --depth-bits) depth_bits=${2:?}; shift 2 ;;
     --cov-samples) cov_samples=${2:?}; shift 2 ;;
+    --set) [[ ${2:-} =~ ^[A-Z_]+=[0-9]+$ ]] || { echo "synth.sh: --set needs NAME=NUMBER" >&2; exit 2; }
+           extra+=" -set ${2%%=*} ${2#*=}"; extra_args+=" --set $2"; shift 2 ;;
     --freq) freq=${2:?}; shift 2 ;;
     --seeds) seeds=${2:?}; shift 2 ;;
     --require-mhz) require_mhz=${2:?}; shift 2 ;;
@@ -55,7 +65,7 @@ while [[ $# -gt 0 ]]; do
     *) echo "synth.sh: unknown option '$1'" >&2; usage >&2; exit 2 ;;
   esac
 done
-for v in "$tile" "$beat" "$depth_bits" "$cov_samples" "$freq" ${require_mhz:+"$require_mhz"} $seeds; do
+for v in "$tile" "$tile_h" "$beat" "$depth_bits" "$cov_samples" "$freq" ${require_mhz:+"$require_mhz"} $seeds; do
   [[ $v =~ ^[0-9]+$ ]] || { echo "synth.sh: '$v' is not a number" >&2; exit 2; }
 done
 
@@ -66,7 +76,7 @@ done
 cd "$root"
 mkdir -p "$out"
 rtl="rtl/zb_pkg.sv $(ls rtl/*.sv | grep -v '/zb_pkg.sv$' | tr '\n' ' ')"  # the package first
-params="-set TILE_W $tile -set TILE_H $tile -set BEAT $beat -set DEPTH_BITS $depth_bits -set COV_SAMPLES $cov_samples"
+params="-set TILE_W $tile -set TILE_H $tile_h -set BEAT $beat -set DEPTH_BITS $depth_bits -set COV_SAMPLES $cov_samples$extra"
 latch_types='t:$dlatch t:$adlatch t:$dlatchsr t:$_DLATCH_* t:$_DLATCHSR_*'
 t0=$SECONDS
 step() { printf 'synth: [%4ds] %s\n' $((SECONDS - t0)) "$*"; }
@@ -75,7 +85,7 @@ fail() { echo "synth: FAILED: $*" >&2; exit 1; }
 # Cell count of a `stat` type line ("     SB_LUT4    123"); 0 when absent. Last stat wins.
 count() { awk -v t="$2" '$1 == t { n = $2 } END { print n + 0 }' "$1"; }
 
-step "yosys: generic synthesis of zb_rop (TILE ${tile}x$tile, BEAT $beat, DEPTH_BITS $depth_bits, COV_SAMPLES $cov_samples)"
+step "yosys: generic synthesis of zb_rop (TILE ${tile}x$tile_h, BEAT $beat, DEPTH_BITS $depth_bits, COV_SAMPLES $cov_samples)"
 yosys -l "$out/yosys_generic.log" -q -p "read_verilog -sv $rtl; chparam $params zb_rop;
   synth -top zb_rop; check -assert; tee -o $out/latches_generic.txt select -list $latch_types;
   select -assert-none $latch_types; tee -o $out/stat_generic.txt stat" >/dev/null \
@@ -115,7 +125,20 @@ if [[ $h_rams -ne $rams || $h_ffs -lt $ffs || $((h_luts * 100)) -lt $((luts * 95
 fi
 
 fmax_list=()
-lc="" lc_total="" ram_used="" ram_total="" fmax="" crit=""
+lc="" lc_total="" ram_used="" ram_total="" fmax="" crit="" fits=yes
+if [[ $pnr == 1 ]]; then
+  # Packing alone counts the logic cells: a design that needs more than the part has is
+  # reported as such, not as a placer error.
+  nextpnr-ice40 --hx8k --package ct256 --json "$out/harness.json" --pcf-allow-unconstrained \
+    --pack-only -l "$out/nextpnr_pack.log" >/dev/null 2>&1 || fail "nextpnr-ice40 --pack-only (see $out/nextpnr_pack.log)"
+  read -r lc lc_total < <(sed -n 's/.*ICESTORM_LC: *\([0-9]*\)\/ *\([0-9]*\).*/\1 \2/p' "$out/nextpnr_pack.log" | tail -1)
+  read -r ram_used ram_total < <(sed -n 's/.*ICESTORM_RAM: *\([0-9]*\)\/ *\([0-9]*\).*/\1 \2/p' "$out/nextpnr_pack.log" | tail -1)
+  if (( lc > lc_total || ram_used > ram_total )); then
+    fits=no
+    pnr=0
+    step "  does not fit the HX8K: $lc of $lc_total logic cells, $ram_used of $ram_total RAMs (no placement)"
+  fi
+fi
 if [[ $pnr == 1 ]]; then
   for seed in $seeds; do
     log=$out/nextpnr_seed$seed.log
@@ -171,8 +194,8 @@ fi
 
 csv=$out/synth.csv
 {
-  echo "tile,beat,depth_bits,cov_samples,generic_cells,sb_lut4,sb_carry,sb_ram40_4k,flip_flops,harness_lc,lc_total,ram_used,ram_total,target_mhz,fmax_mhz,seeds,fmax_per_seed"
-  echo "$tile,$beat,$depth_bits,$cov_samples,$cells,$luts,$carries,$rams,$ffs,$lc,$lc_total,$ram_used,$ram_total,$freq,$fmax,${seeds// /;},$(IFS=';'; echo "${fmax_list[*]}")"
+  echo "tile,tile_h,beat,depth_bits,cov_samples,generic_cells,sb_lut4,sb_carry,sb_ram40_4k,flip_flops,harness_lc,lc_total,ram_used,ram_total,target_mhz,fmax_mhz,seeds,fmax_per_seed"
+  echo "$tile,$tile_h,$beat,$depth_bits,$cov_samples,$cells,$luts,$carries,$rams,$ffs,$lc,$lc_total,$ram_used,$ram_total,$freq,$fmax,${seeds// /;},$(IFS=';'; echo "${fmax_list[*]}")"
 } >"$csv"
 
 met="not run"
@@ -183,7 +206,7 @@ rep=$out/report.md
 {
   echo "# zb_rop synthesis report"
   echo
-  echo "Command: \`scripts/synth.sh --tile $tile --beat $beat --depth-bits $depth_bits --cov-samples $cov_samples --freq $freq --seeds \"$seeds\"\`"
+  echo "Command: \`scripts/synth.sh --tile $tile --tile-h $tile_h --beat $beat$extra_args --depth-bits $depth_bits --cov-samples $cov_samples --freq $freq --seeds \"$seeds\"\`"
   echo "($(yosys -V | head -1); $(nextpnr-ice40 --version 2>&1 | head -1))."
   echo
   echo "| figure | value | source |"
@@ -194,6 +217,10 @@ rep=$out/report.md
   echo "| SB_RAM40_4K | $rams | same |"
   echo "| flip-flops (SB_DFF*) | $ffs | same |"
   echo "| latches | 0 (asserted) | \`select -assert-none\` latch cells |"
+  if [[ $fits == no ]]; then
+    echo "| ICESTORM_LC (harness) | $lc / $lc_total: **does not fit** | nextpnr-ice40 --hx8k --pack-only |"
+    echo "| ICESTORM_RAM | $ram_used / $ram_total | same |"
+  fi
   if [[ $pnr == 1 ]]; then
     echo "| ICESTORM_LC (harness) | $lc / $lc_total | nextpnr-ice40 --hx8k, seed $first |"
     echo "| ICESTORM_RAM | $ram_used / $ram_total | same |"
@@ -227,10 +254,17 @@ if [[ $pnr == 1 ]]; then
     "max clock, seed $first" "$fmax MHz ($met at $freq MHz)"
   [[ -n $spread ]] && printf '%-28s %s\n' "max clock, seeds $seeds" "${fmax_list[*]} MHz"
   echo "critical path: $crit"
+elif [[ $fits == no ]]; then
+  printf '%-28s %s\n' "ICESTORM_LC (harness)" "$lc / $lc_total: does not fit" \
+    "ICESTORM_RAM" "$ram_used / $ram_total"
 fi
 echo "report: $rep, figures: $csv"
 step "done"
 
+if [[ $fits == no ]]; then
+  echo "synth: the harness needs $lc of the HX8K's $lc_total logic cells ($ram_used of $ram_total RAMs): it does not fit" >&2
+  exit 4
+fi
 if [[ -n $require_mhz && -n $fmax ]]; then
   if ! awk -v f="$fmax" -v r="$require_mhz" 'BEGIN { exit !(f >= r) }'; then
     echo "synth: $fmax MHz is below the required $require_mhz MHz" >&2

@@ -10,10 +10,14 @@
 module zb_rop_harness #(
   parameter int unsigned DEPTH_BITS  = 24,
   parameter int unsigned TILE_W      = 32,
-  parameter int unsigned TILE_H      = 32,
+  parameter int unsigned TILE_H      = 16,
   parameter int unsigned CNT_W       = 32,
   parameter int unsigned COV_SAMPLES = 16,
-  parameter int unsigned BEAT        = 2    // scripts/synth.sh --beat
+  parameter int unsigned WINDOW      = 8,
+  parameter int unsigned BEAT        = 2,   // scripts/synth.sh --beat
+  parameter int unsigned ACC_BITS    = 16,
+  parameter int unsigned REV_BITS    = 8,
+  parameter int unsigned WEIGHT_BITS = 4
 ) (
   input  logic clk_i,
   input  logic rst_ni,
@@ -23,6 +27,7 @@ module zb_rop_harness #(
 
   localparam int unsigned CovW   = $clog2(COV_SAMPLES + 1);
   localparam int unsigned BeatAW = $clog2(TILE_W * TILE_H / BEAT);
+  localparam int unsigned AccW   = 4 * ACC_BITS + REV_BITS;
   // The inputs in the shift register, each at its offset.
   localparam int unsigned IStateWe = 0;
   localparam int unsigned IState   = IStateWe + 1;
@@ -39,12 +44,13 @@ module zb_rop_harness #(
   localparam int unsigned IWe      = IReq + 1;
   localparam int unsigned IClear   = IWe + 1;
   localparam int unsigned IPlanes  = IClear + 1;
-  localparam int unsigned IAddr    = IPlanes + 4;
+  localparam int unsigned IAddr    = IPlanes + 5;
   localparam int unsigned IWColor  = IAddr + BeatAW;
   localparam int unsigned IWDepth  = IWColor + BEAT * 32;
   localparam int unsigned IWCov    = IWDepth + BEAT * DEPTH_BITS;
   localparam int unsigned IWPeel   = IWCov + BEAT * CovW;
-  localparam int unsigned ICntClr  = IWPeel + BEAT * DEPTH_BITS;
+  localparam int unsigned IWAcc    = IWPeel + BEAT * DEPTH_BITS;
+  localparam int unsigned ICntClr  = IWAcc + BEAT * AccW;
   localparam int unsigned InW      = ICntClr + 1;
   // The outputs: frag_ready, the read beat, busy, eleven counters.
   localparam int unsigned OReady   = 0;
@@ -52,7 +58,8 @@ module zb_rop_harness #(
   localparam int unsigned ORDepth  = ORColor + BEAT * 32;
   localparam int unsigned ORCov    = ORDepth + BEAT * DEPTH_BITS;
   localparam int unsigned ORPeel   = ORCov + BEAT * CovW;
-  localparam int unsigned OBusy    = ORPeel + BEAT * DEPTH_BITS;
+  localparam int unsigned ORAcc    = ORPeel + BEAT * DEPTH_BITS;
+  localparam int unsigned OBusy    = ORAcc + BEAT * AccW;
   localparam int unsigned OCnt     = OBusy + 1;
   localparam int unsigned OutW     = OCnt + 11 * CNT_W;
   localparam int unsigned Grp      = 16;                       // bits per first-level XOR
@@ -81,7 +88,11 @@ module zb_rop_harness #(
     .TILE_H     (TILE_H),
     .CNT_W      (CNT_W),
     .COV_SAMPLES(COV_SAMPLES),
-    .BEAT       (BEAT)
+    .WINDOW     (WINDOW),
+    .BEAT       (BEAT),
+    .ACC_BITS   (ACC_BITS),
+    .REV_BITS   (REV_BITS),
+    .WEIGHT_BITS(WEIGHT_BITS)
   ) u_rop (
     .clk_i,
     .rst_ni            (rst_n_q),
@@ -100,16 +111,18 @@ module zb_rop_harness #(
     .tile_req_i        (in_q[IReq]),
     .tile_we_i         (in_q[IWe]),
     .tile_clear_i      (in_q[IClear]),
-    .tile_planes_i     (in_q[IPlanes +: 4]),
+    .tile_planes_i     (in_q[IPlanes +: 5]),
     .tile_addr_i       (in_q[IAddr +: BeatAW]),
     .tile_wcolor_i     (in_q[IWColor +: BEAT * 32]),
     .tile_wdepth_i     (in_q[IWDepth +: BEAT * DEPTH_BITS]),
     .tile_wcov_i       (in_q[IWCov +: BEAT * CovW]),
     .tile_wpeel_i      (in_q[IWPeel +: BEAT * DEPTH_BITS]),
+    .tile_wacc_i       (in_q[IWAcc +: BEAT * AccW]),
     .tile_rcolor_o     (out_d[ORColor +: BEAT * 32]),
     .tile_rdepth_o     (out_d[ORDepth +: BEAT * DEPTH_BITS]),
     .tile_rcov_o       (out_d[ORCov +: BEAT * CovW]),
     .tile_rpeel_o      (out_d[ORPeel +: BEAT * DEPTH_BITS]),
+    .tile_racc_o       (out_d[ORAcc +: BEAT * AccW]),
     .busy_o            (out_d[OBusy]),
     .cnt_clear_i       (in_q[ICntClr]),
     .cnt_frag_in_o     (out_d[OCnt + 0 * CNT_W +: CNT_W]),
@@ -133,7 +146,9 @@ module zb_rop_harness #(
     .mon_x11_valid_o   (),
     .mon_x11_addr_o    (),
     .mon_cwe_o         (),
-    .mon_wcolor_o      ()
+    .mon_wcolor_o      (),
+    .mon_awe_o         (),
+    .mon_wacc_o        ()
   );
 
   logic [OCnt-1:0]     out_q;

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The regression runner (scripts/regress.py) on the quick group: local processes and GNU
-# parallel pass and write JUnit XML and the HTML summary; a defective RTL (mutant 512, caught by
+# parallel pass and write JUnit XML and the HTML summary; a defective RTL (mutant 1004, caught by
 # the clears suite's lock-step monitor) fails the run, its test is run again with waves, and the
 # summary's replay command reproduces the failure; parallel --resume-failed runs only what failed;
 # a malformed regression file is refused with exit 2 and where it is wrong.
@@ -40,7 +40,7 @@ cat >"$tmp/reg.json" <<'J'
   {"name": "clears", "suite": "clears", "seeds": [1, 2]},
   {"name": "window", "args": ["--suite", "window", "--seed", "1"]}]}}
 J
-"${regress[@]}" run g -j 2 --file "$tmp/reg.json" --tb "$build/zblend_tb_mut" --tb-args "--mutant 512" \
+"${regress[@]}" run g -j 2 --file "$tmp/reg.json" --tb "$build/zblend_tb_mut" --tb-args "--mutant 1004" \
   --out "$tmp/bad" --waves 1 >"$tmp/log.txt" 2>&1
 rc=$?
 [[ $rc -eq 1 ]] || fail "the mutant's run exited $rc, want 1"
@@ -60,7 +60,7 @@ echo "ok: a defective RTL fails, with waves and a replay command that reproduces
 # GNU parallel: the joblog, and --resume-failed runs only the failed jobs. The host list names
 # this machine only (":"), as an --sshloginfile of a team's hosts would name theirs.
 echo ":" >"$tmp/hosts"
-"${regress[@]}" parallel g -j 2 --file "$tmp/reg.json" --tb "$build/zblend_tb_mut" --tb-args "--mutant 512" \
+"${regress[@]}" parallel g -j 2 --file "$tmp/reg.json" --tb "$build/zblend_tb_mut" --tb-args "--mutant 1004" \
   --sshloginfile "$tmp/hosts" --out "$tmp/par" >"$tmp/log.txt" 2>&1 && fail "parallel passed on the mutant"
 junit "$tmp/par/junit.xml" 3 2
 [[ $(grep -c 'regress.py one g' "$tmp/par/joblog") -eq 3 ]] || fail "joblog: want 3 jobs"
