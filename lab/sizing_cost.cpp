@@ -16,15 +16,11 @@ const TileCost& MethodCost::at(int tile) const {
 
 uint64_t tile_pixel_bits(int depth_bits, int coverage_samples, const WboitFormat& wboit) {
   return 32u + 2u * uint64_t(depth_bits) + uint64_t(coverage_bits(coverage_samples)) +
-         accum_word_bits(wboit);
-}
-
-uint64_t accum_word_bits(const WboitFormat& f) {
-  return 4u * uint64_t(f.acc_bits) + uint64_t(f.rev_bits);
+         uint64_t(accum_word_bits(wboit));
 }
 
 uint64_t MethodCost::traffic_bytes(int tile, int depth_bits, int coverage_samples) const {
-  const uint64_t word = accum_word_bits(wboit);
+  const uint64_t word = uint64_t(accum_word_bits(wboit));
   const std::array<uint64_t, kTilePlanes> bits{32, uint64_t(depth_bits),
                                                uint64_t(coverage_bits(coverage_samples)),
                                                uint64_t(depth_bits), word};

@@ -55,8 +55,6 @@ struct MethodCost {
 // Bits of one pixel in the tile memory: colour 32, depth and peel depth_bits each, coverage
 // coverage_bits(samples), the accumulation word (zb_rop's five planes).
 uint64_t tile_pixel_bits(int depth_bits, int coverage_samples, const WboitFormat& wboit = {});
-// The accumulation word's bits, 4 ACC_BITS + REV_BITS.
-uint64_t accum_word_bits(const WboitFormat& f);
 
 // Wraps a backend, forwarding every call, and counts the method's cost.
 class CostCounter final : public Backend {

@@ -130,7 +130,7 @@ uint32_t get_lane(const Port& port, unsigned lane, unsigned width) {
 
 // The accumulation word {r, acc_A, acc_B, acc_G, acc_R} at word `index` of a port.
 constexpr unsigned kAccBits = unsigned(kRtlWboit.acc_bits), kRevBits = unsigned(kRtlWboit.rev_bits);
-constexpr unsigned kAccumBits = 4 * kAccBits + kRevBits;
+constexpr unsigned kAccumBits = unsigned(accum_word_bits(kRtlWboit));
 template <class Port>
 void put_accum(Port& port, unsigned index, const AccumWord& w) {
   const unsigned lo = index * kAccumBits;

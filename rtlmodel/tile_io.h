@@ -44,6 +44,8 @@ struct AccumWord {
   }
   friend bool operator!=(const AccumWord& x, const AccumWord& y) { return !(x == y); }
 };
+// The word's bits, 4 ACC_BITS + REV_BITS (zb_rop's AccW).
+constexpr int accum_word_bits(const WboitFormat& f) { return 4 * f.acc_bits + f.rev_bits; }
 // The cleared word: accumulation 0, revealage 1.0.
 AccumWord accum_clear_word(const WboitFormat& f);
 // "acc(r,g,b,a) reveal n", for reports.

@@ -52,7 +52,7 @@ uint32_t get_lane(const T& v, int lane, int width) {
 }
 // The accumulation word {r, acc_A, acc_B, acc_G, acc_R} at word `index`.
 constexpr int kAccBits = kRtlWboit.acc_bits, kRevBits = kRtlWboit.rev_bits;
-constexpr int kAccumW = 4 * kAccBits + kRevBits;
+constexpr int kAccumW = accum_word_bits(kRtlWboit);
 template <class T>
 void put_accum(T& v, int index, const AccumWord& w) {
   for (int c = 0; c < 4; ++c)

@@ -53,7 +53,7 @@ class ZbRtlSc : public sc_core::sc_module {
   using Bits = std::conditional_t<W <= 32, uint32_t,
                                   std::conditional_t<W <= 64, uint64_t, sc_dt::sc_bv<W>>>;
   static constexpr int kCovW = coverage_bits(kRtlCoverageSamples);
-  static constexpr int kAccumW = 4 * kRtlWboit.acc_bits + kRtlWboit.rev_bits;
+  static constexpr int kAccumW = accum_word_bits(kRtlWboit);
   Sig<bool> rst_n_, state_we_, frag_valid_, frag_ready_, stall_, tile_req_, tile_we_, tile_clear_,
       busy_, cnt_clear_;
   Sig<uint32_t> state_, tile_x0_, tile_y0_, frag_x_, frag_y_, frag_z_, frag_rgba_, frag_cov_,
