@@ -19,7 +19,7 @@
 module zb_plane #(
   parameter int WIDTH     = 32,
   parameter int WORDS     = 1024,
-  parameter int BEAT      = 8,     // pixels per tile-port beat: a power of two >= 2
+  parameter int BEAT      = 8,     // pixels per tile-port beat: a power of two
   parameter bit FORWARDED = 1'b0,  // the user replaces a read that meets a write
   parameter bit READ_ONLY = 1'b0   // no pipeline writes (peel): one fresh flag a plane
 ) (
@@ -43,23 +43,23 @@ module zb_plane #(
   output logic [WIDTH-1:0]         rdata_o          // the pixel read at the last pipeline read
 );
 
-  localparam int AddrW  = $clog2(WORDS);
-  localparam int BankW  = $clog2(BEAT);
+  localparam int LogBeat = $clog2(BEAT);
+  localparam int BankW  = BEAT > 1 ? LogBeat : 1;  // BEAT 1: one bank, its index 0
   localparam int Beats  = WORDS / BEAT;
   localparam int BeatAW = $clog2(Beats);
 
 `ifndef SYNTHESIS
-  if (BEAT < 2 || BEAT != (1 << BankW) || BEAT > WORDS) begin : g_bad_beat
-    `ZB_PARAM_ERROR("zb_plane: BEAT must be a power of two, 2..WORDS");
+  if (BEAT < 1 || BEAT != (1 << LogBeat) || BEAT > WORDS) begin : g_bad_beat
+    `ZB_PARAM_ERROR("zb_plane: BEAT must be a power of two, 1..WORDS");
   end
 `endif
 
   logic [BeatAW-1:0] rbeat, wbeat;
   logic [BankW-1:0]  rbank, wbank;
-  assign rbeat = pipe_raddr_i[AddrW-1:BankW];
-  assign rbank = pipe_raddr_i[BankW-1:0];
-  assign wbeat = pipe_waddr_i[AddrW-1:BankW];
-  assign wbank = pipe_waddr_i[BankW-1:0];
+  assign rbeat = BeatAW'(pipe_raddr_i >> LogBeat);
+  assign rbank = BEAT > 1 ? BankW'(pipe_raddr_i) : '0;
+  assign wbeat = BeatAW'(pipe_waddr_i >> LogBeat);
+  assign wbank = BEAT > 1 ? BankW'(pipe_waddr_i) : '0;
 
   logic tile_load, tile_read, tile_clear;
   assign tile_load  = tile_req_i & tile_we_i & tile_en_i;
@@ -179,7 +179,13 @@ module zb_plane #(
   end
 
   assign tile_rdata_o = lane;
-  assign rdata_o      = lane[rbank_q*WIDTH +: WIDTH];
+  if (BEAT > 1) begin : g_bank_sel
+    assign rdata_o = lane[rbank_q*WIDTH +: WIDTH];
+  end else begin : g_one_bank
+    logic unused_rbank;
+    assign unused_rbank = rbank_q;
+    assign rdata_o = lane;
+  end
 
 `ifndef SYNTHESIS
 `ifndef ZB_NO_SVA

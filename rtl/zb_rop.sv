@@ -28,7 +28,7 @@ module zb_rop
   parameter int CNT_W      = 32,
   parameter int COV_SAMPLES = 16,  // N of the sample pattern: 1, 2, 4, 8 or 16
   parameter int WINDOW     = 8,    // issue window slots, 2..16
-  parameter int BEAT       = 8,    // tile port pixels per clock: 2..TILE_W, power of two
+  parameter int BEAT       = 8,    // tile port pixels per clock: 1..TILE_W, power of two
   parameter int ACC_BITS   = 16,   // accumulation channel, 8..32
   parameter int REV_BITS   = 8,    // revealage, 8..16
   parameter int WEIGHT_BITS = 4,   // depth weight's range, 0..16
@@ -117,8 +117,8 @@ module zb_rop
   begin : g_bad_cov
     `ZB_PARAM_ERROR("zb_rop: COV_SAMPLES must be 1, 2, 4, 8 or 16");
   end
-  if (BEAT < 2 || BEAT > TILE_W || (BEAT & (BEAT - 1)) != 0) begin : g_bad_beat
-    `ZB_PARAM_ERROR("zb_rop: BEAT must be a power of two, 2..TILE_W");
+  if (BEAT < 1 || BEAT > TILE_W || (BEAT & (BEAT - 1)) != 0) begin : g_bad_beat
+    `ZB_PARAM_ERROR("zb_rop: BEAT must be a power of two, 1..TILE_W");
   end
   if (ACC_BITS < 8 || ACC_BITS > 32) begin : g_bad_acc
     `ZB_PARAM_ERROR("zb_rop: ACC_BITS must be 8..32");
