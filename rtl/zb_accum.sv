@@ -4,7 +4,8 @@
 // X6, the pixel's newest word in X7 (zb_forward: forwarding and bypass as the colour's),
 // written at E11 in accumulate mode when the fragment passed and the mask is not 0.
 //   X7   the word from zb_forward, registered
-//   X8   per channel acc + term (the terms from zb_weight, A + 1 bits); zb_mul8: r * t, stage 1
+//   X8   per channel acc + term (term_c = (p_c * w) >> S of zb_blend's products, A + 1 bits);
+//        zb_mul8: r * t, stage 1
 //   X9   acc' = min(2^A - 1, acc + term); r * t, stage 2
 //   X10  r' = (r * t + 128) >> 8: the product's top bits plus its bit 7
 //   X11  the word's flops drive the write data (and zb_forward's bypass), no logic after them
@@ -12,7 +13,9 @@ module zb_accum #(
   parameter int WORDS    = 4096,
   parameter int BEAT     = 8,
   parameter int ACC_BITS = 16,  // A
-  parameter int REV_BITS = 8    // R
+  parameter int REV_BITS = 8,   // R
+  parameter int WEIGHT_BITS = 4,  // W
+  localparam int PW = 16 + (WEIGHT_BITS > 0 ? WEIGHT_BITS : 1)  // p * w (zb_weight's w: 8 + W bits)
 ) (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -37,8 +40,8 @@ module zb_accum #(
   input  logic [$clog2(WORDS)-1:0]            x11_addr_i,
   input  logic                                x10_pass_i,
   input  logic                                x11_pass_i,
-  // X8: the fragment side (zb_weight).
-  input  logic [4*ACC_BITS-1:0]               x8_term_i,
+  // X8: the fragment side: the products p_c * w (zb_blend's multipliers), t and 3t (zb_weight).
+  input  logic [4*PW-1:0]                     x8_prod_i,
   input  logic [8:0]                          x8_t_i,
   input  logic [10:0]                         x8_t3_i,
   // X11's write as the plane takes it, for zb_rop's retire port.
@@ -49,6 +52,9 @@ module zb_accum #(
   localparam int A  = ACC_BITS;
   localparam int R  = REV_BITS;
   localparam int AW = 4 * A + R;
+  localparam int Shift = WEIGHT_BITS + 20 > A ? WEIGHT_BITS + 20 - A : 0;
+  // A term's bits: at most A - 3, so acc + term fits A + 1 bits.
+  localparam int TermW = PW - Shift;
 
   logic [AW-1:0] amem_rdata, x7_word, x11_word;
   logic          acc_on, x10_awe, x11_awe;
@@ -119,11 +125,20 @@ module zb_accum #(
     x8_word_q <= x7_word;
   end
 
+  // term_c = (p_c * w) >> S, S = max(0, W + 20 - A): wiring only.
   for (genvar c = 0; c < 4; c++) begin : g_chan
+    logic [A-1:0] term;
     logic [A:0]   x9_sum_q;
+    logic [Shift > 0 ? Shift - 1 : 0 : 0] unused_low;
+    assign term = A'(x8_prod_i[PW*c + Shift +: TermW]);
+    if (Shift > 0) begin : g_low
+      assign unused_low = x8_prod_i[PW*c +: Shift];
+    end else begin : g_nolow
+      assign unused_low = 1'b0;
+    end
     logic [A-1:0] x10_acc_q, x11_acc_q;
     always_ff @(posedge clk_i) begin
-      x9_sum_q  <= {1'b0, x8_word_q[A*c +: A]} + {1'b0, x8_term_i[A*c +: A]};
+      x9_sum_q  <= {1'b0, x8_word_q[A*c +: A]} + {1'b0, term};
       x10_acc_q <= x9_sum_q[A] ? '1 : x9_sum_q[A-1:0];
       x11_acc_q <= x10_acc_q;
     end

@@ -11,6 +11,10 @@
 //             -> min(255, d + m(m(s, a), 255 - A_d)), alpha min(255, A_d + m(a, 255 - A_d))
 // and coverage, c' = (k * d + q) >> log2 N with k = N - w and q = w*s + N/2 from the fragment
 // side (no m, no saturation: the sum is below 256 N).
+// Accumulate mode writes no colour: its multipliers form zb_accum's products p_c * w instead
+// (k = w, K_W bits, from zb_weight; v = p_c). Their operands come two cycles early (X5, where
+// the colour path's come in X7), so the products are out at c+1 (X8): the mode holds while
+// fragments are in flight (zb_rop's StateWriteIdle), so nothing else is in these stages.
 //   c     v = under ? 255 - A_d : d; add = under ? d : add_i
 //   c+1   zb_mul8 stage 1;           c+2   zb_mul8 stage 2: t = k * v
 //   c+3   lo = (t[7:0] + t[15:8] + 0x80) >> 8 (0..2) completes m = t[15:8] + lo; so
@@ -22,6 +26,7 @@
 module zb_blend
 #(
   parameter int COV_SAMPLES = 16,  // N: 1, 2, 4, 8 or 16
+  parameter int K_W         = 8,   // k's width: 8, or the accumulate blend's w (zb_weight)
   localparam int CovW       = $clog2(COV_SAMPLES + 1),
   localparam int QW         = 8 + CovW  // w*s + N/2 < 2^(8 + log2 N + 1)
 ) (
@@ -33,14 +38,19 @@ module zb_blend
   input  logic [39:0]     k3_i,     // per channel 3 * k, 10 bits each
   input  logic [31:0]     add_i,    // per channel (not used in under mode)
   input  logic [4*QW-1:0] q_i,      // per channel, coverage mode
-  output logic [31:0]     color_o   // cycle c + 4: blended and masked
+  input  logic [K_W-1:0]  w_i,      // accumulate mode, cycle c - 2: k of every channel
+  input  logic [K_W+1:0]  w3_i,     // 3 w
+  input  logic [31:0]     p_i,      // accumulate mode, cycle c - 2: v per channel
+  output logic [31:0]     color_o,  // cycle c + 4: blended and masked
+  output logic [4*(K_W+8)-1:0] prod_o  // accumulate mode, cycle c + 1: per channel w * p
 );
 
   localparam int CovLog = $clog2(COV_SAMPLES);
 
-  logic under, cov;
+  logic under, cov, acc;
   assign under = mode_i == zb_pkg::BlendUnder;
   assign cov   = mode_i == zb_pkg::BlendCoverage;
+  assign acc   = mode_i == zb_pkg::BlendAccumulate;
 
   // The write mask's alternative to r, formed a cycle early: coverage result or stored colour.
   logic [31:0] cov3, d3, alt_d;
@@ -54,14 +64,15 @@ module zb_blend
 
   for (genvar c = 0; c < 4; c++) begin : g_chan
     // c -> c+1
-    logic [7:0]    v1_q, k1_q, add1_q, d1_q;
-    logic [9:0]    k31_q;
+    logic [7:0]    v1_q, add1_q, d1_q;
+    logic [K_W-1:0] k1_q;
+    logic [K_W+1:0] k31_q;
     logic [QW-1:0] q1_q;
     // c+1 .. c+3: the multiplier's two stages; add, d and q ride along
     logic [7:0]    add2_q, d2_q, d3_q;
     logic [26:0]   add3_q;         // add + j at [9*j +: 9], j = 0, 1, 2: one adder per sum
     logic [QW-1:0] q2_q, q3_q;
-    logic [15:0]   t;
+    logic [K_W+7:0] t;
     // c+3 -> c+4
     logic [8:0]    u;
     logic [1:0]    lo;             // (t[7:0] + t[15:8] + 0x80) >> 8
@@ -74,10 +85,10 @@ module zb_blend
     logic [QW-9:0] unused_cs;
 
     always_ff @(posedge clk_i) begin
-      v1_q     <= under ? ~dst_i[31:24] : dst_i[8*c +: 8];
+      v1_q     <= acc ? p_i[8*c +: 8] : (under ? ~dst_i[31:24] : dst_i[8*c +: 8]);
       add1_q   <= under ? dst_i[8*c +: 8] : add_i[8*c +: 8];
-      k1_q     <= k_i[8*c +: 8];
-      k31_q    <= k3_i[10*c +: 10];
+      k1_q     <= acc ? w_i : K_W'(k_i[8*c +: 8]);
+      k31_q    <= acc ? w3_i : (K_W+2)'(k3_i[10*c +: 10]);
       d1_q     <= dst_i[8*c +: 8];
       q1_q     <= q_i[QW*c +: QW];
       add2_q   <= add1_q;
@@ -93,7 +104,10 @@ module zb_blend
       r4_q     <= r_d;
     end
 
-    zb_mul8 u_mul (
+    zb_mul8 #(
+      .K_W(K_W),
+      .V_W(8)
+    ) u_mul (
       .clk_i(clk_i),
       .k_i  (k1_q),
       .k3_i (k31_q),
@@ -112,6 +126,7 @@ module zb_blend
       assign r_d[8*j +: 8] = (h[9] | h[8]) ? 8'hff : h[7:0];
     end
     assign cs_d      = (QW'(t) + q3_q) >> CovLog;
+    assign prod_o[(K_W+8)*c +: K_W+8] = t;
     assign unused_cs = cs_d[QW-1:8];
 
     assign cov3[8*c +: 8] = cs_d[7:0];

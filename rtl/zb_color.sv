@@ -2,11 +2,13 @@
 // is read at E5 (X5's address) and its word registered in X6 (the RAM's clock-to-out and the
 // plane's resolve get a cycle of their own); zb_forward gives X7 the pixel's newest word;
 // zb_blend blends X7..X11; the colour is written at E11 when the fragment passed and the mask
-// lets a channel through, except in accumulate mode (zb_accum writes its own word instead).
+// lets a channel through, except in accumulate mode (zb_accum writes its own word instead,
+// with zb_blend's products).
 module zb_color #(
   parameter int WORDS       = 4096,
   parameter int BEAT        = 8,
-  parameter int COV_SAMPLES = 16
+  parameter int COV_SAMPLES = 16,
+  parameter int K_W         = 8    // zb_blend's k: the accumulate blend's w (zb_weight)
 ) (
   input  logic                              clk_i,
   input  logic                              rst_ni,
@@ -36,6 +38,12 @@ module zb_color #(
   input  logic [39:0]                       x7_k3_i,
   input  logic [31:0]                       x7_add_i,
   input  logic [4*(8+$clog2(COV_SAMPLES+1))-1:0] x7_q_i,
+  // X5: the accumulate blend's operands (zb_weight's w, 3w; zb_operands' p), and in X8 their
+  // products p_c * w, for zb_accum.
+  input  logic [K_W-1:0]                    x5_w_i,
+  input  logic [K_W+1:0]                    x5_w3_i,
+  input  logic [31:0]                       x5_p_i,
+  output logic [4*(K_W+8)-1:0]              x8_prod_o,
   // X11's colour write as the plane takes it, for zb_rop's retire port.
   output logic                              x11_cwe_o,
   output logic [31:0]                       x11_wcolor_o
@@ -94,7 +102,8 @@ module zb_color #(
   assign x11_wcolor_o = x11_color;
 
   zb_blend #(
-    .COV_SAMPLES(COV_SAMPLES)
+    .COV_SAMPLES(COV_SAMPLES),
+    .K_W        (K_W)
   ) u_blend (
     .clk_i  (clk_i),
     .mode_i (blend_i),
@@ -104,7 +113,11 @@ module zb_color #(
     .k3_i   (x7_k3_i),
     .add_i  (x7_add_i),
     .q_i    (x7_q_i),
-    .color_o(x11_color)
+    .w_i    (x5_w_i),
+    .w3_i   (x5_w3_i),
+    .p_i    (x5_p_i),
+    .color_o(x11_color),
+    .prod_o (x8_prod_o)
   );
 
 endmodule

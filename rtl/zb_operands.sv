@@ -1,6 +1,7 @@
 // zb_operands: the fragment side of the blend (docs/rtl.md "Pipeline"), X1..X6, beside the depth
 // side: m(s, a) (zb_premul, X1 -> X5), the coverage weight's terms w s (X4 -> X6), then per
-// blend mode zb_blend's operands k, 3k, the addend and q (X6 -> X7; zb_blend's header).
+// blend mode zb_blend's operands k, 3k, the addend and q (X6 -> X7; zb_blend's header), and
+// the accumulate blend's p_c (X5).
 // The fragment's colour and 3a travel X1..X6 in arrays indexed by stage.
 module zb_operands #(
   parameter int COV_SAMPLES = 16
@@ -14,7 +15,7 @@ module zb_operands #(
   output logic [39:0]                        x7_k3_o,
   output logic [31:0]                        x7_add_o,
   output logic [4*(8+$clog2(COV_SAMPLES+1))-1:0] x7_q_o,
-  output logic [31:0]                        x6_ms_o       // X6: m(s, a), for zb_weight
+  output logic [31:0]                        x5_p_o        // X5: p_c = m(s, a), p_A = a
 );
 
   localparam int CovW = $clog2(COV_SAMPLES + 1);
@@ -158,7 +159,8 @@ module zb_operands #(
     end
   end
 
-  assign x6_ms_o = x6_ms_q;
+  // The accumulate blend's p (zb_blend multiplies it by zb_weight's w in accumulate mode).
+  assign x5_p_o = {x_rgba_q[5][31:24], x5_ms[23:0]};
 
   always_ff @(posedge clk_i) begin
     x7_k_o   <= x6_k;

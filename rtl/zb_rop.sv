@@ -323,7 +323,7 @@ module zb_rop
   logic [39:0]        x7_k3;
   logic [4*QW-1:0]    x7_q;
 
-  logic [31:0]        x6_ms;
+  logic [31:0]        x5_p;
 
   zb_operands #(
     .COV_SAMPLES(COV_SAMPLES)
@@ -337,26 +337,29 @@ module zb_rop
     .x7_k3_o    (x7_k3),
     .x7_add_o   (x7_add),
     .x7_q_o     (x7_q),
-    .x6_ms_o    (x6_ms)
+    .x5_p_o     (x5_p)
   );
 
   // ---------------------------------------------------------------------------------------
-  // M..X8: the fragment side of the accumulate blend (zb_weight).
+  // M..X8: the fragment side of the accumulate blend (zb_weight); its products p_c * w on
+  // zb_blend's multipliers (X6, X7), idle in accumulate mode.
   // ---------------------------------------------------------------------------------------
-  logic [4*ACC_BITS-1:0] x8_term;
-  logic [8:0]            x8_t;
-  logic [10:0]           x8_t3;
+  localparam int WgtW = 8 + (WEIGHT_BITS > 0 ? WEIGHT_BITS : 1);  // w = a * F
+  logic [WgtW-1:0]      x5_w;
+  logic [WgtW+1:0]      x5_w3;
+  logic [4*(WgtW+8)-1:0] x8_prod;
+  logic [8:0]           x8_t;
+  logic [10:0]          x8_t3;
 
   zb_weight #(
-    .ACC_BITS   (ACC_BITS),
     .WEIGHT_BITS(WEIGHT_BITS)
   ) u_weight (
     .clk_i    (clk_i),
     .m_zhi_i  (m_z_q[DEPTH_BITS-1 -: 8]),
     .m_a_i    (m_rgba_q[31:24]),
     .m_a3_i   (m_a3_q),
-    .x6_ms_i  (x6_ms),
-    .x8_term_o(x8_term),
+    .x5_w_o   (x5_w),
+    .x5_w3_o  (x5_w3),
     .x8_t_o   (x8_t),
     .x8_t3_o  (x8_t3)
   );
@@ -367,7 +370,8 @@ module zb_rop
   zb_color #(
     .WORDS      (Words),
     .BEAT       (BEAT),
-    .COV_SAMPLES(COV_SAMPLES)
+    .COV_SAMPLES(COV_SAMPLES),
+    .K_W        (WgtW)
   ) u_color (
     .clk_i        (clk_i),
     .rst_ni       (rst_ni),
@@ -394,6 +398,10 @@ module zb_rop
     .x7_k3_i      (x7_k3),
     .x7_add_i     (x7_add),
     .x7_q_i       (x7_q),
+    .x5_w_i       (x5_w),
+    .x5_w3_i      (x5_w3),
+    .x5_p_i       (x5_p),
+    .x8_prod_o    (x8_prod),
     .x11_cwe_o    (mon_cwe_o),
     .x11_wcolor_o (mon_wcolor_o)
   );
@@ -405,7 +413,8 @@ module zb_rop
     .WORDS   (Words),
     .BEAT    (BEAT),
     .ACC_BITS(ACC_BITS),
-    .REV_BITS(REV_BITS)
+    .REV_BITS(REV_BITS),
+    .WEIGHT_BITS(WEIGHT_BITS)
   ) u_accum (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
@@ -428,7 +437,7 @@ module zb_rop
     .x11_addr_i  (x_addr_q[11]),
     .x10_pass_i  (x_pass_q[10]),
     .x11_pass_i  (x_pass_q[11]),
-    .x8_term_i   (x8_term),
+    .x8_prod_i   (x8_prod),
     .x8_t_i      (x8_t),
     .x8_t3_i     (x8_t3),
     .x11_awe_o   (mon_awe_o),

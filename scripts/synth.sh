@@ -16,8 +16,8 @@ usage: scripts/synth.sh [options]
                       more than HX8K's 32 block RAMs)
   --tile-h N          TILE_H (default 16: with the accumulation plane a 32x32 tile needs 51
                       block RAMs, 32x16 needs 31)
-  --beat N            BEAT, tile port pixels a clock (default 2: the widest whose block RAMs
-                      fit HX8K's 32 with this tile; 4 would need 37)
+  --beat N            BEAT, tile port pixels a clock (default 1: one bank a plane, 28 block
+                      RAMs; 2 takes 31 and some 600 logic cells more, which the HX8K lacks)
   --depth-bits N      DEPTH_BITS (default 24)
   --cov-samples N     COV_SAMPLES (default 16)
   --set NAME=VALUE    another zb_rop parameter (ACC_BITS, WINDOW, CNT_W, ...), repeatable
@@ -38,7 +38,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 out=out/synth
 tile=32
 tile_h=16
-beat=2
+beat=1
 depth_bits=24
 cov_samples=16
 freq=100

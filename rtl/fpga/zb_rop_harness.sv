@@ -1,11 +1,12 @@
 // zb_rop_harness: FPGA timing top for scripts/synth.sh, not part of the design (so not in rtl/).
 // zb_rop has far more I/O bits than an iCE40 has pins. Here every zb_rop input comes from a
-// flip-flop of one long shift register loaded from one pin (sin_i), and every output is
-// registered (the counters are flops inside zb_rop already), then XOR-reduced over two
-// registered levels to one pin (sout_o). Each input is an independent flop and each output
-// reaches the pin, so nothing of zb_rop can be optimised away, and every timed path that touches
-// zb_rop starts and ends on a flop: nextpnr's clock figure is register to register inside zb_rop
-// (or the 2-3 LUT levels of the harness itself).
+// flip-flop of one long shift register loaded from one pin (sin_i), and the outputs are
+// XOR-reduced over three registered levels to one pin (sout_o): four outputs into a flop through
+// one LUT (the counters, flops inside zb_rop already, skip that level), then 16, then the rest.
+// Each input is an independent flop and each output reaches the pin, so nothing of zb_rop can be
+// optimised away, and every timed path that touches zb_rop starts and ends on a flop: nextpnr's
+// clock figure is register to register through zb_rop, an output's path with one harness LUT
+// more (a registered output in a flop of its own costs a logic cell each: 460 at BEAT 2).
 // rst_ni: pin, asserted asynchronously, released through a two-flop synchroniser.
 module zb_rop_harness #(
   parameter int unsigned DEPTH_BITS  = 24,
@@ -62,8 +63,11 @@ module zb_rop_harness #(
   localparam int unsigned OBusy    = ORAcc + BEAT * AccW;
   localparam int unsigned OCnt     = OBusy + 1;
   localparam int unsigned OutW     = OCnt + 11 * CNT_W;
-  localparam int unsigned Grp      = 16;                       // bits per first-level XOR
-  localparam int unsigned X1W      = (OutW + Grp - 1) / Grp;
+  localparam int unsigned Grp      = 16;                       // bits per second-level XOR
+  // First level: each flop takes the XOR of four outputs (one LUT, packed with its flop).
+  localparam int unsigned X0W      = (OCnt + 3) / 4;
+  localparam int unsigned PadW     = X0W + OutW - OCnt;        // the first level and the counters
+  localparam int unsigned X1N      = (PadW + Grp - 1) / Grp;
 
   logic       rst_sync_q, rst_n_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -151,16 +155,20 @@ module zb_rop_harness #(
     .mon_wacc_o        ()
   );
 
-  logic [OCnt-1:0]     out_q;
-  logic [X1W*Grp-1:0]  out_pad;
-  logic [X1W-1:0]      x1_q;
+  logic [4*X0W-1:0]    out0;
+  logic [X0W-1:0]      x0_q;
+  logic [X1N*Grp-1:0]  out_pad;
+  logic [X1N-1:0]      x1_q;
   logic                sout_q;
 
-  assign out_pad = {{(X1W * Grp - OutW){1'b0}}, out_d[OutW-1:OCnt], out_q};
+  assign out0 = {{(4 * X0W - OCnt){1'b0}}, out_d[OCnt-1:0]};
+  assign out_pad = {{(X1N * Grp - PadW){1'b0}}, out_d[OutW-1:OCnt], x0_q};
 
   always_ff @(posedge clk_i) begin
-    out_q <= out_d[OCnt-1:0];
-    for (int unsigned i = 0; i < X1W; i++) begin
+    for (int unsigned j = 0; j < X0W; j++) begin
+      x0_q[j] <= ^out0[4*j +: 4];
+    end
+    for (int unsigned i = 0; i < X1N; i++) begin
       x1_q[i] <= ^out_pad[i*Grp +: Grp];
     end
     sout_q <= ^x1_q;

@@ -1,41 +1,51 @@
 #!/usr/bin/env bash
-# The fast-clear epoch and the tile counters' saturation, each caught by one suite only.
-# Mutant 1004 inverts a bit of the depth plane's compare of a write-back's epoch with the
-# plane's, so the last write-back of a store spends the wrong epoch when the next run's fast
-# clear meets it; mutant 417 ties the depth plane's W1 flag to 0, so a store writes no fresh
-# word back and the next fast clear finds words of the old epoch. Only the clears suite (a
-# store straight into a clear, clears with no store between, a probe of every pixel) sees
-# them; the tiles suite, whose re-read puts cycles between store and clear, must not. Mutant
-# 68 inverts a bit of the tile store count's saturation compare, so the count stops at 767:
-# only the tiles suite, whose load-back takes the count to its saturation, sees it.
+# The fast-clear epoch and the tile counters, each caught by one suite only.
+# Mutant 703 inverts the depth plane's compare of a write-back's epoch with the plane's, so the
+# last write-back of a store spends the wrong epoch when the next run's fast clear meets it;
+# mutant 458 ties the colour plane's W1 flag to 0, so a store writes no fresh word back and the
+# next fast clear finds words of the old epoch. Only the clears suite (a store straight into a
+# clear, clears with no store between, a probe of every pixel) sees them; the tiles suite, whose
+# re-read puts cycles between store and clear, must not. Mutant 1 flips a bit of the tile
+# counters' next value under a condition the clears suite never meets: only the tiles suite,
+# whose counts the driver checks per tile, sees it. Mutant 845 inverts the load count's "at all
+# ones" flop: the tiles suite's load-back, which takes the counts to their saturation, names it.
 set -u
 source "$(dirname "$0")/mutant_lib.sh" "$@"
 
-expect_mutant 1004 '-mode inv -module zb_rop -cell $flatten\\u_depth.\\u_depth_plane.$eq$rtl/zb_plane.sv:78' \
+expect_mutant 703 '-mode inv -module zb_rop -cell $flatten\\u_depth.\\u_depth_plane.$eq$rtl/zb_plane.sv:78' \
   "the write-back epoch-compare mutant"
-expect_mutant 417 '-mode const0 -module zb_rop -cell $flatten\\u_depth.\\u_depth_plane.$procdff$[0-9]* -port Q -portbit 0 -wire u_depth.u_depth_plane.wback_q ' \
+expect_mutant 458 '-mode const0 -module zb_rop -cell $flatten\\u_color.\\u_color_plane.$procdff$[0-9]* -port Q -portbit 0 -wire u_color.u_color_plane.wback_q ' \
   "the W1 flag mutant"
-expect_mutant 68 '-mode inv -module zb_rop -cell $flatten\\u_tile_counters.$eq$rtl/zb_counters.sv:34' \
-  "the store-count saturation mutant"
+expect_mutant 1 '-mode cnot0 -module zb_rop -cell $flatten\\u_tile_counters.$procmux' \
+  "the tile-count mutant"
+expect_mutant 845 '-mode inv -module zb_rop -cell $flatten\\u_tile_counters.$procdff$[0-9]* -port Q -portbit 0 -wire u_tile_counters.g_cnt\[0\].sat_q ' \
+  "the load-count saturation mutant"
 run() { "$tb" -q --mismatch-fst "" "$@" >"$tmp/out.txt" 2>&1; }
 
 run --mutant 0 --suite clears --seed 1 || fail "mutant 0 fails the clears suite"
-for m in 1004 417; do
+for m in 703 458; do
   run --mutant "$m" --suite tiles --seed 1 ||
     fail "mutant $m fails the tiles suite: then this test no longer shows the clears suite alone"
   run --mutant "$m" --suite clears --seed 1
   rc=$?
   [[ $rc -eq 1 ]] || fail "mutant $m in the clears suite: exit $rc, want 1"
-  grep -qE '^(LOCKSTEP )?MISMATCH in frame [0-9]+ pass [0-9]+ "clears-(probe|silent)": ' "$tmp/out.txt" ||
-    fail "mutant $m: no mismatch report in a clears-probe or clears-silent pass"
+  grep -qE '^(LOCKSTEP )?MISMATCH in frame [0-9]+ pass [0-9]+ "clears-(store|probe|silent)": ' "$tmp/out.txt" ||
+    fail "mutant $m: no mismatch report in a clears pass"
   echo "ok: mutant $m: $(grep -m1 'MISMATCH' "$tmp/out.txt")"
 done
 
-run --mutant 68 --suite clears --seed 1 ||
-  fail "mutant 68 fails the clears suite: then this test no longer shows the tiles suite alone"
-run --mutant 68 --suite tiles --seed 1
+run --mutant 1 --suite clears --seed 1 ||
+  fail "mutant 1 fails the clears suite: then this test no longer shows the tiles suite alone"
+run --mutant 1 --suite tiles --seed 1
 rc=$?
-[[ $rc -eq 1 ]] || fail "mutant 68 in the tiles suite: exit $rc, want 1"
-grep -q 'store count 767 at load-back beat 0 after its store was read again: saturated at 1023, it must hold there' "$tmp/out.txt" ||
-  fail "mutant 68: no 'store count 767 ... must hold there' line"
-echo "ok: mutant 68: $(grep -o 'store count .*' "$tmp/out.txt" | head -1)"
+[[ $rc -eq 1 ]] || fail "mutant 1 in the tiles suite: exit $rc, want 1"
+grep -qE 'rtl: tile \([0-9]+,[0-9]+\) counted [0-9]+ load and [0-9]+ store beats, the driver moved [0-9]+ and [0-9]+' "$tmp/out.txt" ||
+  fail "mutant 1: no 'tile (x,y) counted N load and N store beats, the driver moved N and N' line"
+echo "ok: mutant 1: $(grep -o 'tile ([0-9,]*) counted .*' "$tmp/out.txt" | head -1)"
+
+run --mutant 845 --suite tiles --seed 1
+rc=$?
+[[ $rc -eq 1 ]] || fail "mutant 845 in the tiles suite: exit $rc, want 1"
+grep -qE 'counted [0-9]+ store and [0-9]+ load beats after its store was read again and loaded back; two tiles of beats saturate at [0-9]+' "$tmp/out.txt" ||
+  fail "mutant 845: no 'counted N store and N load beats after its store was read again ... saturate at N' line"
+echo "ok: mutant 845: $(grep -o 'counted [0-9]* store .*' "$tmp/out.txt" | head -1)"
