@@ -451,7 +451,7 @@ def main():
     ap.add_argument("--tb", help="the testbench for suite tests (default BUILD/zblend_tb; "
                     "e.g. BUILD/zblend_tb_mut)")
     ap.add_argument("--tb-args", default="", help="arguments put first on every testbench "
-                    "command (e.g. '--mutant 1004')")
+                    "command (e.g. '--mutant 703')")
     ap.add_argument("-j", "--jobs", type=int, default=os.cpu_count() or 1)
     ap.add_argument("--index", type=int, help="one: the test's index in the group (0-based)")
     ap.add_argument("--waves", type=int, default=3, metavar="K",

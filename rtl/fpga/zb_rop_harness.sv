@@ -15,7 +15,7 @@ module zb_rop_harness #(
   parameter int unsigned CNT_W       = 32,
   parameter int unsigned COV_SAMPLES = 16,
   parameter int unsigned WINDOW      = 8,
-  parameter int unsigned BEAT        = 2,   // scripts/synth.sh --beat
+  parameter int unsigned BEAT        = 1,   // scripts/synth.sh --beat
   parameter int unsigned ACC_BITS    = 16,
   parameter int unsigned REV_BITS    = 8,
   parameter int unsigned WEIGHT_BITS = 4

@@ -34,18 +34,18 @@ for m in 703 458; do
   echo "ok: mutant $m: $(grep -m1 'MISMATCH' "$tmp/out.txt")"
 done
 
+# tiles_catches M PATTERN WHAT: mutant M fails the tiles suite with a line matching PATTERN.
+tiles_catches() {
+  run --mutant "$1" --suite tiles --seed 1
+  local rc=$?
+  [[ $rc -eq 1 ]] || fail "mutant $1 in the tiles suite: exit $rc, want 1"
+  grep -qE -- "$2" "$tmp/out.txt" || fail "mutant $1: no '$3' line"
+  echo "ok: mutant $1: $(grep -m1 -oE -- "$2" "$tmp/out.txt")"
+}
+
 run --mutant 1 --suite clears --seed 1 ||
   fail "mutant 1 fails the clears suite: then this test no longer shows the tiles suite alone"
-run --mutant 1 --suite tiles --seed 1
-rc=$?
-[[ $rc -eq 1 ]] || fail "mutant 1 in the tiles suite: exit $rc, want 1"
-grep -qE 'rtl: tile \([0-9]+,[0-9]+\) counted [0-9]+ load and [0-9]+ store beats, the driver moved [0-9]+ and [0-9]+' "$tmp/out.txt" ||
-  fail "mutant 1: no 'tile (x,y) counted N load and N store beats, the driver moved N and N' line"
-echo "ok: mutant 1: $(grep -o 'tile ([0-9,]*) counted .*' "$tmp/out.txt" | head -1)"
-
-run --mutant 845 --suite tiles --seed 1
-rc=$?
-[[ $rc -eq 1 ]] || fail "mutant 845 in the tiles suite: exit $rc, want 1"
-grep -qE 'counted [0-9]+ store and [0-9]+ load beats after its store was read again and loaded back; two tiles of beats saturate at [0-9]+' "$tmp/out.txt" ||
-  fail "mutant 845: no 'counted N store and N load beats after its store was read again ... saturate at N' line"
-echo "ok: mutant 845: $(grep -o 'counted [0-9]* store .*' "$tmp/out.txt" | head -1)"
+tiles_catches 1 'rtl: tile \([0-9]+,[0-9]+\) counted [0-9]+ load and [0-9]+ store beats, the driver moved [0-9]+ and [0-9]+' \
+  "tile (x,y) counted N load and N store beats, the driver moved N and N"
+tiles_catches 845 'counted [0-9]+ store and [0-9]+ load beats after its store was read again and loaded back; two tiles of beats saturate at [0-9]+' \
+  "counted N store and N load beats after its store was read again ... saturate at N"
