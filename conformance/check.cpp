@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -29,6 +30,8 @@ struct ManifestTest {
   std::string name;
   int width = 0, height = 0;
   std::string signature_sha256;
+  WboitFormat wboit;         // its config's accumulation widths
+  bool needs_accum = false;  // its colour is resolved from the accumulation plane
 };
 
 // A test name is a directory of the suite: letters, digits, '-', '_' and '.', not first.
@@ -74,6 +77,16 @@ std::vector<ManifestTest> read_manifest(const fs::path& suite) {
     if (j.at("version") != kSuiteVersion)
       throw malformed(fmt::format("version {} is not supported (this zblend reads {})",
                                   j.at("version").dump(), kSuiteVersion));
+    std::map<std::string, WboitFormat> configs;
+    for (const json& c : j.at("configs")) {
+      const WboitFormat f{c.at("acc_bits").get<int>(), c.at("rev_bits").get<int>(),
+                          c.at("weight_bits").get<int>()};
+      if (!valid_wboit_format(f))
+        throw malformed(fmt::format("config '{}': acc_bits {}, rev_bits {}, weight_bits {} are "
+                                    "out of range", c.at("name").get<std::string>(), f.acc_bits,
+                                    f.rev_bits, f.weight_bits));
+      configs[c.at("name").get<std::string>()] = f;
+    }
     std::set<std::string> seen;
     for (const json& t : j.at("tests")) {
       ManifestTest m;
@@ -81,6 +94,11 @@ std::vector<ManifestTest> read_manifest(const fs::path& suite) {
       m.width = t.at("width").get<int>();
       m.height = t.at("height").get<int>();
       m.signature_sha256 = t.at("signature_sha256").get<std::string>();
+      m.needs_accum = t.at("needs_accum").get<bool>();
+      const std::string config = t.at("config").get<std::string>();
+      if (!configs.count(config))
+        throw malformed(fmt::format("test '{}': config '{}' is not in \"configs\"", m.name, config));
+      m.wboit = configs[config];
       if (!valid_name(m.name)) throw malformed(fmt::format("test name '{}' is not a directory name", m.name));
       if (!seen.insert(m.name).second) throw malformed(fmt::format("test '{}' is listed twice", m.name));
       if (m.width < 1 || m.width > kMaxFrameSize || m.height < 1 || m.height > kMaxFrameSize)
@@ -95,11 +113,12 @@ std::vector<ManifestTest> read_manifest(const fs::path& suite) {
   return tests;
 }
 
-// A file of hex words, one a line. `strict` (expect files): exactly `digits` lower-case digits
-// a line. Otherwise (a DUT's got files, $writememh's): 1 to `digits` digits of either case,
-// surrounding blanks, and blank lines and // comments skipped. Returns an error or "".
+// A file of hex words, one a line, each kept as `digits` lower-case digits (a word may be wider
+// than 64 bits: the accumulation word). `strict` (expect files): exactly `digits` lower-case
+// digits a line. Otherwise (a DUT's got files, $writememh's): 1 to `digits` digits of either
+// case, surrounding blanks, and blank lines and // comments skipped. Returns an error or "".
 std::string parse_words(const std::string& text, int digits, bool strict, const std::string& file,
-                        std::vector<uint32_t>& out) {
+                        std::vector<std::string>& out) {
   std::istringstream in(text);
   std::string line;
   for (size_t n = 1; std::getline(in, line); ++n) {
@@ -118,7 +137,9 @@ std::string parse_words(const std::string& text, int digits, bool strict, const 
     if (!hex)
       return fmt::format("{} line {}: '{}' is not a hex word of {}{} digits", file, n,
                          w.substr(0, 40), strict ? "" : "at most ", digits);
-    out.push_back(uint32_t(std::stoul(w, nullptr, 16)));
+    std::transform(w.begin(), w.end(), w.begin(),
+                   [](char c) { return char(std::tolower(static_cast<unsigned char>(c))); });
+    out.push_back(std::string(size_t(digits) - w.size(), '0') + w);
   }
   return "";
 }
@@ -129,7 +150,7 @@ struct PlaneCheck {
   std::string first;         // the first problem, "" when ok
 };
 
-PlaneCheck check_plane(const ManifestTest& t, Plane plane, const std::vector<uint32_t>& expect,
+PlaneCheck check_plane(const ManifestTest& t, Plane plane, const std::vector<std::string>& expect,
                        const fs::path& got_path) {
   PlaneCheck c;
   const std::optional<std::string> text = read_text(got_path);
@@ -138,8 +159,9 @@ PlaneCheck check_plane(const ManifestTest& t, Plane plane, const std::vector<uin
     c.first = fmt::format("missing {}", got_path.string());
     return c;
   }
-  std::vector<uint32_t> got;
-  const std::string error = parse_words(*text, hex_digits(plane), false, got_path.string(), got);
+  std::vector<std::string> got;
+  const std::string error =
+      parse_words(*text, hex_digits(plane, t.wboit), false, got_path.string(), got);
   if (error.empty() && got.size() != expect.size()) {
     c.state = "malformed";
     c.first = fmt::format("{}: {} words, expected {} ({}x{})", got_path.string(), got.size(),
@@ -155,15 +177,15 @@ PlaneCheck check_plane(const ManifestTest& t, Plane plane, const std::vector<uin
   for (size_t i = 0; i < expect.size(); ++i) {
     if (got[i] == expect[i]) continue;
     if (differ++ == 0)
-      c.first = fmt::format("{} pixel ({}, {}): expected {:0{}x}, got {:0{}x}", to_string(plane),
-                            i % size_t(t.width), i / size_t(t.width), expect[i], hex_digits(plane),
-                            got[i], hex_digits(plane));
+      c.first = fmt::format("{} pixel ({}, {}): expected {}, got {}", to_string(plane),
+                            i % size_t(t.width), i / size_t(t.width), expect[i], got[i]);
   }
   if (differ) c.state = fmt::format("{} pixel{} differ{}", differ, differ == 1 ? "" : "s", differ == 1 ? "s" : "");
   return c;
 }
 
-TestResult check_test(const fs::path& suite, const fs::path& out, const ManifestTest& t) {
+TestResult check_test(const fs::path& suite, const fs::path& out, const ManifestTest& t,
+                      bool dut_accum) {
   // The expected planes, held to the manifest's hash first: a damaged suite is not a DUT failure.
   std::string expect_text[std::size(kPlanes)];
   Sha256 hash;
@@ -180,17 +202,28 @@ TestResult check_test(const fs::path& suite, const fs::path& out, const Manifest
     throw ConformanceError(fmt::format("SUITE {}: the expect files of test '{}' do not match its "
                                        "signature_sha256 (export the suite again)",
                                        suite.string(), t.name));
-  TestResult r{t.name, true, ""};
+  TestResult r{t.name, true, false, ""};
+  if (t.needs_accum && !dut_accum) {
+    r.skipped = true;
+    r.line = fmt::format("skip  {}: needs the accumulation plane (a resolve wboit), which the DUT "
+                         "does not have", t.name);
+    return r;
+  }
   std::string first, states;
   for (size_t p = 0; p < std::size(kPlanes); ++p) {
     const Plane plane = kPlanes[p];
-    std::vector<uint32_t> expect;
+    std::vector<std::string> expect;
     const fs::path expect_path = suite / t.name / fmt::format("expect.{}.hex", to_string(plane));
-    std::string error = parse_words(expect_text[p], hex_digits(plane), true, expect_path.string(), expect);
+    std::string error =
+        parse_words(expect_text[p], hex_digits(plane, t.wboit), true, expect_path.string(), expect);
     if (error.empty() && expect.size() != size_t(t.width) * size_t(t.height))
       error = fmt::format("{}: {} words for a {}x{} frame", expect_path.string(), expect.size(),
                           t.width, t.height);
     if (!error.empty()) throw ConformanceError("SUITE " + error + " (export the suite again)");
+    if (plane == Plane::kAccum && !dut_accum) {
+      states += fmt::format(", {} not checked (the DUT has none)", to_string(plane));
+      continue;
+    }
     const PlaneCheck c =
         check_plane(t, plane, expect, out / t.name / fmt::format("got.{}.hex", to_string(plane)));
     if (first.empty()) first = c.first;
@@ -211,7 +244,7 @@ std::vector<std::string> suite_test_names(const std::string& suite) {
 }
 
 std::vector<TestResult> check_suite(const std::string& suite, const std::string& out,
-                                    const std::vector<std::string>& only,
+                                    const std::vector<std::string>& only, bool dut_accum,
                                     const std::function<void(const TestResult&)>& report) {
   const std::vector<ManifestTest> tests = read_manifest(suite);
   for (const std::string& name : only)
@@ -221,7 +254,7 @@ std::vector<TestResult> check_suite(const std::string& suite, const std::string&
   std::vector<TestResult> results;
   for (const ManifestTest& t : tests) {
     if (!only.empty() && std::find(only.begin(), only.end(), t.name) == only.end()) continue;
-    results.push_back(check_test(suite, out, t));
+    results.push_back(check_test(suite, out, t, dut_accum));
     if (report) report(results.back());
   }
   return results;

@@ -26,6 +26,13 @@ TestVectors make_vectors(const TestSpec& t) {
   v.words = s.words;
   v.fragments = s.fragments;
   v.passes = int(trace.passes.size());
+  auto resolves = [](const std::vector<FrameOp>& ops) {
+    return std::any_of(ops.begin(), ops.end(),
+                       [](const FrameOp& op) { return op.kind == FrameOpKind::kResolveWboit; });
+  };
+  v.needs_accum = resolves(trace.final_ops) ||
+                  std::any_of(trace.passes.begin(), trace.passes.end(),
+                              [&](const TracePass& p) { return resolves(p.frame_ops); });
   GoldenRop golden;
   replay_trace(trace, golden);
   Sha256 hash;
@@ -77,6 +84,7 @@ nlohmann::json manifest_entry(const TestSpec& t, const TestVectors& v) {
                       {"passes", v.passes},
                       {"fragments", v.fragments},
                       {"words", v.words},
+                      {"needs_accum", v.needs_accum},
                       {"signature_sha256", v.signature_sha256}};
   if (t.kind == TestKind::kScene) {
     e["scene"] = t.scene;
@@ -95,7 +103,10 @@ ExportSummary write_suite(const fs::path& tmp, const std::vector<TestSpec>& test
     if (std::none_of(configs.begin(), configs.end(),
                      [&](const nlohmann::json& c) { return c["name"] == t.config.name; }))
       configs.push_back({{"name", t.config.name}, {"depth_bits", t.config.depth_bits},
-                         {"coverage_samples", t.config.coverage_samples}});
+                         {"coverage_samples", t.config.coverage_samples},
+                         {"acc_bits", t.config.wboit.acc_bits},
+                         {"rev_bits", t.config.wboit.rev_bits},
+                         {"weight_bits", t.config.wboit.weight_bits}});
     const TestVectors v = make_vectors(t);
     fs::create_directory(tmp / t.name);
     write_file(tmp, t.name + "/stream.hex", v.stream);

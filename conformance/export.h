@@ -18,7 +18,10 @@ struct TestVectors {
   std::string expect[std::size(kPlanes)];  // expect.<plane>.hex, in kPlanes order
   uint64_t words = 0, fragments = 0;
   int passes = 0;
-  std::string signature_sha256;  // of the four expect files, concatenated in kPlanes order
+  std::string signature_sha256;  // of the expect files, concatenated in kPlanes order
+  // A resolve wboit makes its colour from the accumulation plane: a DUT without one cannot run
+  // it (the manifest's needs_accum; docs/conformance.md "Skipped tests").
+  bool needs_accum = false;
 };
 
 // The test's stream, and its planes after replay_trace onto GoldenRop.

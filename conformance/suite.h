@@ -14,7 +14,9 @@ namespace zb::conformance {
 // The manifest's "suite" and "version" (conformance_spec.md, format v1).
 constexpr const char* kSuiteName = "zblend-conformance";
 // Version 2: the random and hazard streams draw the accumulate blend (mode 5) too.
-constexpr int kSuiteVersion = 2;
+// Version 3: the accumulation plane (expect.accum.hex, in every test's signature; its widths in
+// FRAME and the manifest's configs) and the wboit tests.
+constexpr int kSuiteVersion = 3;
 
 // Bad input to the kit (a malformed suite, a path it cannot use, an unknown test): one line.
 struct ConformanceError : std::runtime_error {
@@ -26,6 +28,7 @@ struct Config {
   std::string name;  // "d24-c16"
   int depth_bits = 24;
   int coverage_samples = 16;
+  WboitFormat wboit;  // the accumulation planes' widths: the defaults in every config
 };
 
 enum class TestKind { kScene, kHazard, kRandom };

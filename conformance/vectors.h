@@ -22,21 +22,25 @@ struct Stream {
   uint64_t fragments = 0;
 };
 
-// FRAME, then per pass its frame operations, PASS, its fragments and END_PASS, then the final
+// FRAME (with the accumulation planes' widths), then per pass its frame operations, PASS, its fragments and END_PASS, then the final
 // frame operations and END. Frame operations are written as the trace holds them (test_trace
 // clamps clear depths).
 Stream encode_stream(const Trace& t);
 
-// The planes, in signature order; the name in expect.<name>.hex and got.<name>.hex.
-enum class Plane { kColor, kDepth, kCoverage, kPeel };
-constexpr Plane kPlanes[] = {Plane::kColor, Plane::kDepth, Plane::kCoverage, Plane::kPeel};
+// The planes, in signature order; the name in expect.<name>.hex and got.<name>.hex. kAccum is
+// the accumulation word {r, acc_A, acc_B, acc_G, acc_R} (acc_R at bit 0; zb_rop's AccW bits).
+enum class Plane { kColor, kDepth, kCoverage, kPeel, kAccum };
+constexpr Plane kPlanes[] = {Plane::kColor, Plane::kDepth, Plane::kCoverage, Plane::kPeel,
+                             Plane::kAccum};
 const char* to_string(Plane p);
-int hex_digits(Plane p);  // 8, but 2 for coverage
+// 8, but 2 for coverage and accum_word_bits(f) / 4 rounded up for the accumulation word.
+int hex_digits(Plane p, const WboitFormat& f);
 
-// Pixel i (row-major) of a plane; a colour packed r | g << 8 | b << 16 | a << 24.
-uint32_t plane_value(const Framebuffer& fb, Plane p, size_t i);
+// Pixel i (row-major) of a plane as hex_digits lower-case digits; a colour packed
+// r | g << 8 | b << 16 | a << 24.
+std::string plane_word(const Framebuffer& fb, Plane p, size_t i);
 
-// One lower-case hex word a line, hex_digits(p) wide, width * height lines, row 0 first.
+// One word a line (plane_word), width * height lines, row 0 first.
 std::string plane_hex(const Framebuffer& fb, Plane p);
 
 }  // namespace zb::conformance

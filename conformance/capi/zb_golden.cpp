@@ -14,6 +14,8 @@
 
 struct zb_golden {
   zb::GoldenRop rop;
+  uint32_t clear_rgba = 0;
+  bool started = false;  // a pass or a frame operation has been: the widths are fixed
   bool in_pass = false;
   std::string error;  // the last call's, "" after a success
 };
@@ -96,6 +98,7 @@ int zb_golden_create(zb_golden** out, int width, int height, int depth_bits,
     return fail(ZB_EARG, fmt::format("coverage_samples {} is not 1, 2, 4, 8 or 16", coverage_samples));
   try {
     auto* g = new zb_golden;
+    g->clear_rgba = clear_rgba;
     g->rop.begin_frame(width, height, depth_bits, unpack(clear_rgba), coverage_samples);
     *out = g;
     return ZB_OK;
@@ -109,6 +112,24 @@ int zb_golden_create(zb_golden** out, int width, int height, int depth_bits,
 
 void zb_golden_destroy(zb_golden* g) { delete g; }
 
+int zb_golden_set_wboit(zb_golden* g, int acc_bits, int rev_bits, int weight_bits) {
+  return guarded(g, "zb_golden_set_wboit", [&](zb_golden& h) -> Failure {
+    if (h.started)
+      return {ZB_EORDER, "a pass or frame operation has been (set the widths right after "
+                         "zb_golden_create)"};
+    const zb::WboitFormat f{acc_bits, rev_bits, weight_bits};
+    if (!zb::valid_wboit_format(f))
+      return {ZB_EARG, fmt::format("acc_bits {}, rev_bits {}, weight_bits {}: the ranges are {} to "
+                                   "{}, {} to {} and {} to {}", acc_bits, rev_bits, weight_bits,
+                                   zb::kMinAccBits, zb::kMaxAccBits, zb::kMinRevBits,
+                                   zb::kMaxRevBits, zb::kMinWeightBits, zb::kMaxWeightBits)};
+    const zb::Framebuffer& fb = h.rop.framebuffer();
+    h.rop.begin_frame(fb.width, fb.height, fb.depth_bits, unpack(h.clear_rgba),
+                      fb.coverage_samples, f);
+    return kOk;
+  });
+}
+
 int zb_golden_begin_pass(zb_golden* g, uint32_t state) {
   return guarded(g, "zb_golden_begin_pass", [&](zb_golden& h) -> Failure {
     if (h.in_pass)
@@ -120,6 +141,7 @@ int zb_golden_begin_pass(zb_golden* g, uint32_t state) {
                                    "state\")", state)};
     h.rop.begin_pass(s);
     h.in_pass = true;
+    h.started = true;
     return kOk;
   });
 }
@@ -148,7 +170,7 @@ int zb_golden_push(zb_golden* g, int x, int y, uint32_t z, uint32_t rgba, int co
     f.coverage = uint8_t(coverage);
     const zb::PixelWrites w = h.rop.process(f);
     put<uint32_t>(wrote, (w.depth ? ZB_WROTE_DEPTH : 0) | (w.coverage ? ZB_WROTE_COVERAGE : 0) |
-                             (w.color ? ZB_WROTE_COLOR : 0));
+                             (w.color ? ZB_WROTE_COLOR : 0) | (w.accum ? ZB_WROTE_ACCUM : 0));
     put<uint32_t>(depth, w.depth ? w.z : 0);
     put<uint32_t>(coverage_out, w.coverage ? w.cov : 0);
     put<uint32_t>(rgba_out, w.color ? pack(w.rgba) : 0);
@@ -178,15 +200,16 @@ int zb_golden_frame_op(zb_golden* g, int kind, uint32_t value_rgba, uint32_t dep
     if (h.in_pass)
       return {ZB_EORDER, "a pass is open: frame operations come between passes (end it with "
                          "zb_golden_end_pass first)"};
-    // The resolve of the accumulate blend (kind 4) reads planes the kit does not carry.
-    if (kind < 0 || kind > int(zb::FrameOpKind::kResolveUnder))
-      return {ZB_EARG, fmt::format("kind {} is not a frame operation of the kit (0 clear colour, "
-                                   "1 clear depth, 2 copy depth to peel, 3 resolve under)", kind)};
+    if (kind < 0 || kind > int(zb::FrameOpKind::kResolveWboit))
+      return {ZB_EARG, fmt::format("kind {} is not a frame operation (0 clear colour, 1 clear "
+                                   "depth, 2 copy depth to peel, 3 resolve under, 4 resolve "
+                                   "wboit)", kind)};
     zb::FrameOp op;
     op.kind = zb::FrameOpKind(kind);
     op.value = unpack(value_rgba);
     op.depth = depth;  // apply_frame_op clamps it to ZMAX
     h.rop.frame_op(op);
+    h.started = true;
     return kOk;
   });
 }
@@ -202,9 +225,13 @@ int zb_golden_read(zb_golden* g, int plane, int x, int y, uint32_t* value) {
       case ZB_PLANE_DEPTH: *value = fb.depth[i]; return kOk;
       case ZB_PLANE_COVERAGE: *value = fb.coverage[i]; return kOk;
       case ZB_PLANE_PEEL: *value = fb.peel[i]; return kOk;
+      case ZB_PLANE_ACC_R: case ZB_PLANE_ACC_G: case ZB_PLANE_ACC_B: case ZB_PLANE_ACC_A:
+        *value = fb.accum[i][size_t(plane - ZB_PLANE_ACC_R)];
+        return kOk;
+      case ZB_PLANE_REVEAL: *value = fb.reveal[i]; return kOk;
     }
-    return {ZB_EARG, fmt::format("plane {} is not a plane (0 colour, 1 depth, 2 coverage, 3 peel)",
-                                 plane)};
+    return {ZB_EARG, fmt::format("plane {} is not a plane (0 colour, 1 depth, 2 coverage, 3 peel, "
+                                 "4 to 7 accumulation R, G, B, A, 8 revealage)", plane)};
   });
 }
 

@@ -31,36 +31,51 @@ enum {
   ZB_EINTERNAL = 5  /* a fault of the model itself (please report it) */
 };
 
-/* The planes of a frame (zb_golden_read), in the order of the conformance signatures. */
-enum { ZB_PLANE_COLOR = 0, ZB_PLANE_DEPTH = 1, ZB_PLANE_COVERAGE = 2, ZB_PLANE_PEEL = 3 };
+/* The planes of a frame (zb_golden_read), in the order of the conformance signatures. The
+ * accumulation word {r, acc_A, acc_B, acc_G, acc_R} (the signatures' accum plane) is read in its
+ * parts, each at most 32 bits: the four accumulation channels and the revealage. */
+enum {
+  ZB_PLANE_COLOR = 0, ZB_PLANE_DEPTH = 1, ZB_PLANE_COVERAGE = 2, ZB_PLANE_PEEL = 3,
+  ZB_PLANE_ACC_R = 4, ZB_PLANE_ACC_G = 5, ZB_PLANE_ACC_B = 6, ZB_PLANE_ACC_A = 7,
+  ZB_PLANE_REVEAL = 8
+};
 
-/* Bits of zb_golden_push's `wrote`: which planes the fragment wrote. */
-enum { ZB_WROTE_DEPTH = 1, ZB_WROTE_COVERAGE = 2, ZB_WROTE_COLOR = 4 };
+/* Bits of zb_golden_push's `wrote`: which planes the fragment wrote. ZB_WROTE_ACCUM: the
+ * accumulation word (accumulate mode); its new value is the pixel's ZB_PLANE_ACC_* and
+ * ZB_PLANE_REVEAL, read right after the push. */
+enum { ZB_WROTE_DEPTH = 1, ZB_WROTE_COVERAGE = 2, ZB_WROTE_COLOR = 4, ZB_WROTE_ACCUM = 8 };
 
 /* Frame operations (docs/datapath.md "Frame operations"), done between passes. */
 enum {
   ZB_OP_CLEAR_COLOR = 0,        /* every colour := value */
   ZB_OP_CLEAR_DEPTH = 1,        /* every depth := min(depth, ZMAX) */
   ZB_OP_COPY_DEPTH_TO_PEEL = 2, /* peel := depth */
-  ZB_OP_RESOLVE_UNDER = 3       /* colour := min(255, c + m(value_c, 255 - A)) per channel */
+  ZB_OP_RESOLVE_UNDER = 3,      /* colour := min(255, c + m(value_c, 255 - A)) per channel */
+  ZB_OP_RESOLVE_WBOIT = 4       /* colour := from the accumulation word (datapath.md "Resolve") */
 };
 
 /* Colours are packed RGBA8 words: r | g << 8 | b << 16 | a << 24 (frag_rgba_i's lane order). */
 
 /* A frame of width x height pixels (1 to 8192 each), depth_bits (8 to 32) wide depths and
  * coverage_samples (1, 2, 4, 8 or 16) samples per pixel, cleared as a frame starts: colour
- * clear_rgba, depth ZMAX = 2^depth_bits - 1, coverage 0, peel 0. On success *out is the handle;
- * on failure *out is NULL and zb_golden_last_error(NULL) says why. */
+ * clear_rgba, depth ZMAX = 2^depth_bits - 1, coverage 0, peel 0, accumulation 0 and revealage
+ * 1.0 at the default widths (16, 8, 4; zb_golden_set_wboit). On success *out is the handle; on
+ * failure *out is NULL and zb_golden_last_error(NULL) says why. */
 int zb_golden_create(zb_golden** out, int width, int height, int depth_bits,
                      int coverage_samples, uint32_t clear_rgba);
+
+/* The accumulation planes' widths (docs/datapath.md "Parameters": acc_bits 8 to 32, rev_bits 8
+ * to 16, weight_bits 0 to 16), the frame cleared again. Only before the first pass or frame
+ * operation. */
+int zb_golden_set_wboit(zb_golden* g, int acc_bits, int rev_bits, int weight_bits);
 
 /* Frees the handle; NULL is allowed and does nothing. */
 void zb_golden_destroy(zb_golden* g);
 
 /* Starts a pass with the pass state register (docs/datapath.md "The pass state"): [0]
  * depth_test, [3:1] depth_func, [4] depth_write, [7:5] blend (0 to 5), [11:8] color_mask, [12]
- * peel_test; every other bit zero. Blend 5 (accumulate) writes only the accumulation planes,
- * which no ZB_PLANE_* reads. Fails inside a pass. */
+ * peel_test; every other bit zero. Blend 5 (accumulate) writes only the accumulation word.
+ * Fails inside a pass. */
 int zb_golden_begin_pass(zb_golden* g, uint32_t state);
 
 /* One fragment through the datapath, in stream order: pixel (x, y), depth z (at most ZMAX),
@@ -83,7 +98,8 @@ int zb_golden_end_pass(zb_golden* g, uint64_t* fragments_in, uint64_t* fragments
 int zb_golden_frame_op(zb_golden* g, int kind, uint32_t value_rgba, uint32_t depth);
 
 /* The value of pixel (x, y) of a plane (ZB_PLANE_*): a packed colour, a depth, a coverage
- * count or a peel depth. Allowed inside a pass (the planes hold every write so far). */
+ * count, a peel depth, an accumulation channel or the revealage. Allowed inside a pass (the
+ * planes hold every write so far). */
 int zb_golden_read(zb_golden* g, int plane, int x, int y, uint32_t* value);
 
 /* The error of the last call on `g`: one line, "" when it succeeded. With NULL: the last error

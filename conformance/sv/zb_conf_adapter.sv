@@ -2,13 +2,18 @@
 // "The adapter"). The testbench speaks pixels: a tile is loaded and stored one pixel a clock in
 // raster order, fragments stream with valid/ready. This adapter gathers the pixels into zb_rop's
 // tile-port beats and spreads the stored beats back into pixels. A team's own ROP gets an
-// adapter of its own with the same ports; this one is the worked example.
+// adapter of its own with the same ports; this one is the worked example. Defined
+// ZB_CONF_NO_ACCUM, it stands for a DUT without the accumulation plane: planes_o says so and
+// the testbench skips the tests that need the plane.
 module zb_conf_adapter #(
   parameter int DEPTH_BITS  = 24,
   parameter int COV_SAMPLES = 16,
   parameter int TILE_W      = 64,
   parameter int TILE_H      = 64,
-  parameter int BEAT        = 8
+  parameter int BEAT        = 8,
+  parameter int ACC_BITS    = 16,  // the accumulation word: 4 channels of ACC_BITS, then
+  parameter int REV_BITS    = 8,   // the revealage (docs/datapath.md "7. Accumulate blend")
+  parameter int WEIGHT_BITS = 4
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -26,6 +31,7 @@ module zb_conf_adapter #(
   input  logic [31:0] ld_depth_i,
   input  logic [7:0]  ld_cov_i,
   input  logic [31:0] ld_peel_i,
+  input  logic [4*ACC_BITS+REV_BITS-1:0] ld_acc_i,  // {r, acc_A, acc_B, acc_G, acc_R}
   // Fragments (docs/datapath.md "The fragment"), frame coordinates, inside the tile.
   input  logic        frag_valid_i,
   output logic        frag_ready_o,
@@ -44,6 +50,10 @@ module zb_conf_adapter #(
   output logic [31:0] st_depth_o,
   output logic [7:0]  st_cov_o,
   output logic [31:0] st_peel_o,
+  output logic [4*ACC_BITS+REV_BITS-1:0] st_acc_o,
+  // The planes the DUT carries (zb_pkg::planes_t order: colour, depth, coverage, peel,
+  // accumulation); constant. Without bit 4, st_acc_o and the ret_a* outputs are unused.
+  output logic [4:0]  planes_o,
   // Retire port for a lock-step scoreboard (optional for other DUTs: tie the valids low). Per
   // accepted fragment, in order per pixel: one depth-side retire (depth and coverage writes)
   // and one colour-side retire, each naming the tile pixel and what it wrote.
@@ -56,7 +66,9 @@ module zb_conf_adapter #(
   output logic        ret_c_valid_o,
   output logic [31:0] ret_c_pixel_o,
   output logic        ret_cwe_o,
-  output logic [31:0] ret_wcolor_o
+  output logic [31:0] ret_wcolor_o,
+  output logic        ret_awe_o,    // beside the colour side's retire: the accumulation word
+  output logic [4*ACC_BITS+REV_BITS-1:0] ret_wacc_o
 );
 
   localparam int Words  = TILE_W * TILE_H;
@@ -66,6 +78,12 @@ module zb_conf_adapter #(
   localparam int LaneW  = $clog2(BEAT);
   localparam int CovW   = $clog2(COV_SAMPLES + 1);
   localparam int D      = DEPTH_BITS;
+  localparam int AccW   = 4 * ACC_BITS + REV_BITS;
+`ifdef ZB_CONF_NO_ACCUM
+  localparam logic [4:0] Planes = 5'b01111;
+`else
+  localparam logic [4:0] Planes = 5'b11111;
+`endif
 
   // The tile port as zb_rop takes it.
   logic                tile_req, tile_we;
@@ -73,6 +91,7 @@ module zb_conf_adapter #(
   logic [BEAT*32-1:0]  wcolor_q, rcolor;
   logic [BEAT*D-1:0]   wdepth_q, wpeel_q, rdepth, rpeel;
   logic [BEAT*CovW-1:0] wcov_q, rcov;
+  logic [BEAT*AccW-1:0] wacc_q, racc;
   logic                busy;
 
   // ---------------------------------------------------------------------------------------
@@ -106,6 +125,7 @@ module zb_conf_adapter #(
       wdepth_q[ld_lane*D +: D]       <= ld_depth_i[D-1:0];
       wcov_q[ld_lane*CovW +: CovW]   <= ld_cov_i[CovW-1:0];
       wpeel_q[ld_lane*D +: D]        <= ld_peel_i[D-1:0];
+      wacc_q[ld_lane*AccW +: AccW]   <= ld_acc_i;
     end
   end
 
@@ -119,6 +139,7 @@ module zb_conf_adapter #(
   logic [BEAT*32-1:0]   cap_color_q;
   logic [BEAT*D-1:0]    cap_depth_q, cap_peel_q;
   logic [BEAT*CovW-1:0] cap_cov_q;
+  logic [BEAT*AccW-1:0] cap_acc_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -154,6 +175,7 @@ module zb_conf_adapter #(
       cap_depth_q <= rdepth;
       cap_cov_q   <= rcov;
       cap_peel_q  <= rpeel;
+      cap_acc_q   <= racc;
     end
   end
 
@@ -162,6 +184,8 @@ module zb_conf_adapter #(
   assign st_depth_o = 32'(cap_depth_q[st_lane_q*D +: D]);
   assign st_cov_o   = 8'(cap_cov_q[st_lane_q*CovW +: CovW]);
   assign st_peel_o  = 32'(cap_peel_q[st_lane_q*D +: D]);
+  assign st_acc_o   = cap_acc_q[st_lane_q*AccW +: AccW];
+  assign planes_o   = Planes;
 
   assign tile_req  = ld_go_q || st_q == StRead;
   assign tile_we   = ld_go_q;
@@ -183,7 +207,10 @@ module zb_conf_adapter #(
     .TILE_W     (TILE_W),
     .TILE_H     (TILE_H),
     .COV_SAMPLES(COV_SAMPLES),
-    .BEAT       (BEAT)
+    .BEAT       (BEAT),
+    .ACC_BITS   (ACC_BITS),
+    .REV_BITS   (REV_BITS),
+    .WEIGHT_BITS(WEIGHT_BITS)
   ) u_rop (
     .clk_i,
     .rst_ni,
@@ -202,18 +229,18 @@ module zb_conf_adapter #(
     .tile_req_i        (tile_req),
     .tile_we_i         (tile_we),
     .tile_clear_i      (1'b0),
-    .tile_planes_i     (5'b01111),  // no accumulation plane: the kit has no accumulate tests
+    .tile_planes_i     (Planes),
     .tile_addr_i       (tile_addr),
     .tile_wcolor_i     (wcolor_q),
     .tile_wdepth_i     (wdepth_q),
     .tile_wcov_i       (wcov_q),
     .tile_wpeel_i      (wpeel_q),
-    .tile_wacc_i       ('0),
+    .tile_wacc_i       (wacc_q),
     .tile_rcolor_o     (rcolor),
     .tile_rdepth_o     (rdepth),
     .tile_rcov_o       (rcov),
     .tile_rpeel_o      (rpeel),
-    .tile_racc_o       (),
+    .tile_racc_o       (racc),
     .busy_o            (busy),
     .cnt_clear_i       (1'b0),
     .cnt_frag_in_o     (),
@@ -237,8 +264,8 @@ module zb_conf_adapter #(
     .mon_x11_addr_o    (mon_x11_addr),
     .mon_cwe_o         (ret_cwe_o),
     .mon_wcolor_o      (ret_wcolor_o),
-    .mon_awe_o         (),
-    .mon_wacc_o        ()
+    .mon_awe_o         (ret_awe_o),
+    .mon_wacc_o        (ret_wacc_o)
   );
 
   assign ret_d_pixel_o = 32'(mon_x4_addr);

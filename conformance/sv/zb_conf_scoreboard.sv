@@ -4,15 +4,19 @@
 // DUT reports is then held to the writes of the next fragment waiting at its pixel and stage;
 // the first difference stops the run with the fragment, the cycle, the pixel and both values.
 // A retire with no fragment waiting is extra; a fragment not retired when the tile drains is
-// missing.
+// missing. The colour side's retire carries the accumulation word too (accumulate mode),
+// compared when the DUT has the plane (accum_i).
 module zb_conf_scoreboard
   import zb_golden_pkg::*;
 #(
   parameter int TILE_W    = 64,
   parameter int TILE_H    = 64,
+  parameter int ACC_BITS  = 16,
+  parameter int REV_BITS  = 8,
   parameter int MAX_FRAGS = 1 << 18  // fragments of one pass in one tile
 ) (
   input logic        clk_i,
+  input logic        accum_i,  // the DUT has the accumulation plane: its writes are compared
   input logic        ret_d_valid_i,
   input logic [31:0] ret_d_pixel_i,
   input logic        ret_dwe_i,
@@ -22,7 +26,9 @@ module zb_conf_scoreboard
   input logic        ret_c_valid_i,
   input logic [31:0] ret_c_pixel_i,
   input logic        ret_cwe_i,
-  input logic [31:0] ret_wcolor_i
+  input logic [31:0] ret_wcolor_i,
+  input logic        ret_awe_i,
+  input logic [4*ACC_BITS+REV_BITS-1:0] ret_wacc_i
 );
 
   localparam int Words = TILE_W * TILE_H;
@@ -38,6 +44,7 @@ module zb_conf_scoreboard
   int unsigned exp_depth  [MAX_FRAGS];
   int unsigned exp_cov    [MAX_FRAGS];
   int unsigned exp_rgba   [MAX_FRAGS];
+  int unsigned exp_acc    [MAX_FRAGS][5];  // acc R, G, B, A, revealage
   int unsigned next_frag  [MAX_FRAGS];
   // Per tile pixel: the next fragment to retire at X4 (depth side) and at X11 (colour side).
   int unsigned head_d [Words];
@@ -61,8 +68,9 @@ module zb_conf_scoreboard
 
   function automatic void begin_frame(input int unsigned width, input int unsigned height,
                                       input int unsigned depth_bits, input int unsigned samples,
-                                      input int unsigned clear_rgba);
+                                      input int unsigned clear_rgba, input int weight_bits);
     check(zb_golden_create(golden, width, height, depth_bits, samples, clear_rgba), "create");
+    check(zb_golden_set_wboit(golden, ACC_BITS, REV_BITS, weight_bits), "set_wboit");
     pass_no = 0;
     checked = 0;
   endfunction
@@ -110,6 +118,13 @@ module zb_conf_scoreboard
     exp_depth[n]  = wz;
     exp_cov[n]    = wc;
     exp_rgba[n]   = wrgba;
+    // The word this fragment wrote is the pixel's now: the golden model is in order.
+    for (int k = 0; k < 5; k++) begin
+      exp_acc[n][k] = 0;
+      if ((wrote & ZB_WROTE_ACCUM) != 0)
+        check(zb_golden_read(golden, ZB_PLANE_ACC_R + k, int'(x), int'(y), exp_acc[n][k]),
+              "read of the accumulation word");
+    end
     next_frag[n]  = None;
     // Each side's head is None once it has retired every fragment offered so far: the new one
     // is then its head at once, and otherwise reached through the list.
@@ -128,6 +143,19 @@ module zb_conf_scoreboard
 
   function automatic string color_side(input bit cwe, input int unsigned rgba);
     return $sformatf("colour write %0d (rgba 0x%08x)", cwe, cwe ? rgba : 0);
+  endfunction
+
+  // The retire's accumulation word in the golden model's parts.
+  function automatic int unsigned ret_acc(input int k);
+    return k < 4 ? 32'(ret_wacc_i[k*ACC_BITS +: ACC_BITS]) : 32'(ret_wacc_i[4*ACC_BITS +: REV_BITS]);
+  endfunction
+
+  function automatic string accum_side(input bit awe, input int unsigned r, input int unsigned g,
+                                       input int unsigned b, input int unsigned a,
+                                       input int unsigned rev);
+    return awe ? $sformatf("accumulation write 1 (acc 0x%0x 0x%0x 0x%0x 0x%0x, revealage 0x%0x)",
+                           r, g, b, a, rev)
+               : "accumulation write 0";
   endfunction
 
   // A depth-side retire (X4): its depth and coverage writes against the golden model's.
@@ -152,7 +180,7 @@ module zb_conf_scoreboard
   // A colour-side retire (X11): its colour write against the golden model's.
   function automatic void retire_c();
     int unsigned p, k;
-    bit ew;
+    bit ew, ea, same;
     p = ret_c_pixel_i % Words;
     k = ret_c_valid_i ? head_c[p] : None;
     if (k == None)
@@ -161,6 +189,12 @@ module zb_conf_scoreboard
     ew = (exp_wrote[k] & ZB_WROTE_COLOR) != 0;
     if (ret_cwe_i != ew || (ew && ret_wcolor_i != exp_rgba[k]))
       mismatch("X11", p, k, color_side(ret_cwe_i, ret_wcolor_i), color_side(ew, exp_rgba[k]));
+    ea = (exp_wrote[k] & ZB_WROTE_ACCUM) != 0;
+    same = 1'b1;
+    for (int f = 0; f < 5; f++) same &= !ea || ret_acc(f) == exp_acc[k][f];
+    if (accum_i && (ret_awe_i != ea || !same))
+      mismatch("X11", p, k, accum_side(ret_awe_i, ret_acc(0), ret_acc(1), ret_acc(2), ret_acc(3), ret_acc(4)),
+               accum_side(ea, exp_acc[k][0], exp_acc[k][1], exp_acc[k][2], exp_acc[k][3], exp_acc[k][4]));
     head_c[p] = next_frag[k];
     checked++;
   endfunction
@@ -168,7 +202,7 @@ module zb_conf_scoreboard
   // The planes take the retire port's writes at this edge: read it before the edge's updates.
   always @(posedge clk_i) begin
     if (golden != null && (ret_d_valid_i || ret_dwe_i || ret_vwe_i)) retire_d();
-    if (golden != null && (ret_c_valid_i || ret_cwe_i)) retire_c();
+    if (golden != null && (ret_c_valid_i || ret_cwe_i || (accum_i && ret_awe_i))) retire_c();
   end
 
   // The tile has drained: every fragment offered has retired on both sides.

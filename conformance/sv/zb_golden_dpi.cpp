@@ -30,6 +30,10 @@ int zb_dpi_create(void** handle, int width, int height, int depth_bits, int cove
 
 void zb_dpi_destroy(void* handle) { zb_golden_destroy(golden(handle)); }
 
+int zb_dpi_set_wboit(void* handle, int acc_bits, int rev_bits, int weight_bits) {
+  return zb_golden_set_wboit(golden(handle), acc_bits, rev_bits, weight_bits);
+}
+
 int zb_dpi_begin_pass(void* handle, unsigned int state) {
   return zb_golden_begin_pass(golden(handle), state);
 }

@@ -18,28 +18,39 @@ package zb_golden_pkg;
   localparam int ZB_PLANE_DEPTH    = 1;
   localparam int ZB_PLANE_COVERAGE = 2;
   localparam int ZB_PLANE_PEEL     = 3;
+  localparam int ZB_PLANE_ACC_R    = 4;  // the accumulation word's parts
+  localparam int ZB_PLANE_ACC_G    = 5;
+  localparam int ZB_PLANE_ACC_B    = 6;
+  localparam int ZB_PLANE_ACC_A    = 7;
+  localparam int ZB_PLANE_REVEAL   = 8;
 
   // Bits of zb_golden_push's `wrote`.
   localparam int unsigned ZB_WROTE_DEPTH    = 32'd1;
   localparam int unsigned ZB_WROTE_COVERAGE = 32'd2;
   localparam int unsigned ZB_WROTE_COLOR    = 32'd4;
+  localparam int unsigned ZB_WROTE_ACCUM    = 32'd8;  // the word: read its planes after the push
 
   // Frame operations (docs/datapath.md "Frame operations"), between passes.
   localparam int ZB_OP_CLEAR_COLOR        = 0;
   localparam int ZB_OP_CLEAR_DEPTH        = 1;
   localparam int ZB_OP_COPY_DEPTH_TO_PEEL = 2;
   localparam int ZB_OP_RESOLVE_UNDER      = 3;
+  localparam int ZB_OP_RESOLVE_WBOIT      = 4;
 
   // Colours are packed RGBA8: r | g << 8 | b << 16 | a << 24 (frag_rgba_i's lane order).
 
   // A frame: width x height (1 to 8192), depth_bits (8 to 32), coverage_samples (1, 2, 4, 8,
-  // 16), cleared to clear_rgba, the far depth, coverage 0 and peel 0. On failure handle is null
-  // and zb_golden_last_error(null) says why.
+  // 16), cleared to clear_rgba, the far depth, coverage 0, peel 0, accumulation 0 and
+  // revealage 1.0. On failure handle is null and zb_golden_last_error(null) says why.
   import "DPI-C" zb_dpi_create = function int zb_golden_create(
       output chandle handle, input int width, input int height, input int depth_bits,
       input int coverage_samples, input int unsigned clear_rgba);
 
   import "DPI-C" zb_dpi_destroy = function void zb_golden_destroy(input chandle handle);
+
+  // The accumulation planes' widths (default 16, 8, 4), before the first pass or frame operation.
+  import "DPI-C" zb_dpi_set_wboit = function int zb_golden_set_wboit(
+      input chandle handle, input int acc_bits, input int rev_bits, input int weight_bits);
 
   // The 13-bit pass state register (docs/datapath.md "The pass state"; zb_pass_state below).
   import "DPI-C" zb_dpi_begin_pass = function int zb_golden_begin_pass(
@@ -73,7 +84,7 @@ package zb_golden_pkg;
   import "DPI-C" zb_dpi_last_error = function string zb_golden_last_error(input chandle handle);
 
   // The pass state register from its fields: depth_func and blend as docs/datapath.md codes
-  // them (less = 1, ...; replace 0, alpha 1, additive 2, coverage 3, under 4).
+  // them (less = 1, ...; replace 0, alpha 1, additive 2, coverage 3, under 4, accumulate 5).
   function automatic int unsigned zb_pass_state(input bit depth_test, input bit [2:0] depth_func,
                                                 input bit depth_write, input bit [2:0] blend,
                                                 input bit [3:0] color_mask, input bit peel_test);

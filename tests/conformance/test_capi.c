@@ -79,6 +79,7 @@ static void test_errors(void) {
   EXPECT_ERROR(zb_golden_frame_op(NULL, ZB_OP_CLEAR_COLOR, 0, 0), ZB_EHANDLE, NULL,
                "zb_golden_frame_op");
   EXPECT_ERROR(zb_golden_read(NULL, ZB_PLANE_COLOR, 0, 0, &v), ZB_EHANDLE, NULL, "zb_golden_read");
+  EXPECT_ERROR(zb_golden_set_wboit(NULL, 16, 8, 4), ZB_EHANDLE, NULL, "zb_golden_set_wboit");
   zb_golden_destroy(NULL);
 
   /* An 8x4 frame, 16-bit depth, 4 samples. */
@@ -86,6 +87,15 @@ static void test_errors(void) {
         zb_golden_last_error(NULL));
   if (g == NULL) return;
   CHECK(strcmp(zb_golden_last_error(NULL), "") == 0, "a good create clears the thread's error");
+
+  /* The accumulation widths: out of range; then good, before the first pass. */
+  EXPECT_ERROR(zb_golden_set_wboit(g, 7, 8, 4), ZB_EARG, g, "zb_golden_set_wboit");
+  EXPECT_ERROR(zb_golden_set_wboit(g, 16, 17, 4), ZB_EARG, g, "zb_golden_set_wboit");
+  EXPECT_ERROR(zb_golden_set_wboit(g, 16, 8, -1), ZB_EARG, g, "zb_golden_set_wboit");
+  CHECK(zb_golden_set_wboit(g, 12, 10, 4) == ZB_OK, "set_wboit: %s", zb_golden_last_error(g));
+  CHECK(read_plane(g, ZB_PLANE_REVEAL, 7, 3) == 1023u && read_plane(g, ZB_PLANE_ACC_A, 7, 3) == 0,
+        "a 10-bit revealage clears to 1023, the accumulation to 0");
+  CHECK(read_plane(g, ZB_PLANE_COLOR, 7, 3) == 0x11223344u, "set_wboit keeps the clear colour");
 
   /* Calls out of order. */
   EXPECT_ERROR(zb_golden_push(g, 0, 0, 0, 0, 0, &wrote, NULL, NULL, NULL), ZB_EORDER, g, "zb_golden_push");
@@ -110,6 +120,7 @@ static void test_errors(void) {
   EXPECT_ERROR(zb_golden_push(g, 0, 0, 0, 0, 5, &wrote, NULL, NULL, NULL), ZB_EARG, g, "zb_golden_push");
   CHECK(wrote == 0, "a failed push reports no writes");
   EXPECT_ERROR(zb_golden_frame_op(g, ZB_OP_CLEAR_COLOR, 0, 0), ZB_EORDER, g, "zb_golden_frame_op");
+  EXPECT_ERROR(zb_golden_set_wboit(g, 16, 8, 4), ZB_EORDER, g, "zb_golden_set_wboit");
 
   /* The failures changed nothing; a good push with every output NULL is counted. */
   CHECK(read_plane(g, ZB_PLANE_COLOR, 0, 0) == 0x11223344u, "colour after failed calls");
@@ -123,9 +134,9 @@ static void test_errors(void) {
 
   /* Frame operations and reads. */
   EXPECT_ERROR(zb_golden_frame_op(g, -1, 0, 0), ZB_EARG, g, "zb_golden_frame_op");
-  EXPECT_ERROR(zb_golden_frame_op(g, 4, 0, 0), ZB_EARG, g, "zb_golden_frame_op");
+  EXPECT_ERROR(zb_golden_frame_op(g, 5, 0, 0), ZB_EARG, g, "zb_golden_frame_op");
   EXPECT_ERROR(zb_golden_read(g, -1, 0, 0, &v), ZB_EARG, g, "zb_golden_read");
-  EXPECT_ERROR(zb_golden_read(g, 4, 0, 0, &v), ZB_EARG, g, "zb_golden_read");
+  EXPECT_ERROR(zb_golden_read(g, 9, 0, 0, &v), ZB_EARG, g, "zb_golden_read");
   EXPECT_ERROR(zb_golden_read(g, ZB_PLANE_PEEL, 8, 0, &v), ZB_EARG, g, "zb_golden_read");
   EXPECT_ERROR(zb_golden_read(g, ZB_PLANE_PEEL, 0, 4, &v), ZB_EARG, g, "zb_golden_read");
   EXPECT_ERROR(zb_golden_read(g, ZB_PLANE_COLOR, 0, 0, NULL), ZB_EARG, g, "zb_golden_read");
@@ -133,6 +144,40 @@ static void test_errors(void) {
         zb_golden_last_error(g));
   CHECK(read_plane(g, ZB_PLANE_DEPTH, 7, 3) == 0xffffu, "a depth clear is clamped to ZMAX");
   CHECK(strcmp(zb_golden_last_error(g), "") == 0, "the error is cleared by a good call");
+  zb_golden_destroy(g);
+}
+
+/* An accumulate pass, 16-bit depth, widths 16, 8, 4, worked by hand from datapath.md "7.
+ * Accumulate blend": z = 0 gives u = 255 and F = 255^3 >> 20 = 15; rgba (200, 100, 0, 255):
+ * w = 255 * 15 = 3825, terms p * w >> 8 (S = 4 + 20 - 16): R 2988, G 1494, B 0, A 3810;
+ * revealage 255 * (1 - 1) = 0. The resolve: avg_R = (2988 * 255 + 1905) / 3810 = 200,
+ * avg_G = 100, avg_B = 0, avg_A = 255, and with r = 0 the colour is the average. */
+static void test_accumulate(void) {
+  zb_golden* g = NULL;
+  uint32_t wrote = 0;
+  const uint32_t state = 5u << 5 | 15u << 8; /* no depth test, accumulate, every channel */
+  CHECK(zb_golden_create(&g, 4, 2, 16, 16, 0xff808080u) == ZB_OK, "create: %s",
+        zb_golden_last_error(NULL));
+  if (g == NULL) return;
+  CHECK(zb_golden_set_wboit(g, 16, 8, 4) == ZB_OK && zb_golden_begin_pass(g, state) == ZB_OK,
+        "begin: %s", zb_golden_last_error(g));
+  CHECK(zb_golden_push(g, 1, 1, 0, 0xff0064c8u, 16, &wrote, NULL, NULL, NULL) == ZB_OK,
+        "push: %s", zb_golden_last_error(g));
+  CHECK(wrote == ZB_WROTE_ACCUM, "an accumulate fragment writes the word only (wrote %u)", wrote);
+  CHECK(read_plane(g, ZB_PLANE_ACC_R, 1, 1) == 2988u && read_plane(g, ZB_PLANE_ACC_G, 1, 1) == 1494u &&
+            read_plane(g, ZB_PLANE_ACC_B, 1, 1) == 0 && read_plane(g, ZB_PLANE_ACC_A, 1, 1) == 3810u &&
+            read_plane(g, ZB_PLANE_REVEAL, 1, 1) == 0,
+        "accumulation (%u, %u, %u, %u) revealage %u, want (2988, 1494, 0, 3810) 0",
+        read_plane(g, ZB_PLANE_ACC_R, 1, 1), read_plane(g, ZB_PLANE_ACC_G, 1, 1),
+        read_plane(g, ZB_PLANE_ACC_B, 1, 1), read_plane(g, ZB_PLANE_ACC_A, 1, 1),
+        read_plane(g, ZB_PLANE_REVEAL, 1, 1));
+  EXPECT_ERROR(zb_golden_frame_op(g, ZB_OP_RESOLVE_WBOIT, 0, 0), ZB_EORDER, g, "zb_golden_frame_op");
+  CHECK(zb_golden_end_pass(g, NULL, NULL, NULL, NULL, NULL, NULL) == ZB_OK &&
+            zb_golden_frame_op(g, ZB_OP_RESOLVE_WBOIT, 0, 0) == ZB_OK,
+        "resolve: %s", zb_golden_last_error(g));
+  CHECK(read_plane(g, ZB_PLANE_COLOR, 1, 1) == 0xff0064c8u, "resolved %08x, want ff0064c8",
+        read_plane(g, ZB_PLANE_COLOR, 1, 1));
+  CHECK(read_plane(g, ZB_PLANE_COLOR, 0, 0) == 0xff808080u, "an untouched pixel keeps its colour");
   zb_golden_destroy(g);
 }
 
@@ -156,20 +201,23 @@ static int read_word(FILE* f, word128* out) {
   return 1;
 }
 
-static const char* const kPlaneNames[4] = {"color", "depth", "coverage", "peel"};
+static const char* const kPlaneNames[5] = {"color", "depth", "coverage", "peel", "accum"};
+#define N_READ_PLANES 9 /* ZB_PLANE_COLOR .. ZB_PLANE_REVEAL */
 
 /* One push, held to the planes: a plane it reports written holds the value it reports, the
- * others (and the peel plane always) are unchanged. */
+ * others (and the peel plane always) are unchanged; the accumulation word changes only when
+ * reported written. */
 static void push_checked(zb_golden* g, const char* test, uint64_t n, int x, int y, uint32_t z,
                          uint32_t rgba, int coverage) {
-  uint32_t before[4], after[4], wrote = 0, wd = 0, wc = 0, wrgba = 0;
-  int p;
-  for (p = 0; p < 4; ++p) before[p] = read_plane(g, p, x, y);
+  uint32_t before[N_READ_PLANES], after[N_READ_PLANES], wrote = 0, wd = 0, wc = 0, wrgba = 0;
+  int p, accum_same = 1;
+  for (p = 0; p < N_READ_PLANES; ++p) before[p] = read_plane(g, p, x, y);
   if (zb_golden_push(g, x, y, z, rgba, coverage, &wrote, &wd, &wc, &wrgba) != ZB_OK) {
     CHECK(0, "%s: word %" PRIu64 ": push: %s", test, n, zb_golden_last_error(g));
     return;
   }
-  for (p = 0; p < 4; ++p) after[p] = read_plane(g, p, x, y);
+  for (p = 0; p < N_READ_PLANES; ++p) after[p] = read_plane(g, p, x, y);
+  for (p = ZB_PLANE_ACC_R; p < N_READ_PLANES; ++p) accum_same &= after[p] == before[p];
   CHECK((wrote & ZB_WROTE_COLOR) ? after[0] == wrgba : (after[0] == before[0] && wrgba == 0),
         "%s: word %" PRIu64 ": colour of (%d, %d): reported %08x (wrote %u), plane %08x", test, n,
         x, y, wrgba, wrote, after[0]);
@@ -180,6 +228,22 @@ static void push_checked(zb_golden* g, const char* test, uint64_t n, int x, int 
         "%s: word %" PRIu64 ": coverage of (%d, %d): reported %u (wrote %u), plane %u", test, n,
         x, y, wc, wrote, after[2]);
   CHECK(after[3] == before[3], "%s: word %" PRIu64 ": a push changed the peel plane", test, n);
+  CHECK((wrote & ZB_WROTE_ACCUM) || accum_same,
+        "%s: word %" PRIu64 ": the accumulation word of (%d, %d) changed, not reported", test, n, x, y);
+}
+
+/* Bits [lo, lo + width) of a hex word (width <= 32), the lowest digit last. */
+static uint32_t hex_field(const char* hex, int lo, int width) {
+  const int digits = (int)strlen(hex);
+  uint32_t v = 0;
+  int b;
+  for (b = lo + width - 1; b >= lo; --b) {
+    const int d = digits - 1 - b / 4;
+    const char c = d >= 0 ? hex[d] : '0';
+    const int nibble = c <= '9' ? c - '0' : c - 'a' + 10;
+    v = v << 1 | (uint32_t)((nibble >> (b % 4)) & 1);
+  }
+  return v;
 }
 
 /* Replays SUITE/TEST/stream.hex through the API and compares the planes with the expect files. */
@@ -189,7 +253,7 @@ static void replay(const char* suite, const char* test) {
   word128 word;
   zb_golden* g = NULL;
   uint64_t count, n, pass_fragments = 0, fragments = 0;
-  int width = 0, height = 0, ended = 0, in_pass = 0, p;
+  int width = 0, height = 0, ended = 0, in_pass = 0, p, acc_bits = 0, rev_bits = 0;
   const int failures_before = failures;
 
   snprintf(path, sizeof path, "%s/%s/stream.hex", suite, test);
@@ -215,6 +279,10 @@ static void replay(const char* suite, const char* test) {
         CHECK(zb_golden_create(&g, width, height, (int)(word.w[1] & 0xffu),
                                (int)((word.w[1] >> 8) & 0xffu), word.w[2]) == ZB_OK,
               "%s: create: %s", path, zb_golden_last_error(NULL));
+        acc_bits = (int)(word.w[3] & 0xffu);
+        rev_bits = (int)((word.w[3] >> 8) & 0xffu);
+        CHECK(g && zb_golden_set_wboit(g, acc_bits, rev_bits, (int)((word.w[3] >> 16) & 0xffu)) == ZB_OK,
+              "%s: set_wboit: %s", path, zb_golden_last_error(g));
         break;
       case 0x02: /* PASS */
         CHECK(!in_pass && zb_golden_begin_pass(g, word.w[0]) == ZB_OK, "%s: word %" PRIu64 ": begin: %s",
@@ -257,7 +325,7 @@ static void replay(const char* suite, const char* test) {
   fclose(f);
   if (g == NULL) return;
 
-  for (p = 0; p < 4; ++p) {
+  for (p = 0; p < 5; ++p) {
     int x, y, differ = 0;
     snprintf(path, sizeof path, "%s/%s/expect.%s.hex", suite, test, kPlaneNames[p]);
     f = fopen(path, "r");
@@ -265,22 +333,29 @@ static void replay(const char* suite, const char* test) {
     if (!f) continue;
     for (y = 0; y < height; ++y)
       for (x = 0; x < width; ++x) {
-        unsigned int want = 0;
-        const uint32_t got = read_plane(g, p, x, y);
-        if (fscanf(f, "%x", &want) != 1) {
+        char hex[40];
+        int k, same = 1;
+        if (fscanf(f, "%39s", hex) != 1) {
           CHECK(0, "%s: too short", path);
           x = width, y = height;
           break;
         }
-        if (got != want && differ++ == 0)
-          CHECK(0, "%s: %s pixel (%d, %d): expect file %x, C API %x", test, kPlaneNames[p], x, y,
-                want, got);
+        if (p < 4) { /* one word */
+          same = read_plane(g, p, x, y) == hex_field(hex, 0, 32);
+        } else { /* the accumulation word: acc R, G, B, A, then r, from bit 0 */
+          for (k = 0; k < 4; ++k)
+            same &= read_plane(g, ZB_PLANE_ACC_R + k, x, y) == hex_field(hex, k * acc_bits, acc_bits);
+          same &= read_plane(g, ZB_PLANE_REVEAL, x, y) == hex_field(hex, 4 * acc_bits, rev_bits);
+        }
+        if (!same && differ++ == 0)
+          CHECK(0, "%s: %s pixel (%d, %d): expect file %s, C API differs", test, kPlaneNames[p],
+                x, y, hex);
       }
     CHECK(differ == 0, "%s: %d %s pixels differ", test, differ, kPlaneNames[p]);
     fclose(f);
   }
   zb_golden_destroy(g);
-  printf("%s: %s: %" PRIu64 " words, %" PRIu64 " fragments, %dx%d x 4 planes\n", test,
+  printf("%s: %s: %" PRIu64 " words, %" PRIu64 " fragments, %dx%d x 5 planes\n", test,
          failures == failures_before ? "equal" : "FAILED", count, fragments, width, height);
 }
 
@@ -301,6 +376,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   test_errors();
+  test_accumulate();
   if (argc > 2) {
     for (i = 2; i < argc; ++i, ++tests) replay(argv[1], argv[i]);
   } else {

@@ -16,7 +16,7 @@ tests=0
 for d in "$suite"/*/; do
   name=$(basename "$d")
   mkdir -p "$out/$name"
-  for p in color depth coverage peel; do cp "$d/expect.$p.hex" "$out/$name/got.$p.hex"; done
+  for p in color depth coverage peel accum; do cp "$d/expect.$p.hex" "$out/$name/got.$p.hex"; done
   tests=$((tests + 1))
 done
 
@@ -39,10 +39,30 @@ want=$(sed -n 100p "$g")
 sed -i '100s/.*/00abcdef/' "$g"
 "$zblend" conformance check "$suite" "$out" >"$tmp/fail.log" 2>"$tmp/fail.err"; rc=$?
 [[ $rc -eq 1 ]] || bad "one changed word: exit $rc, want 1"
-line="FAIL  cad-three-pass: depth pixel (3, 3): expected $want, got 00abcdef [color ok, depth 1 pixel differs, coverage ok, peel ok]"
+line="FAIL  cad-three-pass: depth pixel (3, 3): expected $want, got 00abcdef [color ok, depth 1 pixel differs, coverage ok, peel ok, accum ok]"
 grep -qxF "$line" "$tmp/fail.log" || bad "no line '$line' in: $(grep FAIL "$tmp/fail.log")"
 [[ $(grep -c '^FAIL' "$tmp/fail.log") -eq 1 ]] || bad "more than one test failed: $(grep FAIL "$tmp/fail.log")"
 grep -qx "zblend: FAILED: 1 of $tests tests failed" "$tmp/fail.err" || bad "stderr: $(cat "$tmp/fail.err")"
+
+# One accumulation word of a wboit test changed (its lowest digit): the accum plane is named,
+# with both 18-digit words, pixel 200 = (8, 6).
+g=$out/glass-torus-wboit/got.accum.hex
+want=$(sed -n 201p "$g")
+changed=${want:0:17}$(printf %x $(( (16#${want:17:1} + 1) % 16 )))
+sed -i "201s/.*/$changed/" "$g"
+"$zblend" conformance check "$suite" "$out" --tests glass-torus-wboit >"$tmp/acc.log" 2>/dev/null; rc=$?
+line="FAIL  glass-torus-wboit: accum pixel (8, 6): expected $want, got $changed [color ok, depth ok, coverage ok, peel ok, accum 1 pixel differs]"
+[[ $rc -eq 1 ]] && grep -qxF "$line" "$tmp/acc.log" || bad "changed accumulation word: exit $rc: $(cat "$tmp/acc.log"), want '$line'"
+# A DUT without the accumulation plane (--no-accum): the wboit tests are skipped, not passed,
+# and no got.accum.hex is read.
+rm "$out/random/got.accum.hex"
+"$zblend" conformance check "$suite" "$out" --no-accum --tests random,glass-torus-wboit >"$tmp/skip.log" 2>&1; rc=$?
+[[ $rc -eq 0 && $(cat "$tmp/skip.log") == "pass  random
+skip  glass-torus-wboit: needs the accumulation plane (a resolve wboit), which the DUT does not have
+1 of 1 tests pass, 1 skipped (they need the accumulation plane)" ]] || bad "--no-accum: exit $rc: $(cat "$tmp/skip.log")"
+"$zblend" conformance check "$suite" "$out" --tests random >/dev/null 2>&1 && bad "a missing got.accum.hex passes"
+cp "$suite/random/expect.accum.hex" "$out/random/got.accum.hex"
+cp "$suite/glass-torus-wboit/expect.accum.hex" "$g"
 
 # A slice: only the named tests are checked, in the suite's order.
 "$zblend" conformance check "$suite" "$out" --tests random,cad-three-pass >"$tmp/slice.log" 2>/dev/null; rc=$?
@@ -76,9 +96,9 @@ cp -r "$suite" "$tmp/damaged"
 sed -i '1s/.*/00000000/' "$tmp/damaged/random/expect.color.hex"
 expect2 "a changed expect file" "the expect files of test 'random' do not match its signature_sha256" \
   "$tmp/damaged" "$out" --tests random
-echo '{"suite": "zblend-conformance", "version": 3, "tests": []}' >"$tmp/damaged/manifest.json"
-expect2 "a later version" "version 3 is not supported" "$tmp/damaged" "$out"
-echo '{"suite": "zblend-conformance", "version": 2, "tests": [{"name": "../x"}]}' >"$tmp/damaged/manifest.json"
+echo '{"suite": "zblend-conformance", "version": 4, "tests": []}' >"$tmp/damaged/manifest.json"
+expect2 "a later version" "version 4 is not supported" "$tmp/damaged" "$out"
+echo '{"suite": "zblend-conformance", "version": 3, "configs": [], "tests": [{"name": "../x"}]}' >"$tmp/damaged/manifest.json"
 expect2 "a test without its fields" "manifest.json: .*key 'width' not found|is not a directory name" "$tmp/damaged" "$out"
 echo 'not json' >"$tmp/damaged/manifest.json"
 expect2 "not JSON" "manifest.json: .*parse error" "$tmp/damaged" "$out"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # zblend conformance export: byte-for-byte reproducible (two exports, diff -r), each test's
-# signature_sha256 as sha256sum computes it over its four expect files, each stream's count line
+# signature_sha256 as sha256sum computes it over its five expect files, each stream's count line
 # and manifest counts as the files hold them, --quick a subset of the full suite, file for file,
 # and an export over an earlier suite replacing it with nothing left beside it.
 set -u
@@ -19,10 +19,13 @@ cat "$tmp/a.log"
 python3 - "$tmp/a/manifest.json" >"$tmp/tests" <<'PY' || bad "manifest unreadable"
 import json, sys
 m = json.load(open(sys.argv[1]))
-assert m["suite"] == "zblend-conformance" and m["version"] == 2
+assert m["suite"] == "zblend-conformance" and m["version"] == 3
 configs = {c["name"] for c in m["configs"]}
+assert all((c["acc_bits"], c["rev_bits"], c["weight_bits"]) == (16, 8, 4) for c in m["configs"])
 for t in m["tests"]:
     assert t["config"] in configs, t["name"]
+    # Only a resolve wboit needs the accumulation plane: the wboit scene tests.
+    assert t["needs_accum"] == (t.get("method") == "wboit"), t["name"]
     print(t["name"], t["width"] * t["height"], t["words"], t["signature_sha256"])
 PY
 tests=0
@@ -30,9 +33,9 @@ while read -r name pixels words sha; do
   tests=$((tests + 1))
   d="$tmp/a/$name"
   got=$(cat "$d/expect.color.hex" "$d/expect.depth.hex" "$d/expect.coverage.hex" \
-            "$d/expect.peel.hex" | sha256sum | cut -d' ' -f1)
+            "$d/expect.peel.hex" "$d/expect.accum.hex" | sha256sum | cut -d' ' -f1)
   [[ $got == "$sha" ]] || bad "$name: sha256sum $got, manifest $sha"
-  for p in color depth coverage peel; do
+  for p in color depth coverage peel accum; do
     n=$(wc -l <"$d/expect.$p.hex")
     [[ $n -eq $pixels ]] || bad "$name: expect.$p.hex has $n lines for $pixels pixels"
   done

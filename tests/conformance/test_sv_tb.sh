@@ -6,6 +6,14 @@
 #       the run fails and the checker names the first differing pixel of that test
 #   test_sv_tb.sh lockstep-bug SIM SUITE OUT ZBLEND TEST LIBS...   the DPI-C lock-step run stops
 #       at the first wrong write, naming the fragment, the pixel and both values
+#   test_sv_tb.sh resolve-bug SIM SUITE OUT ZBLEND TEST [ARGS...]   the testbench's resolve wboit
+#       without its rounding: the checker names a colour pixel, the accumulation plane ok
+#   test_sv_tb.sh accum-bug SIM SUITE OUT ZBLEND TEST [ARGS...]   zb_rop's accumulation bypass
+#       defect (+zb_bug_accum): the checker names the first differing accum pixel
+#   test_sv_tb.sh lockstep-accum-bug SIM SUITE OUT ZBLEND TEST LIBS...   the same defect stops the
+#       lock-step run at the first wrong accumulation write
+#   test_sv_tb.sh no-accum SIM SUITE OUT ZBLEND TESTS [ARGS...]   the adapter without the
+#       accumulation plane: the tests that need it are skipped (not passed), the others match
 # ARGS go to conformance.py (e.g. --param TILE_W=32, --lockstep --golden-libs ...).
 set -u
 mode=${1:?usage: test_sv_tb.sh pass|bug|lockstep-bug SIM SUITE OUT ZBLEND TESTS [ARGS...]}
@@ -67,5 +75,50 @@ case $mode in
     grep -q "^\[markername\] Afirst wrong write$" "${fst%.fst}.gtkw" || fail "marker A is not named"
     echo "ok: the lock-step run stopped at the first wrong write: $(grep -m1 MISMATCH "$log"); reproduced with waves"
     ;;
-  *) echo "usage: test_sv_tb.sh pass|bug|lockstep-bug ..." >&2; exit 2 ;;
+  resolve-bug)
+    run --define ZB_CONF_INJECT_RESOLVE_BUG "$@"
+    rc=$?
+    [[ $rc == 1 ]] || fail "conformance.py exited $rc with the resolve defect, want 1"
+    line=$(grep -E "^FAIL  $tests: color pixel \(.*, accum ok\]$" "$out/log.txt") ||
+      fail "the checker did not name a colour pixel of $tests with the accumulation plane ok"
+    echo "ok: the wrong resolve caught under $sim: $line"
+    ;;
+  accum-bug)
+    run --define ZB_INJECT_ACCUM_BUG --plusarg +zb_bug_accum "$@"
+    rc=$?
+    [[ $rc == 1 ]] || fail "conformance.py exited $rc on the accumulation defect, want 1"
+    line=$(grep "^FAIL  $tests: accum pixel (" "$out/log.txt") ||
+      fail "the checker did not name the first differing accum pixel of $tests"
+    echo "ok: the accumulation defect caught under $sim: $line"
+    ;;
+  lockstep-accum-bug)
+    run --define ZB_INJECT_ACCUM_BUG --plusarg +zb_bug_accum --lockstep --golden-libs "$@"
+    rc=$?
+    [[ $rc == 1 ]] || fail "the lock-step run exited $rc on the accumulation defect, want 1"
+    log=$out/$tests/sim.log
+    grep -q "^zb_conf: MISMATCH at cycle [0-9]*: pass [0-9]* fragment [0-9]*, pixel ([0-9]*, [0-9]*), X11:" "$log" ||
+      fail "no MISMATCH line in $log"
+    grep -q "^zb_conf:   rtl    accumulation write 1 (acc 0x" "$log" || fail "the RTL's word is not reported"
+    grep -q "^zb_conf:   golden accumulation write 1 (acc 0x" "$log" || fail "the golden word is not reported"
+    grep -q "^zb_conf: done:" "$log" && fail "the run went on past the first wrong write"
+    echo "ok: the lock-step run stopped at the first wrong accumulation write: $(grep -m1 MISMATCH "$log")"
+    ;;
+  no-accum)
+    run --define ZB_CONF_NO_ACCUM "$@" || fail "conformance.py exited $? without the accumulation plane"
+    skips=0
+    for t in ${tests//,/ }; do
+      if grep -q "^skip  $t: needs the accumulation plane" "$out/log.txt"; then
+        skips=$((skips + 1))
+        [[ -e $out/$t/got.color.hex ]] && fail "$t: skipped, yet it wrote signatures"
+      else
+        grep -q "^pass  $t$" "$out/log.txt" || fail "$t: neither passed nor skipped"
+        [[ -e $out/$t/got.accum.hex ]] && fail "$t: a got.accum.hex from a DUT without the plane"
+      fi
+    done
+    [[ $skips -gt 0 ]] || fail "no test was skipped"
+    grep -qx "$((n - skips)) of $((n - skips)) tests pass, $skips skipped (they need the accumulation plane)" "$out/log.txt" ||
+      fail "the summary does not count $skips skipped apart from the passes"
+    echo "ok: without the accumulation plane under $sim: $((n - skips)) pass, $skips skipped"
+    ;;
+  *) echo "usage: test_sv_tb.sh pass|bug|lockstep-bug|resolve-bug|accum-bug|lockstep-accum-bug|no-accum ..." >&2; exit 2 ;;
 esac
