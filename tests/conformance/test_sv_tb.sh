@@ -23,6 +23,17 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 fail() { echo "FAIL: $*" >&2; [[ -f $out/log.txt ]] && tail -n 30 "$out/log.txt" >&2; exit 1; }
 rm -rf "$out"
 mkdir -p "$out"
+# The lock-step run stopped at its first wrong write: the MISMATCH line names the cycle, pass,
+# fragment, pixel and stage, both sides' values follow (WRITE: "colour write 1 (rgba 0x", ...),
+# and the run went no further.
+stopped_at_first_wrong_write() {
+  local log=$1 write=$2
+  grep -q "^zb_conf: MISMATCH at cycle [0-9]*: pass [0-9]* fragment [0-9]*, pixel ([0-9]*, [0-9]*), X11:" "$log" ||
+    fail "no MISMATCH line naming the cycle, pass, fragment, pixel and stage in $log"
+  grep -q "^zb_conf:   rtl    $write" "$log" || fail "the RTL's value is not reported ($write)"
+  grep -q "^zb_conf:   golden $write" "$log" || fail "the golden value is not reported ($write)"
+  grep -q "^zb_conf: done:" "$log" && fail "the run went on past the first wrong write"
+}
 run() {
   python3 "$root/scripts/conformance.py" --suite "$suite" --sim "$sim" --out "$out" --tests "$tests" \
     --zblend "$zblend" -j 2 "$@" >"$out/log.txt" 2>&1
@@ -55,11 +66,7 @@ case $mode in
     rc=$?
     [[ $rc == 1 ]] || fail "the lock-step run exited $rc on the defective RTL, want 1"
     log=$out/$tests/sim.log
-    grep -q "^zb_conf: MISMATCH at cycle [0-9]*: pass [0-9]* fragment [0-9]*, pixel ([0-9]*, [0-9]*), X11:" "$log" ||
-      fail "no MISMATCH line naming the cycle, pass, fragment, pixel and stage in $log"
-    grep -q "^zb_conf:   rtl    colour write 1 (rgba 0x" "$log" || fail "the RTL's value is not reported"
-    grep -q "^zb_conf:   golden colour write 1 (rgba 0x" "$log" || fail "the golden value is not reported"
-    grep -q "^zb_conf: done:" "$log" && fail "the run went on past the first wrong write"
+    stopped_at_first_wrong_write "$log" "colour write 1 (rgba 0x"
     c=$(sed -n 's/^zb_conf: MISMATCH at cycle \([0-9]*\):.*/\1/p' "$log")
     # The printed command reproduces it with waves: the FST starts 30 cycles before the wrong
     # write, its save file puts marker A at that cycle.
@@ -96,11 +103,7 @@ case $mode in
     rc=$?
     [[ $rc == 1 ]] || fail "the lock-step run exited $rc on the accumulation defect, want 1"
     log=$out/$tests/sim.log
-    grep -q "^zb_conf: MISMATCH at cycle [0-9]*: pass [0-9]* fragment [0-9]*, pixel ([0-9]*, [0-9]*), X11:" "$log" ||
-      fail "no MISMATCH line in $log"
-    grep -q "^zb_conf:   rtl    accumulation write 1 (acc 0x" "$log" || fail "the RTL's word is not reported"
-    grep -q "^zb_conf:   golden accumulation write 1 (acc 0x" "$log" || fail "the golden word is not reported"
-    grep -q "^zb_conf: done:" "$log" && fail "the run went on past the first wrong write"
+    stopped_at_first_wrong_write "$log" "accumulation write 1 (acc 0x"
     echo "ok: the lock-step run stopped at the first wrong accumulation write: $(grep -m1 MISMATCH "$log")"
     ;;
   no-accum)
