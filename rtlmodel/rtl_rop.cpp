@@ -643,34 +643,45 @@ struct RtlRop::Impl {
   }
 
   // After a store: reads the planes `planes` of the tile again, beat by beat (every word must
-  // be the one the store read), then loads those words back (the planes read the same after).
+  // be the one the store read, and the port must hold it through a cycle with no read), then
+  // loads those words back (the planes read the same after).
   // Outside the run's cycles (store_end is taken before). The tile counters, not cleared since
   // the setup, then hold one more tile of reads and of loads: past their width (zb_rop's
   // TileCntW, two tiles' beats less one), so their saturation shows.
   static void reread(Sim& s, int x0, int y0, uint8_t planes, bool loaded,
                      const std::vector<BeatWords>& first) {
     VModel& t = *s.top;
-    t.tile_req_i = 1;
     t.tile_we_i = 0;
     static const char* const kPlane[3] = {"colour", "depth", "coverage"};
-    for (size_t b = 0; b < first.size(); ++b) {
-      t.tile_addr_i = uint32_t(b);
-      s.tick();
+    // The port's words against beat b's first read; `what` names the read.
+    auto same = [&](size_t b, const char* what) {
       const BeatWords w = read_beat(t);
       for (unsigned l = 0; l < unsigned(kRtlBeat); ++l) {
         for (size_t p = 0; p < 3; ++p)
           if ((planes >> p & 1) && w[p][l] != first[b][p][l])
             throw std::runtime_error(fmt::format(
-                "rtl: tile ({},{}) read {} {:#x} at beat {} lane {} again after its store, "
-                "which read {:#x}: the store changed the plane",
-                x0, y0, kPlane[p], w[p][l], b, l, first[b][p][l]));
+                "rtl: tile ({},{}) {}: {} {:#x} at beat {} lane {}, where its store read {:#x}",
+                x0, y0, what, kPlane[p], w[p][l], b, l, first[b][p][l]));
         if ((planes & kPlaneAccum) && w.accum[l] != first[b].accum[l])
           throw std::runtime_error(fmt::format(
-              "rtl: tile ({},{}) read accumulation {} at beat {} lane {} again after its "
-              "store, which read {}: the store changed the plane",
-              x0, y0, accum_text(w.accum[l]), b, l, accum_text(first[b].accum[l])));
+              "rtl: tile ({},{}) {}: accumulation {} at beat {} lane {}, where its store read {}",
+              x0, y0, what, accum_text(w.accum[l]), b, l, accum_text(first[b].accum[l])));
       }
+    };
+    // Each beat read again, then a cycle with no read at the next beat's address: the port
+    // shows a read's beat "from cycle t+1 on" (docs/rtl.md "Tile port"), so it must still show
+    // it, and a bank that loads its read register anyway shows the other word.
+    for (size_t b = 0; b < first.size(); ++b) {
+      t.tile_req_i = 1;
+      t.tile_addr_i = uint32_t(b);
+      s.tick();
+      same(b, "read again after its store (the store changed the plane)");
+      t.tile_req_i = 0;
+      t.tile_addr_i = uint32_t((b + 1) % first.size());
+      s.tick();
+      same(b, "a cycle after its read, with no read between (the port must hold the beat)");
     }
+    t.tile_req_i = 1;
     const uint64_t beats = first.size(), most = 2 * beats - 1;  // 2^TileCntW - 1
     t.tile_we_i = 1;
     t.tile_planes_i = planes;
@@ -678,22 +689,19 @@ struct RtlRop::Impl {
       t.tile_addr_i = uint32_t(b);
       put_beat(t, first[b]);
       s.tick();
-      // The store count reached all ones at the last read; a saturated count holds, every
-      // cycle (a hold that rewrites the count shows only at some cycles).
-      if (t.cnt_tile_stores_o != most)
+      // Both counts at every beat, not only at the end: the store count, saturated at the last
+      // read, must hold there; the load count climbs one a beat to its saturation. A count
+      // whose hold path rewrites it wrong shows only at some cycles.
+      const uint64_t loads = std::min(most, (loaded ? beats : 0) + b + 1);
+      if (t.cnt_tile_stores_o != most || t.cnt_tile_loads_o != loads)
         throw std::runtime_error(fmt::format(
-            "rtl: tile ({},{}) store count {} at load-back beat {} after its store was read "
-            "again: saturated at {}, it must hold there",
-            x0, y0, t.cnt_tile_stores_o, b, most));
+            "rtl: tile ({},{}) counted {} store and {} load beats after its store was read "
+            "again and loaded back; two tiles of beats saturate at {}: want {} and {} at "
+            "load-back beat {}",
+            x0, y0, t.cnt_tile_stores_o, t.cnt_tile_loads_o, most, most, loads, b));
     }
     t.tile_req_i = 0;
     t.tile_we_i = 0;
-    const uint64_t loads = std::min(most, (loaded ? beats : 0) + beats);
-    if (t.cnt_tile_stores_o != most || t.cnt_tile_loads_o != loads)
-      throw std::runtime_error(fmt::format(
-          "rtl: tile ({},{}) counted {} store and {} load beats after its store was read again "
-          "and loaded back; two tiles of beats saturate at {}: want {} and {}",
-          x0, y0, t.cnt_tile_stores_o, t.cnt_tile_loads_o, most, most, loads));
   }
 
   // Bins `frags` into tiles, stably (tile_bins.h).
