@@ -14,7 +14,6 @@
 
 struct zb_golden {
   zb::GoldenRop rop;
-  uint32_t clear_rgba = 0;
   bool started = false;  // a pass or a frame operation has been: the widths are fixed
   bool in_pass = false;
   std::string error;  // the last call's, "" after a success
@@ -98,7 +97,6 @@ int zb_golden_create(zb_golden** out, int width, int height, int depth_bits,
     return fail(ZB_EARG, fmt::format("coverage_samples {} is not 1, 2, 4, 8 or 16", coverage_samples));
   try {
     auto* g = new zb_golden;
-    g->clear_rgba = clear_rgba;
     g->rop.begin_frame(width, height, depth_bits, unpack(clear_rgba), coverage_samples);
     *out = g;
     return ZB_OK;
@@ -123,9 +121,9 @@ int zb_golden_set_wboit(zb_golden* g, int acc_bits, int rev_bits, int weight_bit
                                    "{}, {} to {} and {} to {}", acc_bits, rev_bits, weight_bits,
                                    zb::kMinAccBits, zb::kMaxAccBits, zb::kMinRevBits,
                                    zb::kMaxRevBits, zb::kMinWeightBits, zb::kMaxWeightBits)};
+    // Nothing has drawn yet, so every pixel still holds the frame's clear colour.
     const zb::Framebuffer& fb = h.rop.framebuffer();
-    h.rop.begin_frame(fb.width, fb.height, fb.depth_bits, unpack(h.clear_rgba),
-                      fb.coverage_samples, f);
+    h.rop.begin_frame(fb.width, fb.height, fb.depth_bits, fb.color[0], fb.coverage_samples, f);
     return kOk;
   });
 }

@@ -16,7 +16,7 @@
 #       accumulation plane: the tests that need it are skipped (not passed), the others match
 # ARGS go to conformance.py (e.g. --param TILE_W=32, --lockstep --golden-libs ...).
 set -u
-mode=${1:?usage: test_sv_tb.sh pass|bug|lockstep-bug SIM SUITE OUT ZBLEND TESTS [ARGS...]}
+mode=${1:?usage: test_sv_tb.sh MODE SIM SUITE OUT ZBLEND TESTS [ARGS...] (MODE: see above)}
 sim=$2 suite=$3 out=$4 zblend=$5 tests=$6
 shift 6
 root=$(cd "$(dirname "$0")/../.." && pwd)
