@@ -5,6 +5,8 @@
 # fuzz/corpus/TARGET/ (read only) and OUT/TARGET/, where new inputs and OUT/TARGET.log go. A
 # crash, leak, timeout or broken invariant is saved to CRASHES/ and fails the run with the
 # command that reproduces it.
+# FUZZ_RUNS="obj=N gltf=N ..." gives a target a fixed number of runs from seed FUZZ_SEED
+# (default 1) in place of SECONDS: the same work on a fast or a loaded machine.
 set -u
 build=${1:?usage: fuzz.sh BUILD SECONDS OUT CRASHES [TARGET...]}
 seconds=${2:?seconds per target}
@@ -17,11 +19,19 @@ jobs=${JOBS:-$(nproc)}
 root=$(cd "$(dirname "$0")/.." && pwd)
 
 mkdir -p "$out" "$crashes"
+budget() {  # the libFuzzer options that bound target $1's run
+  local entry
+  for entry in ${FUZZ_RUNS:-}; do
+    [[ ${entry%%=*} == "$1" ]] && { echo "-runs=${entry#*=} -seed=${FUZZ_SEED:-1}"; return; }
+  done
+  echo "-max_total_time=$seconds"
+}
 run() {
   local t=$1 dict=()
   [[ -f "$root/fuzz/$t.dict" ]] && dict=("-dict=$root/fuzz/$t.dict")
   mkdir -p "$out/$t"
-  "$build/fuzz_$t" "${dict[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  # shellcheck disable=SC2046  # budget() gives separate options
+  "$build/fuzz_$t" "${dict[@]}" $(budget "$t") -timeout=10 -rss_limit_mb=2048 \
     -print_final_stats=1 -artifact_prefix="$crashes/$t-" "$out/$t" "$root/fuzz/corpus/$t" \
     >"$out/$t.log" 2>&1
   echo $? >"$out/$t.rc"
@@ -53,7 +63,7 @@ for t in "${targets[@]}"; do
     artifact=$(sed -n 's/.*Test unit written to \(.*\)$/\1/p' "$out/$t.log" | tail -1)
     echo "fuzz: $t FAILED (exit $rc); from $out/$t.log:"
     # From the sanitizer's or libFuzzer's report on, without the progress lines.
-    awk '/ERROR|runtime error|invariant broken|deadly signal|Timeout|out-of-memory|leak/ { on = 1 }
+    awk '/ERROR|runtime error|invariant broken|terminate called|deadly signal|Timeout|out-of-memory|leak/ { on = 1 }
          on && !/^(#[0-9]+|\tNEW_|INFO:)/' "$out/$t.log" | head -60 | sed 's/^/  /'
     if [[ -n $artifact ]]; then
       echo "fuzz: the input: $artifact"

@@ -447,7 +447,7 @@ std::string percent_decode(const std::string& uri) {
 
 // ---- glTF property types: tinygltf silently skips a property of the wrong type ----
 
-enum class JsonKind { kIndex, kSize, kNumber, kString, kBool, kObject };
+enum class JsonKind { kIndex, kSize, kLength, kNumber, kString, kBool, kObject };
 
 // One property: `array` -1 for a single value, 0 for an array of any length, n for exactly n.
 struct JsonField {
@@ -460,6 +460,7 @@ bool json_is(const nlohmann::json& v, JsonKind k) {
   switch (k) {
     case JsonKind::kIndex: return v.is_number_unsigned() && v.get<uint64_t>() <= uint64_t{INT32_MAX};
     case JsonKind::kSize: return v.is_number_unsigned();
+    case JsonKind::kLength: return v.is_number_unsigned() && v.get<uint64_t>() > 0;
     case JsonKind::kNumber: return v.is_number();
     case JsonKind::kString: return v.is_string();
     case JsonKind::kBool: return v.is_boolean();
@@ -472,6 +473,7 @@ const char* json_kind_name(JsonKind k) {
   switch (k) {
     case JsonKind::kIndex: return "an index (an integer from 0 to 2^31 - 1)";
     case JsonKind::kSize: return "a non-negative integer";
+    case JsonKind::kLength: return "a positive integer";
     case JsonKind::kNumber: return "a number";
     case JsonKind::kString: return "a string";
     case JsonKind::kBool: return "true or false";
@@ -563,10 +565,11 @@ void check_gltf_types(const std::string& path, const char* json_place, const nlo
   });
   for_each_object(path, doc, "", "bufferViews", [&](const nlohmann::json& o, const std::string& at) {
     check_fields(path, o, at,
-                 {{"buffer", K::kIndex}, {"byteOffset", K::kSize}, {"byteLength", K::kSize}, {"byteStride", K::kSize}});
+                 {{"buffer", K::kIndex}, {"byteOffset", K::kSize}, {"byteLength", K::kLength}, {"byteStride", K::kSize}});
   });
   for_each_object(path, doc, "", "buffers", [&](const nlohmann::json& o, const std::string& at) {
-    check_fields(path, o, at, {{"uri", K::kString}, {"byteLength", K::kSize}});
+    // An empty GLB buffer makes tinygltf throw (found by fuzz_gltf); the schema forbids it.
+    check_fields(path, o, at, {{"uri", K::kString}, {"byteLength", K::kLength}});
   });
   for_each_object(path, doc, "", "materials", [&](const nlohmann::json& o, const std::string& at) {
     check_fields(path, o, at,

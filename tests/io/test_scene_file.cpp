@@ -371,6 +371,17 @@ TEST_F(SceneFileTest, GlbErrorsNameTheByte) {
   EXPECT_CONTAINS(error_of(p), p + ": JSON chunk: malformed: ");
 }
 
+TEST_F(SceneFileTest, EmptyBuffersAreErrors) {
+  // A GLB buffer of byteLength 0 made tinygltf throw std::out_of_range (found by fuzz_gltf);
+  // the schema's minimum of 1 is checked first, for buffers and buffer views.
+  std::string p = write("empty.glb", make_glb(test_gltf(R"({"byteLength": 0})"), test_buffer()));
+  EXPECT_EQ(error_of(p), p + ": buffers[0].byteLength: expected a positive integer, not number 0");
+  std::string json = test_gltf(R"({"byteLength": 60})");
+  json.replace(json.find(R"("byteLength": 12)"), 16, R"("byteLength": 0)");
+  p = write("emptyview.glb", make_glb(json, test_buffer()));
+  EXPECT_EQ(error_of(p), p + ": bufferViews[1].byteLength: expected a positive integer, not number 0");
+}
+
 // ---- the camera ------------------------------------------------------------------------------
 
 // The error parse_camera_spec gives for `text`, or "parsed".
