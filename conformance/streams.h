@@ -22,8 +22,10 @@ uint8_t coverage_for_samples(int count, int from, int to);
 // A random stream on a width x height frame: every valid pass state, frame operations between
 // passes, and fragments at the fields' edge values (depth 0, the far depth and one below it,
 // depths repeated across the stream; alpha 0, 1, 254, 255; coverage 0, 1, N - 1, N), a share
-// of them in runs on 1 to 4 pixels. Drawn from tb::Rng(seed).
+// of them in runs on 1 to 4 pixels. Drawn from tb::Rng(seed). With `wboit`, half the passes
+// accumulate and a resolve (frame operation 4) follows a fifth of them, among the clears; the
+// draws without it are those of suite version 2 on.
 Trace random_trace(uint64_t seed, int width, int height, int depth_bits, int coverage_samples,
-                   int passes, size_t per_pass);
+                   int passes, size_t per_pass, bool wboit = false);
 
 }  // namespace zb::conformance

@@ -34,10 +34,11 @@ constexpr int kRandomPasses = 24;
 constexpr size_t kRandomFragments = 150;  // per pass: many passes, many states
 
 // The CI-sized subset: one scene with four methods (a depth peel and coverage-aa among them),
-// one hazard, one random, one other depth width, one wboit (accumulation and resolve).
+// one hazard, one random, one other depth width, one wboit scene and the random stream with
+// resolves (accumulation and resolve).
 const char* const kQuick[] = {"cad-three-pass", "cad-coverage-aa", "cad-depth-peel-2",
                               "cad-hidden-line", "hazard", "random", "cad-three-pass-d16",
-                              "glass-torus-wboit"};
+                              "glass-torus-wboit", "random-wboit"};
 
 // A plan that came with suite version 3 (its accumulate passes and resolve read and write the
 // accumulation plane): its tests follow the base config's earlier ones, so no name moves.
@@ -77,9 +78,10 @@ TestSpec hazard_test(const Config& c) {
   return t;
 }
 
-TestSpec random_test(const Config& c) {
+TestSpec random_test(const Config& c, bool wboit = false) {
   TestSpec t;
-  t.name = named("random", c);
+  t.name = named(wboit ? "random-wboit" : "random", c);
+  t.wboit = wboit;
   t.config = c;
   t.kind = TestKind::kRandom;
   t.seed = kRandomSeed;
@@ -109,6 +111,7 @@ std::vector<TestSpec> suite_tests(bool quick) {
   for (const SceneInfo& s : builtin_scenes())
     for (const PassPlan& p : pass_plans())
       if (uses_accumulation(p)) all.push_back(scene_test(kBase, s.name, p.name));
+  all.push_back(random_test(kBase, true));  // version 4
   all.push_back(hazard_test(kCoverage4));
   all.push_back(random_test(kCoverage4));
   for (const Config* c : {&kDepth16, &kDepth32})
@@ -150,7 +153,7 @@ Trace test_trace(const TestSpec& t) {
       break;
     case TestKind::kRandom:
       trace = random_trace(t.seed, t.width, t.height, c.depth_bits, c.coverage_samples,
-                           kRandomPasses, kRandomFragments);
+                           kRandomPasses, kRandomFragments, t.wboit);
       break;
   }
   trace.wboit = c.wboit;

@@ -16,7 +16,8 @@ constexpr const char* kSuiteName = "zblend-conformance";
 // Version 2: the random and hazard streams draw the accumulate blend (mode 5) too.
 // Version 3: the accumulation plane (expect.accum.hex, in every test's signature; its widths in
 // FRAME and the manifest's configs) and the wboit tests.
-constexpr int kSuiteVersion = 3;
+// Version 4: random-wboit, the random stream with resolves (the other tests as in version 3).
+constexpr int kSuiteVersion = 4;
 
 // Bad input to the kit (a malformed suite, a path it cannot use, an unknown test): one line.
 struct ConformanceError : std::runtime_error {
@@ -40,6 +41,7 @@ struct TestSpec {
   TestKind kind = TestKind::kScene;
   std::string scene, method;  // kScene: a built-in scene and a pass plan
   uint64_t seed = 0;          // kHazard, kRandom
+  bool wboit = false;         // kRandom: accumulate passes and resolves (random_trace)
   int width = 0, height = 0;
   bool quick = false;         // in the CI-sized subset (export --quick)
 };

@@ -24,7 +24,7 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SUITE_VERSION = 3  # conformance/suite.h kSuiteVersion
+SUITE_VERSION = 4  # conformance/suite.h kSuiteVersion
 PLANES = ("color", "depth", "coverage", "peel", "accum")
 # The testbench's parameters that each test's configuration sets (manifest "configs").
 CONFIG_PARAMS = {"DEPTH_BITS": "depth_bits", "COV_SAMPLES": "coverage_samples",

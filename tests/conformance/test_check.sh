@@ -96,9 +96,10 @@ cp -r "$suite" "$tmp/damaged"
 sed -i '1s/.*/00000000/' "$tmp/damaged/random/expect.color.hex"
 expect2 "a changed expect file" "the expect files of test 'random' do not match its signature_sha256" \
   "$tmp/damaged" "$out" --tests random
-echo '{"suite": "zblend-conformance", "version": 4, "tests": []}' >"$tmp/damaged/manifest.json"
-expect2 "a later version" "version 4 is not supported" "$tmp/damaged" "$out"
-echo '{"suite": "zblend-conformance", "version": 3, "configs": [], "tests": [{"name": "../x"}]}' >"$tmp/damaged/manifest.json"
+version=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["version"])' "$suite/manifest.json")
+echo "{\"suite\": \"zblend-conformance\", \"version\": $((version + 1)), \"tests\": []}" >"$tmp/damaged/manifest.json"
+expect2 "a later version" "version $((version + 1)) is not supported" "$tmp/damaged" "$out"
+echo "{\"suite\": \"zblend-conformance\", \"version\": $version, \"configs\": [], \"tests\": [{\"name\": \"../x\"}]}" >"$tmp/damaged/manifest.json"
 expect2 "a test without its fields" "manifest.json: .*key 'width' not found|is not a directory name" "$tmp/damaged" "$out"
 echo 'not json' >"$tmp/damaged/manifest.json"
 expect2 "not JSON" "manifest.json: .*parse error" "$tmp/damaged" "$out"

@@ -19,13 +19,13 @@ cat "$tmp/a.log"
 python3 - "$tmp/a/manifest.json" >"$tmp/tests" <<'PY' || bad "manifest unreadable"
 import json, sys
 m = json.load(open(sys.argv[1]))
-assert m["suite"] == "zblend-conformance" and m["version"] == 3
+assert m["suite"] == "zblend-conformance" and m["version"] == 4
 configs = {c["name"] for c in m["configs"]}
 assert all((c["acc_bits"], c["rev_bits"], c["weight_bits"]) == (16, 8, 4) for c in m["configs"])
 for t in m["tests"]:
     assert t["config"] in configs, t["name"]
-    # Only a resolve wboit needs the accumulation plane: the wboit scene tests.
-    assert t["needs_accum"] == (t.get("method") == "wboit"), t["name"]
+    # Only a resolve wboit needs the accumulation plane: the wboit scene tests and random-wboit.
+    assert t["needs_accum"] == (t.get("method") == "wboit" or t["name"] == "random-wboit"), t["name"]
     print(t["name"], t["width"] * t["height"], t["words"], t["signature_sha256"])
 PY
 tests=0
@@ -48,6 +48,12 @@ while read -r name pixels words sha; do
   grep -qvE '^[0-9a-f]{32}$' "$d/stream.hex" && bad "$name: a stream line is not 32 lower-case hex digits"
 done <"$tmp/tests"
 [[ $tests -gt 100 ]] || bad "only $tests tests in the suite"
+# random-wboit resolves between passes too (FRAME_OP, opcode 05, operation 4), random never.
+r=$tmp/a/random-wboit/stream.hex
+first=$(grep -nE '^05[0-9a-f]{29}4$' "$r" | head -1 | cut -d: -f1)
+[[ $(grep -cE '^05[0-9a-f]{29}4$' "$r") -ge 2 && -n $first && $(tail -n +"$first" "$r" | grep -c '^02') -ge 1 ]] ||
+  bad "random-wboit: fewer than two resolves, or none before a pass"
+grep -qE '^05[0-9a-f]{29}4$' "$tmp/a/random/stream.hex" && bad "random: a resolve wboit in the stream"
 echo "export: $tests tests, hashes and counts as the files hold them"
 
 "$zblend" conformance export --quick "$tmp/q" >/dev/null || bad "export --quick"
