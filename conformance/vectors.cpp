@@ -117,8 +117,8 @@ std::string accum_word(const Framebuffer& fb, size_t i) {
     for (int b = 0; b < width; ++b, ++at)
       if (v >> b & 1u) bits[size_t(at / 64)] |= uint64_t{1} << (at % 64);
   };
-  for (const uint32_t a : fb.accum[i]) put(a, fb.wboit.acc_bits);
-  put(fb.reveal[i], fb.wboit.rev_bits);
+  for (const uint32_t a : fb.accum_at(i)) put(a, fb.wboit.acc_bits);
+  put(fb.reveal_at(i), fb.wboit.rev_bits);
   std::string s;
   for (int d = hex_digits(Plane::kAccum, fb.wboit) - 1; d >= 0; --d)
     s += "0123456789abcdef"[(bits[size_t(d / 16)] >> (d % 16 * 4)) & 15u];

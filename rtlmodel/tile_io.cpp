@@ -72,7 +72,7 @@ BeatWords TileSweep::load(const Framebuffer& fb, int k) const {
     w[1][size_t(l)] = fb.depth[size_t(i)];
     w[2][size_t(l)] = fb.coverage[size_t(i)];
     w[3][size_t(l)] = fb.peel[size_t(i)];
-    w.accum[size_t(l)] = AccumWord{fb.accum[size_t(i)], fb.reveal[size_t(i)]};
+    w.accum[size_t(l)] = AccumWord{fb.accum_at(size_t(i)), fb.reveal_at(size_t(i))};
   }
   return w;
 }
@@ -85,6 +85,7 @@ void TileSweep::store(const BeatWords& w, uint8_t planes, Framebuffer& fb, int k
     if (planes & kPlaneDepth) fb.depth[size_t(i)] = w[1][size_t(l)];
     if (planes & kPlaneCoverage) fb.coverage[size_t(i)] = uint8_t(w[2][size_t(l)]);
     if (planes & kPlaneAccum) {
+      fb.touch_accum();
       fb.accum[size_t(i)] = w.accum[size_t(l)].acc;
       fb.reveal[size_t(i)] = w.accum[size_t(l)].reveal;
     }

@@ -40,16 +40,16 @@ void ZbCosimSc::compare(CosimResult& r, const char* where) {
       const size_t i = g.index(x, y);
       const Rgba8 a = g.color[i], b = t.color[i];
       if (a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a && g.depth[i] == t.depth[i] &&
-          g.coverage[i] == t.coverage[i] && g.peel[i] == t.peel[i] && g.accum[i] == t.accum[i] &&
-          g.reveal[i] == t.reveal[i])
+          g.coverage[i] == t.coverage[i] && g.peel[i] == t.peel[i] && g.accum_at(i) == t.accum_at(i) &&
+          g.reveal_at(i) == t.reveal_at(i))
         continue;
       if (r.mismatches++ == 0)
         r.first_mismatch = fmt::format(
             "{}: pixel ({},{}): golden rgba {},{},{},{} depth {} coverage {} peel {} {}; "
             "rtl rgba {},{},{},{} depth {} coverage {} peel {} {}", where, x, y, a.r, a.g, a.b,
-            a.a, g.depth[i], g.coverage[i], g.peel[i], accum_text(g.accum[i], g.reveal[i]), b.r,
+            a.a, g.depth[i], g.coverage[i], g.peel[i], accum_text(g.accum_at(i), g.reveal_at(i)), b.r,
             b.g, b.b, b.a, t.depth[i], t.coverage[i], t.peel[i],
-            accum_text(t.accum[i], t.reveal[i]));
+            accum_text(t.accum_at(i), t.reveal_at(i)));
     }
 }
 

@@ -104,7 +104,7 @@ void Cosim::compare_frames() {
   for (size_t i = 0; i < gf.color.size(); ++i)
     if (gf.color[i] != rf.color[i] || gf.depth[i] != rf.depth[i] ||
         gf.coverage[i] != rf.coverage[i] || gf.peel[i] != rf.peel[i] ||
-        gf.accum[i] != rf.accum[i] || gf.reveal[i] != rf.reveal[i]) {
+        gf.accum_at(i) != rf.accum_at(i) || gf.reveal_at(i) != rf.reveal_at(i)) {
       if (differing++ == 0) first = i;
     }
   pixels_compared_ += gf.color.size();
@@ -137,11 +137,11 @@ void Cosim::report_pixel(int x, int y, size_t differing) {
   o << "  peel: rtl=" << hex(rf.peel_at(x, y), zd) << " golden=" << hex(gf.peel_at(x, y), zd)
     << "\n";
   const size_t i = gf.index(x, y);
-  o << "  accumulation: rtl=" << accum_text(rf.accum[i], rf.reveal[i])
-    << " golden=" << accum_text(gf.accum[i], gf.reveal[i]) << "\n";
+  o << "  accumulation: rtl=" << accum_text(rf.accum_at(i), rf.reveal_at(i))
+    << " golden=" << accum_text(gf.accum_at(i), gf.reveal_at(i)) << "\n";
   o << "  before the pass: " << rgba(before_.color_at(x, y)) << " z=" << hex(before_.depth_at(x, y), zd)
     << " cov=" << before_.coverage_at(x, y) << " "
-    << accum_text(before_.accum[i], before_.reveal[i]) << "\n";
+    << accum_text(before_.accum_at(i), before_.reveal_at(i)) << "\n";
   o << "  state: " << state_text(state_) << "\n";
   uint64_t lo = std::numeric_limits<uint64_t>::max(), hi = 0;
   o << pixel_history(x, y, lo, hi, 64);
@@ -269,7 +269,7 @@ std::string Cosim::waveform(int x, int y, const TileRun& run, uint64_t lo, uint6
     const bool same = replayed.color_at(x, y) == rf.color_at(x, y) &&
                       replayed.depth_at(x, y) == rf.depth_at(x, y) &&
                       replayed.coverage_at(x, y) == rf.coverage_at(x, y) &&
-                      replayed.accum[i] == rf.accum[i] && replayed.reveal[i] == rf.reveal[i];
+                      replayed.accum_at(i) == rf.accum_at(i) && replayed.reveal_at(i) == rf.reveal_at(i);
     o << "  waveform: " << fst << " (cycles " << from << ".." << to << " of tile (" << x0 << ","
       << y0 << "); a 10 ns clock, cycle c's rising edge at 10c+5 ns; replay "
       << (same ? "reproduced the RTL's pixel" : "did NOT reproduce the RTL's pixel: its "
@@ -306,8 +306,8 @@ void Cosim::report_divergence(const Divergence& d) {
   o << "  state: " << state_text(state_) << "\n";
   o << "  before the pass: " << rgba(before_.color_at(r.x, r.y))
     << " z=" << hex(before_.depth_at(r.x, r.y), zd) << " cov=" << before_.coverage_at(r.x, r.y)
-    << " " << accum_text(before_.accum[before_.index(r.x, r.y)],
-                         before_.reveal[before_.index(r.x, r.y)])
+    << " " << accum_text(before_.accum_at(before_.index(r.x, r.y)),
+                         before_.reveal_at(before_.index(r.x, r.y)))
     << "\n";
   uint64_t lo = cycle, hi = cycle;
   // A store divergence follows every retire of the tile: the whole history.

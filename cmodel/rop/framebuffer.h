@@ -27,7 +27,9 @@ struct Framebuffer {
   std::vector<uint32_t> peel;
   // Weighted blended OIT (docs/datapath.md "7. Accumulate blend"): per pixel four
   // accumulation channels (R, G, B, A; wboit.acc_bits wide, cleared to 0) and the revealage
-  // (wboit.rev_bits unorm, cleared to 1.0); written only by accumulate passes.
+  // (wboit.rev_bits unorm, cleared to 1.0); written only by accumulate passes. Allocated by
+  // the first write (touch_accum): a frame that never accumulates holds none, 20 B a pixel
+  // less. Read them through accum_at and reveal_at.
   WboitFormat wboit;
   std::vector<std::array<uint32_t, 4>> accum;
   std::vector<uint32_t> reveal;
@@ -40,15 +42,26 @@ struct Framebuffer {
         depth(static_cast<size_t>(w) * h, depth_max(bits)),
         coverage(static_cast<size_t>(w) * h, 0),
         peel(static_cast<size_t>(w) * h, 0),
-        wboit(wb),
-        accum(static_cast<size_t>(w) * h, std::array<uint32_t, 4>{}),
-        reveal(static_cast<size_t>(w) * h, wboit_reveal_one(wb.rev_bits)) {}
+        wboit(wb) {}
+
+  // The accumulation planes, allocated at their clear values if they were not.
+  void touch_accum() {
+    if (!accum.empty()) return;
+    accum.assign(static_cast<size_t>(width) * height, std::array<uint32_t, 4>{});
+    reveal.assign(static_cast<size_t>(width) * height, wboit_reveal_one(wboit.rev_bits));
+  }
 
   size_t index(int x, int y) const { return static_cast<size_t>(y) * width + x; }
   Rgba8 color_at(int x, int y) const { return color[index(x, y)]; }
   uint32_t depth_at(int x, int y) const { return depth[index(x, y)]; }
   int coverage_at(int x, int y) const { return coverage[index(x, y)]; }
   uint32_t peel_at(int x, int y) const { return peel[index(x, y)]; }
+  std::array<uint32_t, 4> accum_at(size_t i) const {
+    return accum.empty() ? std::array<uint32_t, 4>{} : accum[i];
+  }
+  uint32_t reveal_at(size_t i) const {
+    return reveal.empty() ? wboit_reveal_one(wboit.rev_bits) : reveal[i];
+  }
 };
 
 }  // namespace zb

@@ -153,6 +153,7 @@ PixelWrites GoldenRop::process(const Fragment& f) {
   if (reads_dest) ++stats_.color_reads;
   if (state_.blend == BlendMode::kAccumulate) {
     // The accumulation word is read and written whole; the colour plane is kept.
+    fb_.touch_accum();
     const WboitPixel p =
         accumulate_wboit(f.z, f.color, fb_.accum[i], fb_.reveal[i], fb_.depth_bits, fb_.wboit);
     fb_.accum[i] = w.acc = p.acc;

@@ -224,9 +224,9 @@ int zb_golden_read(zb_golden* g, int plane, int x, int y, uint32_t* value) {
       case ZB_PLANE_COVERAGE: *value = fb.coverage[i]; return kOk;
       case ZB_PLANE_PEEL: *value = fb.peel[i]; return kOk;
       case ZB_PLANE_ACC_R: case ZB_PLANE_ACC_G: case ZB_PLANE_ACC_B: case ZB_PLANE_ACC_A:
-        *value = fb.accum[i][size_t(plane - ZB_PLANE_ACC_R)];
+        *value = fb.accum_at(i)[size_t(plane - ZB_PLANE_ACC_R)];
         return kOk;
-      case ZB_PLANE_REVEAL: *value = fb.reveal[i]; return kOk;
+      case ZB_PLANE_REVEAL: *value = fb.reveal_at(i); return kOk;
     }
     return {ZB_EARG, fmt::format("plane {} is not a plane (0 colour, 1 depth, 2 coverage, 3 peel, "
                                  "4 to 7 accumulation R, G, B, A, 8 revealage)", plane)};

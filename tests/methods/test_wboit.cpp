@@ -167,12 +167,12 @@ TEST(Wboit, OrderIndependent) {
     std::vector<Layer> layers = random_layers(rng, n, 20, 240);
     std::sort(layers.begin(), layers.end(), [](auto& a, auto& b) { return a.z < b.z; });
     const zb::RenderResult first = run_wboit(layers, {});
-    uint32_t lo = first.framebuffer.reveal[0], hi = lo;
+    uint32_t lo = first.framebuffer.reveal_at(0), hi = lo;
     do {
       const zb::RenderResult r = run_wboit(layers, {});
-      ASSERT_EQ(r.framebuffer.accum[0], first.framebuffer.accum[0]) << n << " layers";
-      lo = std::min(lo, r.framebuffer.reveal[0]);
-      hi = std::max(hi, r.framebuffer.reveal[0]);
+      ASSERT_EQ(r.framebuffer.accum_at(0), first.framebuffer.accum_at(0)) << n << " layers";
+      lo = std::min(lo, r.framebuffer.reveal_at(0));
+      hi = std::max(hi, r.framebuffer.reveal_at(0));
     } while (std::next_permutation(layers.begin(), layers.end(),
                                    [](auto& a, auto& b) { return a.z < b.z; }));
     EXPECT_LE(hi - lo, uint32_t(n - 1)) << n << " layers";
@@ -186,10 +186,10 @@ TEST(Wboit, SixteenFullWeightLayersFit) {
   const Layer full{0, {254, 254, 254, 254}};
   const uint32_t term = uint32_t((254ull * 254 * 253) >> 12);  // S = 8 + 20 - 16
   const zb::RenderResult r16 = run_wboit(std::vector<Layer>(16, full), def);
-  EXPECT_EQ(r16.framebuffer.accum[0][3], 16 * term);
-  EXPECT_LT(r16.framebuffer.accum[0][3], 0xffffu);
+  EXPECT_EQ(r16.framebuffer.accum_at(0)[3], 16 * term);
+  EXPECT_LT(r16.framebuffer.accum_at(0)[3], 0xffffu);
   const zb::RenderResult r17 = run_wboit(std::vector<Layer>(17, full), def);
-  EXPECT_EQ(r17.framebuffer.accum[0][3], 0xffffu);
+  EXPECT_EQ(r17.framebuffer.accum_at(0)[3], 0xffffu);
 }
 
 // The resolve worked by hand: acc = (100, 50, 0, 200), r = 128 of 255 over (10, 20, 30, 255).
@@ -197,6 +197,7 @@ TEST(Wboit, SixteenFullWeightLayersFit) {
 // c = (avg (255 - 128) + c0 128 + 127) / 255 = (17663, 10815, 3967, 65152) / 255.
 TEST(Wboit, ResolveByHand) {
   zb::Framebuffer fb(2, 1, 24, Rgba8{10, 20, 30, 255});
+  fb.touch_accum();
   fb.accum[0] = {100, 50, 0, 200};
   fb.reveal[0] = 128;
   zb::apply_frame_op(fb, zb::FrameOp{zb::FrameOpKind::kResolveWboit, Rgba8{}, 0, false});
@@ -233,3 +234,18 @@ TEST(Wboit, HighAlphaLayersLoseTheirOrder) {
 }
 
 }  // namespace
+
+// The accumulation planes (20 B a pixel) exist only once something accumulates: a frame that
+// never does reads them as cleared, and a resolve over them keeps its colours.
+TEST(Wboit, PlanesOnlyOnceAccumulated) {
+  zb::Framebuffer fb(2, 1, 24, Rgba8{10, 20, 30, 40});
+  EXPECT_TRUE(fb.accum.empty() && fb.reveal.empty());
+  EXPECT_EQ(fb.accum_at(1), (std::array<uint32_t, 4>{}));
+  EXPECT_EQ(fb.reveal_at(1), 255u);
+  zb::apply_frame_op(fb, zb::FrameOp{zb::FrameOpKind::kResolveWboit, Rgba8{}, 0, false});
+  EXPECT_EQ(fb.color[1], (Rgba8{10, 20, 30, 40}));
+  EXPECT_TRUE(fb.accum.empty()) << "a resolve allocates nothing";
+  const zb::RenderResult r = run_wboit({Layer{100, {200, 100, 50, 128}}}, {});
+  EXPECT_EQ(r.framebuffer.accum.size(), r.framebuffer.color.size());
+  EXPECT_NE(r.framebuffer.reveal_at(0), 255u);
+}
