@@ -78,6 +78,7 @@ BeatWords TileSweep::load(const Framebuffer& fb, int k) const {
 }
 
 void TileSweep::store(const BeatWords& w, uint8_t planes, Framebuffer& fb, int k) const {
+  if (planes & kPlaneAccum) fb.touch_accum();
   for (int l = 0; l < kRtlBeat; ++l) {
     const int64_t i = pixel(fb, k, l);
     if (i < 0) continue;
@@ -85,7 +86,6 @@ void TileSweep::store(const BeatWords& w, uint8_t planes, Framebuffer& fb, int k
     if (planes & kPlaneDepth) fb.depth[size_t(i)] = w[1][size_t(l)];
     if (planes & kPlaneCoverage) fb.coverage[size_t(i)] = uint8_t(w[2][size_t(l)]);
     if (planes & kPlaneAccum) {
-      fb.touch_accum();
       fb.accum[size_t(i)] = w.accum[size_t(l)].acc;
       fb.reveal[size_t(i)] = w.accum[size_t(l)].reveal;
     }
