@@ -1,41 +1,61 @@
 # zblend: the entry point. `make help` lists the targets.
 BUILD      ?= build
 ASAN_BUILD ?= build-asan
+TSAN_BUILD ?= build-tsan
 JOBS       ?= $(shell nproc)
 ZBLEND     := $(BUILD)/zblend
 RUN_SIZE   ?= --width 640 --height 480
 
 .DEFAULT_GOAL := build
-.PHONY: help setup build run test test-asan regress conformance mutate bench bench-verilator profile-rtl synth formal systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
+.PHONY: help setup build run test test-release test-asan test-tsan regress conformance mutate bench bench-verilator profile-rtl synth formal systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
 
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | awk -F'\t' '{printf "%-16s %s\n", $$1, $$2}'
 
-setup: ## Install the missing Debian packages (apt-get)
-	@scripts/setup.sh
+setup: ## Install the missing Debian packages the tests and tools use (apt-get; make run installs fewer)
+	@scripts/setup.sh test
 
 $(BUILD)/CMakeCache.txt:
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 
+# Every target of the tree, with every package the tests use required at configure time (a tree
+# that `make run` configured without them is configured again).
 build: setup $(BUILD)/CMakeCache.txt ## Build the zblend command, tests and benchmarks
+	@grep -q '^ZBLEND_REQUIRE_ALL:BOOL=ON' $(BUILD)/CMakeCache.txt || \
+	  cmake -S . -B $(BUILD) -DZBLEND_REQUIRE_ALL=ON >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS)
 	@echo "zblend: $(ZBLEND)"
 
-run: build ## Render `cad` with every method on golden model and RTL, compared: out/run/
+# Only what the render needs: the run group's packages and the zblend target.
+run: ## Render `cad` with every method on golden model and RTL, compared: out/run/
+	@scripts/setup.sh run
+	@[ -f $(BUILD)/CMakeCache.txt ] || cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	@cmake --build $(BUILD) -j $(JOBS) --target zblend
 	@$(ZBLEND) render --scene cad --method all $(RUN_SIZE) --backend both --out-dir out/run \
 	  --stats out/run/stats.json
 	@echo "images and table: out/run/"
 
-test: build ## Run every test (CTest), then again under ASan and UBSan, then the fuzzers briefly
-	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+test: ## Every test: the Release tree (CTest), ASan+UBSan, ThreadSanitizer, the fuzzers briefly
+	@$(MAKE) --no-print-directory test-release
 	@$(MAKE) --no-print-directory test-asan
+	@$(MAKE) --no-print-directory test-tsan
 	@$(MAKE) --no-print-directory fuzz-ci
+
+test-release: build ## The Release tree's tests (CTest)
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
 test-asan: setup ## The tests built with AddressSanitizer and UndefinedBehaviorSanitizer
 	@[ -f $(ASAN_BUILD)/CMakeCache.txt ] || cmake -S . -B $(ASAN_BUILD) \
-	  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DZBLEND_SANITIZE=ON
+	  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DZBLEND_SANITIZE=ON -DZBLEND_REQUIRE_ALL=ON
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS)
+
+# The threaded paths only (tests/tsan, docs/threads.md): zblend and its thread tests.
+test-tsan: setup ## The threaded paths built with ThreadSanitizer and run on 2 to 4 threads
+	@[ -f $(TSAN_BUILD)/CMakeCache.txt ] || cmake -S . -B $(TSAN_BUILD) \
+	  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DZBLEND_TSAN=ON -DZBLEND_REQUIRE_ALL=ON
+	@cmake --build $(TSAN_BUILD) -j $(JOBS)
+	ctest --test-dir $(TSAN_BUILD) --output-on-failure -j $(JOBS)
 
 # The regression runner (docs/regressions.md): a group of tb/regressions.json on JOBS local
 # processes; JUnit XML, HTML summary, failing tests again with waves. make test runs smoke.
@@ -201,4 +221,4 @@ lint: setup ## Verilator lint (-Wall) and Icarus elaboration of the RTL for ever
 	@scripts/lint_rtl.sh --all
 
 clean: ## Remove build trees and outputs
-	rm -rf $(BUILD) $(ASAN_BUILD) $(COV_BUILD) $(FUZZ_BUILD) out
+	rm -rf $(BUILD) $(ASAN_BUILD) $(TSAN_BUILD) $(COV_BUILD) $(FUZZ_BUILD) out

@@ -57,6 +57,7 @@ set(ZBLEND_RTL_DEFINES ZBLEND_RTL_DEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS}
 set(ZBLEND_VERILATOR_OPT -O3 --x-assign fast --x-initial fast CACHE STRING
     "Verilator optimisation options of the RTL model")
 set(ZBLEND_VERILATOR_THREADS 1 CACHE STRING "Verilator --threads of the RTL model")
+list(APPEND ZBLEND_RTL_DEFINES ZBLEND_VERILATOR_THREADS=${ZBLEND_VERILATOR_THREADS})
 set(ZBLEND_VERILATOR_OPT_FAST "" CACHE STRING "C++ flags added to the model's hot code")
 
 # zblend_verilate(TARGET PREFIX P DIRECTORY D [SYSTEMC] [BUG] [COVERAGE] [TRACE]

@@ -5,8 +5,8 @@
 
 #if !defined(ZBLEND_RTL_DEPTH_BITS) || !defined(ZBLEND_RTL_COV_SAMPLES) || !defined(ZBLEND_RTL_TILE) || \
     !defined(ZBLEND_RTL_WINDOW) || !defined(ZBLEND_RTL_BEAT) || !defined(ZBLEND_RTL_ACC_BITS) || \
-    !defined(ZBLEND_RTL_REV_BITS) || !defined(ZBLEND_RTL_WEIGHT_BITS)
-#error "ZBLEND_RTL_DEPTH_BITS, _COV_SAMPLES, _TILE, _WINDOW, _BEAT, _ACC_BITS, _REV_BITS and _WEIGHT_BITS come from CMake: link zbrtl_common"
+    !defined(ZBLEND_RTL_REV_BITS) || !defined(ZBLEND_RTL_WEIGHT_BITS) || !defined(ZBLEND_VERILATOR_THREADS)
+#error "ZBLEND_RTL_DEPTH_BITS, _COV_SAMPLES, _TILE, _WINDOW, _BEAT, _ACC_BITS, _REV_BITS, _WEIGHT_BITS and ZBLEND_VERILATOR_THREADS come from CMake: link zbrtl_common"
 #endif
 
 #include "rop/fixed.h"
@@ -21,5 +21,6 @@ constexpr unsigned kRtlWindow = ZBLEND_RTL_WINDOW;           // WINDOW: issue wi
 constexpr int kRtlBeat = ZBLEND_RTL_BEAT;                    // BEAT: tile port pixels per clock
 // ACC_BITS, REV_BITS, WEIGHT_BITS: the accumulate blend's widths (docs/datapath.md "7.").
 constexpr WboitFormat kRtlWboit{ZBLEND_RTL_ACC_BITS, ZBLEND_RTL_REV_BITS, ZBLEND_RTL_WEIGHT_BITS};
+constexpr unsigned kVerilatorThreads = ZBLEND_VERILATOR_THREADS;  // the model's --threads
 
 }  // namespace zb

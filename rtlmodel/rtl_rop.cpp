@@ -3,6 +3,8 @@
 #include <atomic>
 #include <filesystem>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <type_traits>
 #include <stdexcept>
 #include <string>
@@ -54,6 +56,21 @@ extern "C" const char* __lsan_default_suppressions() { return "leak:Verilated::c
 #endif
 
 namespace zb {
+namespace {
+
+// Verilator 5.006 keeps the context a thread set last in a plain static pointer
+// (Verilated::lastContextp), which a VerilatedContext's constructor, a model's (its symbol
+// table's) and every Verilated::threadContextp call write. Models on several threads
+// (tile-parallel models, the lab's scenes) are made, unmade and given their contexts under this
+// one lock, so they do not race on it.
+std::mutex context_mutex;
+
+void use_context(VerilatedContext* ctx) {
+  const std::lock_guard<std::mutex> lock(context_mutex);
+  Verilated::threadContextp(ctx);
+}
+
+}  // namespace
 
 static_assert(VParams::TILE_W == kRtlTileW, "tb mirror of TILE_W disagrees with the RTL");
 static_assert(VParams::TILE_H == kRtlTileH, "tb mirror of TILE_H disagrees with the RTL");
@@ -224,8 +241,12 @@ struct Sim {
   // `path`: an FST of cycles [from, to] when set.
   Sim(const std::string& path, const RtlOptions& o, CoverageTotals* totals = nullptr,
       uint64_t from = 0, uint64_t to = std::numeric_limits<uint64_t>::max())
-      : ctx(std::make_unique<VerilatedContext>()), fst_path(path), coverage(totals),
-        dump_from(from), dump_to(to) {
+      : fst_path(path), coverage(totals), dump_from(from), dump_to(to) {
+    std::unique_lock<std::mutex> lock(context_mutex);
+    ctx = std::make_unique<VerilatedContext>();
+    // The model's threads: Verilator's default (every core) would start an idle thread pool
+    // beside each of the tile-parallel models.
+    ctx->threads(kVerilatorThreads);
     if (!path.empty()) {
       probe_sink = std::make_unique<ProbeSink>(o.retire_sink, wave);
       monitor = std::make_unique<RetireMonitor>(*probe_sink);
@@ -243,6 +264,9 @@ struct Sim {
       const std::filesystem::path p(path);
       if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
       probe = std::make_unique<VProbe>(ctx.get(), "tb");
+    }
+    lock.unlock();
+    if (!path.empty()) {
       fst = std::make_unique<VerilatedFstC>();
       top->trace(fst.get(), 99);
       probe->trace(fst.get(), 99);
@@ -268,7 +292,7 @@ struct Sim {
   ~Sim() {
     // Verilator 5.006 erases a model's scopes through the thread's current context: make it
     // this model's, or destroying a model after another context came and went deadlocks.
-    Verilated::threadContextp(ctx.get());
+    use_context(ctx.get());
     top->final();
     add_coverage();
     if (fst && fst->isOpen()) {
@@ -280,6 +304,8 @@ struct Sim {
       }
     }
     fst.reset();
+    const std::lock_guard<std::mutex> lock(context_mutex);
+    Verilated::threadContextp(ctx.get());
     probe.reset();
     top.reset();
   }
@@ -790,6 +816,7 @@ PassStats RtlRop::end_pass() {
                       ios[j], m.binned.data() + b, e - b, m.tile_seed(m.pass_no, tile),
                       m.accepted.data(), m.runs[j], tile_stats[j]);
   };
+  prepare_stores(m.fb, m.state);  // here, not in a tile's store: the tiles run concurrently
   // Each model takes the next tile; the tiles touch disjoint pixels of fb and of accepted.
   // One model runs on this thread, in tile order. A stop (the retire sink's) lets the running
   // tiles finish, so the tiles that ran are the first `ran`, whole.
@@ -800,7 +827,7 @@ PassStats RtlRop::end_pass() {
   std::atomic<bool> failed{false}, stopped{false};
   run_workers(n, [&](int w) {
     Sim& s = w == 0 ? m.sim : *m.helpers[size_t(w - 1)];
-    Verilated::threadContextp(s.ctx.get());
+    use_context(s.ctx.get());
     try {
       for (size_t j; !failed && !stopped && (j = next++) < touched.size();)
         if (!run(s, j)) stopped = true;
@@ -809,7 +836,7 @@ PassStats RtlRop::end_pass() {
       throw;
     }
   });
-  Verilated::threadContextp(m.sim.ctx.get());
+  use_context(m.sim.ctx.get());
   const size_t ran = std::min(next.load(), touched.size());
   m.runs.resize(ran);
   // One model's cycles: the tiles back to back in tile order, from where the last pass ended.
@@ -868,7 +895,7 @@ Framebuffer RtlRop::replay_tile(const Framebuffer& before, int x0, int y0,
   // The replay's context goes away with it: give the thread back the main model's context.
   struct RestoreContext {
     VerilatedContext* ctx;
-    ~RestoreContext() { Verilated::threadContextp(ctx); }
+    ~RestoreContext() { use_context(ctx); }
   } restore{m.sim.ctx.get()};
   // The run already judged these writes: the replay's monitor only names them in the probe,
   // with the golden writes the run's sink holds.

@@ -77,8 +77,21 @@ BeatWords TileSweep::load(const Framebuffer& fb, int k) const {
   return w;
 }
 
+void prepare_stores(Framebuffer& fb, const RopState& s) {
+  if (planes_written(s) & kPlaneAccum) fb.touch_accum();
+}
+
 void TileSweep::store(const BeatWords& w, uint8_t planes, Framebuffer& fb, int k) const {
-  if (planes & kPlaneAccum) fb.touch_accum();
+  const size_t n = size_t(fb.width) * size_t(fb.height);
+  const bool whole = fb.color.size() == n && fb.depth.size() == n && fb.coverage.size() == n &&
+                     (!(planes & kPlaneAccum) || (fb.accum.size() == n && fb.reveal.size() == n));
+  if (!whole || x0_ + w_ > fb.width || y0_ + h_ > fb.height)
+    throw std::logic_error(
+        "tile store: tile (" + std::to_string(x0_) + "," + std::to_string(y0_) + ") beat " +
+        std::to_string(k) + " found the frame's planes missing or replaced (" +
+        std::to_string(fb.width) + "x" + std::to_string(fb.height) +
+        (fb.accum.empty() ? ", no accumulation planes" : "") +
+        "): a host-side fault, not the RTL's");
   for (int l = 0; l < kRtlBeat; ++l) {
     const int64_t i = pixel(fb, k, l);
     if (i < 0) continue;

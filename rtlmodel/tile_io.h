@@ -84,6 +84,10 @@ struct BeatWords {
   const std::array<uint32_t, kRtlBeat>& operator[](size_t p) const { return words[p]; }
 };
 
+// Allocates the planes a pass in state `s` stores (the accumulation planes are lazy), on the
+// thread that dispatches its tiles, before any tile runs.
+void prepare_stores(Framebuffer& fb, const RopState& s);
+
 // The fast clear's beat: each plane's clear value in lane 0.
 BeatWords clear_beat(const TileIo& io);
 
@@ -97,7 +101,9 @@ class TileSweep {
   // Beat k's words from `fb`: lanes beyond the frame's edge 0.
   BeatWords load(const Framebuffer& fb, int k) const;
   // Beat k's words of `planes` (colour, depth, coverage, accumulation) into `fb`, lanes within
-  // the frame.
+  // the frame. Tiles store on several threads at once, so a store allocates nothing: a plane
+  // missing or of another size (the frame replaced under the pass) is std::logic_error, a fault
+  // of the host, never reported as the RTL's mismatch. prepare_stores allocates them first.
   void store(const BeatWords& words, uint8_t planes, Framebuffer& fb, int k) const;
   // Beat k's lane l in the frame (its index in `fb`'s planes), or -1 beyond its edge.
   int64_t pixel(const Framebuffer& fb, int k, int l) const;

@@ -1,40 +1,54 @@
 #!/usr/bin/env bash
 # Installs the Debian packages zblend needs, only those missing. Quiet when all are present.
-# Usage: setup.sh [synth|profile|view]   (synth: also nextpnr-ice40 and IceStorm, for `make
-# synth`; profile: also perf, for `make profile-rtl`; view: Chromium and ImageMagick, to look at
-# HTML reports and waves headless and take screenshots). Always in: Yosys, its yosys-smtbmc and
-# z3 (`make test` runs the CI-sized `make formal`); GNU parallel, Slurm and munge, and OpenSSH's
-# server and iproute2 (the regression runner's tests, docs/regressions.md: the ssh test starts its
-# own sshds in network namespaces, scripts/ssh_hosts.sh); GTKWave and Xvfb (the waves' test);
-# Icarus Verilog (the RTL's second simulator, docs/rtl.md "Simulators"; the conformance kit);
-# OpenSSL's libcrypto (the conformance signatures' SHA-256).
+# Usage: setup.sh [run|test|synth|profile|view]
+#   run:     what `make run` needs to build zblend and render: a compiler, CMake, Verilator and
+#            the libraries zblend links (GLM, stb, CLI11, nlohmann-json, fmt, OpenSSL's
+#            libcrypto for the conformance signatures' SHA-256, tinyobjloader, tinygltf).
+#   test:    (the default) run's, and what `make test` and the other targets use: GoogleTest and
+#            Google Benchmark; Icarus Verilog (the RTL's second simulator, the conformance kit);
+#            SystemC; clang (libFuzzer, LeakSanitizer's runtime); the test scenes; OpenGL on
+#            Mesa (the oracle); matplotlib (the lab's charts); Yosys, yosys-smtbmc and z3 (the
+#            CI-sized formal proofs and mutants); GNU parallel, Slurm and munge, OpenSSH's
+#            server and iproute2 (the regression runner's tests, docs/regressions.md: the ssh
+#            test starts its own sshds in network namespaces); GTKWave and Xvfb (the waves'
+#            test).
+#   synth:   test's, and nextpnr-ice40 and IceStorm (`make synth`).
+#   profile: test's, and perf (`make profile-rtl`).
+#   view:    test's, and Chromium and ImageMagick (HTML reports and waves, headless, screenshots).
 # A system sshd that the openssh-server package starts on install is stopped and disabled again:
 # nothing here needs it, and this machine should not gain an open ssh port from a setup script.
 set -euo pipefail
 
+group=${1:-test}
 packages=(
   build-essential cmake make
   libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev libfmt-dev libssl-dev
-  libgtest-dev libbenchmark-dev
-  verilator iverilog zlib1g-dev libsystemc-dev
-  clang libclang-rt-14-dev
-  libtinyobjloader-dev libtinygltf-dev assimp-testmodels glmark2-data
-  libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
-  python3-matplotlib
-  yosys z3
-  parallel slurm-wlm munge openssh-server openssh-client iproute2
-  gtkwave xvfb xauth
+  verilator zlib1g-dev
+  libtinyobjloader-dev libtinygltf-dev
 )
-if [[ ${1:-} == synth ]]; then
-  packages+=(nextpnr-ice40 fpga-icestorm)
-elif [[ ${1:-} == profile ]]; then
-  packages+=(linux-perf)
-elif [[ ${1:-} == view ]]; then
-  packages+=(chromium imagemagick)
-elif [[ $# -gt 0 ]]; then
-  echo "setup: error: unknown group '$1' (choose synth, profile or view)" >&2
-  exit 2
+if [[ $group != run ]]; then
+  packages+=(
+    libgtest-dev libbenchmark-dev
+    iverilog libsystemc-dev
+    clang libclang-rt-14-dev
+    assimp-testmodels glmark2-data
+    libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
+    python3-matplotlib
+    yosys z3
+    parallel slurm-wlm munge openssh-server openssh-client iproute2
+    gtkwave xvfb xauth
+  )
 fi
+case $group in
+  run | test) ;;
+  synth) packages+=(nextpnr-ice40 fpga-icestorm) ;;
+  profile) packages+=(linux-perf) ;;
+  view) packages+=(chromium imagemagick) ;;
+  *)
+    echo "setup: error: unknown group '$group' (choose run, test, synth, profile or view)" >&2
+    exit 2
+    ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

@@ -191,6 +191,7 @@ PassStats ZbRtlSc::run_pass() {
   const uint64_t start = cycles_;
   const sc_core::sc_time start_time = sc_core::sc_time_stamp();
   bin_by_tile(frags_.data(), frags_.size(), fb_.width, fb_.height, kRtlTileW, kRtlTileH, bins_);
+  prepare_stores(fb_, state_value_);
   PassStats stats;
   for (size_t t = 0; t + 1 < bins_.first.size(); ++t)
     if (bins_.first[t] != bins_.first[t + 1])

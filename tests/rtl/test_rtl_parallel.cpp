@@ -47,6 +47,8 @@ void expect_same(const ModelRun& a, const ModelRun& b, const std::string& what) 
   EXPECT_EQ(a.fb.depth, b.fb.depth);
   EXPECT_EQ(a.fb.coverage, b.fb.coverage);
   EXPECT_EQ(a.fb.peel, b.fb.peel);
+  EXPECT_EQ(a.fb.accum, b.fb.accum);
+  EXPECT_EQ(a.fb.reveal, b.fb.reveal);
   ASSERT_EQ(a.passes.size(), b.passes.size());
   for (size_t p = 0; p < a.passes.size(); ++p) {
     EXPECT_EQ(a.passes[p].fragments_in, b.passes[p].fragments_in) << "pass " << p;
@@ -108,7 +110,8 @@ TEST_P(RtlParallel, OneTwoThreeModelsAgree) {
 
 INSTANTIATE_TEST_SUITE_P(Methods, RtlParallel,
                          ::testing::Values(Method{"three-pass", 4}, Method{"depth-peel-2", 1},
-                                           Method{"hidden-line-dim", 4}),
+                                           Method{"hidden-line-dim", 4},
+                                           Method{"wboit", 4}),
                          [](const auto& info) {
                            std::string n = info.param.name;
                            for (char& c : n)

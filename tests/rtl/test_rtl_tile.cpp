@@ -196,6 +196,27 @@ TEST(TilePort, RefusesAnotherAccumulationFormat) {
   }
 }
 
+// Tiles store on several threads at once, so a store allocates nothing: planes the pass did not
+// prepare, or a frame replaced under it, are the host's fault (std::logic_error), not a
+// mismatch the RTL would be blamed for.
+TEST(TileSweep, StoreRefusesPlanesNotPrepared) {
+  Framebuffer fb(kW, kH, kRtlDepthBits, Rgba8{0, 0, 0, 255}, kRtlCoverageSamples, kRtlWboit);
+  const TileSweep sweep(fb.width, fb.height, 0, 0);
+  BeatWords w{};
+  w.accum[0] = AccumWord{{1, 2, 3, 4}, 5};
+  ASSERT_TRUE(fb.accum.empty());
+  EXPECT_THROW(sweep.store(w, kPlaneAccum, fb, 0), std::logic_error);
+  EXPECT_TRUE(fb.accum.empty()) << "a store must not allocate the planes";
+  RopState accumulate;
+  accumulate.blend = BlendMode::kAccumulate;
+  prepare_stores(fb, accumulate);
+  sweep.store(w, kPlaneAccum, fb, 0);
+  EXPECT_EQ(fb.accum_at(0)[0], 1u);
+  EXPECT_EQ(fb.reveal_at(0), 5u);
+  fb.color.clear();  // the frame replaced under the pass
+  EXPECT_THROW(sweep.store(w, kPlaneColor, fb, 0), std::logic_error);
+}
+
 TEST(TileStates, PlanesFollowThePassState) {
   RopState s;
   EXPECT_EQ(planes_read(s), kPlaneColor | kPlaneDepth);
