@@ -892,6 +892,7 @@ Framebuffer RtlRop::replay_tile(const Framebuffer& before, int x0, int y0,
   if (!found) throw std::invalid_argument("rtl replay: the last pass did not touch that tile");
   const size_t tile = size_t(y0 / kRtlTileH) * m.tiles_x() + x0 / kRtlTileW;
   Framebuffer out = before;
+  prepare_stores(out, m.state);
   // The replay's context goes away with it: give the thread back the main model's context.
   struct RestoreContext {
     VerilatedContext* ctx;
