@@ -7,7 +7,7 @@ ZBLEND     := $(BUILD)/zblend
 RUN_SIZE   ?= --width 640 --height 480
 
 .DEFAULT_GOAL := build
-.PHONY: help setup build run test test-release test-asan test-tsan regress conformance mutate bench bench-verilator profile-rtl synth formal systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
+.PHONY: help setup full-tree build run test test-release test-asan test-tsan regress conformance mutate bench bench-verilator profile-rtl synth formal systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
 
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | awk -F'\t' '{printf "%-16s %s\n", $$1, $$2}'
@@ -18,11 +18,13 @@ setup: ## Install the missing Debian packages the tests and tools use (apt-get; 
 $(BUILD)/CMakeCache.txt:
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 
-# Every target of the tree (a tree that `make run` configured with zblend's alone is configured
-# again, whole).
-build: setup $(BUILD)/CMakeCache.txt ## Build the zblend command, tests and benchmarks
+# The tree with every target: one that `make run` configured with zblend's alone is configured
+# again, whole.
+full-tree: setup $(BUILD)/CMakeCache.txt
 	@! grep -q '^ZBLEND_RUN_ONLY:BOOL=ON' $(BUILD)/CMakeCache.txt || \
 	  cmake -S . -B $(BUILD) -DZBLEND_RUN_ONLY=OFF >/dev/null
+
+build: full-tree ## Build the zblend command, tests and benchmarks
 	@cmake --build $(BUILD) -j $(JOBS)
 	@echo "zblend: $(ZBLEND)"
 
@@ -78,7 +80,7 @@ profile-rtl: ## Where the RTL simulation's time goes, per module (perf, --prof-c
 bench-verilator: setup ## Verilator option sets measured against each other: out/bench/verilator_options.csv
 	@scripts/verilator_options.sh -j $(JOBS)
 
-systemc: setup $(BUILD)/CMakeCache.txt ## Golden model and RTL as SystemC modules, co-simulated on cad (docs/systemc.md)
+systemc: full-tree ## Golden model and RTL as SystemC modules, co-simulated on cad (docs/systemc.md)
 	@cmake --build $(BUILD) -j $(JOBS) --target zblend_systemc
 	$(BUILD)/zblend_systemc --scene cad --method all $(RUN_SIZE)
 
