@@ -1,6 +1,6 @@
 // The built-in scenes and their registry.
 //
-// Every scene is chosen to make some transparency method fail (DESIGN.md, "The methods"):
+// Every scene is chosen to make some transparency method fail (docs/scenes.md, "The suite"):
 // transparent objects are never submitted back to front, and closed transparent shells show
 // their back faces through their front faces.
 #include "builtin_scenes.h"

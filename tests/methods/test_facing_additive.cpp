@@ -91,7 +91,7 @@ Rgba8 run(const std::vector<FLayer>& layers) {
   return r.framebuffer.color_at(0, 0);
 }
 
-// Additive: min(255, d + m(s, a)) per channel (DESIGN.md).
+// Additive: min(255, d + m(s, a)) per channel (docs/datapath.md "3. Blend").
 Rgba8 add(Rgba8 s, Rgba8 d) {
   auto ch = [&](uint32_t sc, uint32_t dc) { return uint8_t(std::min(255u, dc + m_spec(sc, s.a))); };
   return {ch(s.r, d.r), ch(s.g, d.g), ch(s.b, d.b), ch(s.a, d.a)};

@@ -7,7 +7,7 @@
 
 namespace {
 
-// DESIGN.md's m(x, y) = (t + (t >> 8) + 0x80) >> 8, t = x*y, written with divisions.
+// docs/datapath.md's m(x, y) = (t + (t >> 8) + 0x80) >> 8, t = x*y, written with divisions.
 uint32_t m_spec(uint32_t x, uint32_t y) {
   const uint32_t t = x * y;
   return (t + t / 256 + 128) / 256;

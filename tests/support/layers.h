@@ -9,10 +9,10 @@
 
 namespace zbtest {
 
-// DESIGN.md's m(x, y) = (t + (t >> 8) + 0x80) >> 8, t = x*y, written with divisions.
+// docs/datapath.md's m(x, y) = (t + (t >> 8) + 0x80) >> 8, t = x*y, written with divisions.
 inline uint32_t m_spec(uint32_t x, uint32_t y) { return (x * y + x * y / 256 + 128) / 256; }
 
-// Source-over with straight alpha, every channel (the rule of DESIGN.md, "Numerics").
+// Source-over with straight alpha, every channel (docs/datapath.md "3. Blend").
 inline zb::Rgba8 over(zb::Rgba8 s, zb::Rgba8 d) {
   auto ch = [&](uint32_t sc, uint32_t dc) {
     return uint8_t(std::min(255u, m_spec(sc, s.a) + m_spec(dc, 255u - s.a)));
