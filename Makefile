@@ -88,8 +88,9 @@ synth: ## Yosys and nextpnr-ice40 on the datapath: cells, LUTs, RAMs, FFs, max c
 	@scripts/setup.sh synth
 	@scripts/synth.sh
 
-formal: setup ## Formal proofs, full set (yosys, yosys-smtbmc + z3, yosys sat): out/formal/ (make test runs --ci)
+formal: setup ## Formal proofs, full set, and the RTL's two views proven equal: out/formal/, out/equiv/ (make test runs --ci)
 	@scripts/formal.sh --out out/formal
+	@python3 scripts/equiv.py --out out/equiv
 
 SOAK_FRAGMENTS ?= 50000000
 

@@ -246,7 +246,9 @@ void run_lab(const LabCommandOptions& o) {
   if (!o.quiet)
     fmt::print(stderr, "zblend lab: {} methods x {} scenes at {}x{}, {}, {} thread{}\n",
                methods.size(), scenes.size(), o.width, o.height,
-               o.rtl ? "golden model and RTL" : "golden model only", o.jobs, o.jobs > 1 ? "s" : "");
+               o.rtl ? fmt::format("golden model and RTL ({})", RtlRop::build())
+                     : std::string("golden model only"),
+               o.jobs, o.jobs > 1 ? "s" : "");
   const auto start = Clock::now();
   const std::vector<lab::SceneRun> runs = run_scenes(scenes, lo, o);
 

@@ -61,7 +61,6 @@ struct RenderOptions {
   double backpressure = 0;
   int64_t seed = 1;
   std::string waves;
-  bool assertions = true;
   bool lockstep = true;
   std::string background;
   int threads = default_threads();  // golden: render_frame's workers; RTL: models side by side
@@ -72,7 +71,7 @@ struct RenderOptions {
 };
 
 // The options that only the RTL backends use.
-constexpr const char* kRtlOnly[] = {"--backpressure", "--seed", "--waves", "--no-assertions"};
+constexpr const char* kRtlOnly[] = {"--backpressure", "--seed", "--waves"};
 
 double ms_since(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
@@ -128,7 +127,6 @@ RtlBackend make_rtl_backend(const RenderOptions& o, const PassPlan& plan) {
   rtl.seed = static_cast<uint64_t>(o.seed);
   rtl.trace_path = o.waves;
   rtl.threads = o.threads;
-  rtl.assertions = o.assertions;
   RtlBackend b;
   if (o.backend == BackendKind::kRtl) {
     auto r = std::make_unique<RtlRop>(rtl);
@@ -197,18 +195,22 @@ Scene load_scene(const RenderOptions& o) {
 }
 
 // The first line: the scene's triangles and those set up after clipping (more where clipping
-// splits one, fewer where it drops one), which the camera and frame size change.
+// splits one, fewer where it drops one), which the camera and frame size change; and the RTL's
+// build where it runs.
 void print_header(const RenderOptions& o, const Scene& scene, size_t drawn,
                   const std::optional<RasterizedScene>& rs, double raster_ms) {
   const std::string head = fmt::format("{}: {} triangles in the scene, {} after clipping",
                                        o.frame.scene, scene.triangle_count(), drawn);
+  const std::string backend =
+      o.backend == BackendKind::kGolden
+          ? std::string(backend_name(o.backend))
+          : fmt::format("{} (RTL: {})", backend_name(o.backend), RtlRop::build());
   if (rs)
     fmt::print(stderr, "{}, {} fragments at {}x{} ({:.1f} ms geometry and raster), backend {}\n",
-               head, rs->fragments.size(), o.frame.width, o.frame.height, raster_ms,
-               backend_name(o.backend));
+               head, rs->fragments.size(), o.frame.width, o.frame.height, raster_ms, backend);
   else
     fmt::print(stderr, "{}, at {}x{}, backend {}\n", head, o.frame.width, o.frame.height,
-               backend_name(o.backend));
+               backend);
 }
 
 // The fragments that reached the frame: all of them where they were stored, else the most any
@@ -364,9 +366,6 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--seed", o->seed, "RTL: seed of the back-pressure pattern")
       ->capture_default_str();
   cmd->add_option("--waves", o->waves, "RTL: FST waveform of the whole run");
-  cmd->add_flag("!--no-assertions", o->assertions,
-                "RTL: the model's assertions off (a third faster; the comparison with the golden "
-                "model, --backend both, stays)");
   cmd->add_flag("!--no-lockstep", o->lockstep,
                 "--backend both: compare the frames after each pass only, not every write at its "
                 "cycle");

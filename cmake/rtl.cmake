@@ -60,17 +60,23 @@ set(ZBLEND_VERILATOR_THREADS 1 CACHE STRING "Verilator --threads of the RTL mode
 list(APPEND ZBLEND_RTL_DEFINES ZBLEND_VERILATOR_THREADS=${ZBLEND_VERILATOR_THREADS})
 set(ZBLEND_VERILATOR_OPT_FAST "" CACHE STRING "C++ flags added to the model's hot code")
 
-# zblend_verilate(TARGET PREFIX P DIRECTORY D [SYSTEMC] [BUG] [COVERAGE] [TRACE]
+# zblend_verilate(TARGET PREFIX P DIRECTORY D [SYSTEMC] [BUG] [FAST] [COVERAGE] [TRACE]
 #                 [MUTANTS NETLIST]): a static library TARGET holding zb_rop Verilated with the
-# widths above. BUG adds the deliberate defects the checkers must catch, each switched on by a
+# widths above: the assertion build (--assert: SVA and unique-case checks), or with FAST the
+# speed build (no assertion code at all: ZB_NO_SVA, no --assert; docs/rtl.md "Two builds"). BUG adds the deliberate defects the checkers must catch, each switched on by a
 # plusarg (+zb_bug_window, +zb_bug_accum; the blend's without either); SYSTEMC builds it with --sc. MUTANTS builds Yosys's
 # netlist of zb_rop's mutants (mutation/CMakeLists.txt) in its wrapper instead of rtl/: a
 # generated netlist, so no -Wall, and no assertions (Yosys drops them). TRACE adds FST tracing
 # and the waveform probe, model PREFIX_probe.
 function(zblend_verilate target)
-  cmake_parse_arguments(V "SYSTEMC;BUG;COVERAGE;TRACE" "PREFIX;DIRECTORY;MUTANTS" "" ${ARGN})
-  set(args --assert ${ZBLEND_VERILATOR_OPT} -Wall ${ZBLEND_RTL_PARAMS})
+  cmake_parse_arguments(V "SYSTEMC;BUG;FAST;COVERAGE;TRACE" "PREFIX;DIRECTORY;MUTANTS" "" ${ARGN})
+  set(args --assert ${ZBLEND_VERILATOR_OPT} -Wall +define+ZB_SIM_FAST ${ZBLEND_RTL_PARAMS})
   set(sources ${PROJECT_SOURCE_DIR}/rtlmodel/zb_rop_public.vlt ${ZBLEND_RTL_WAIVERS} ${ZBLEND_RTL})
+  if(V_FAST)
+    # Signals only the assertions read are unused here: the assertion build lints them.
+    set(args ${ZBLEND_VERILATOR_OPT} -Wall -Wno-UNUSEDSIGNAL -Wno-UNUSEDPARAM +define+ZB_NO_SVA +define+ZB_SIM_FAST
+        ${ZBLEND_RTL_PARAMS})
+  endif()
   if(V_MUTANTS)
     set(args ${ZBLEND_VERILATOR_OPT} -Wno-fatal -Wno-lint -Wno-style -Wno-UNOPTFLAT
         ${ZBLEND_RTL_PARAMS})

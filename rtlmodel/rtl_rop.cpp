@@ -32,6 +32,13 @@
 using VModel = Vzb_rop_bug;
 using VParams = Vzb_rop_bug_zb_rop;
 using VProbe = Vzb_rop_bug_probe;
+#elif defined(ZB_RTL_FAST)
+#include "Vzb_rop_fast.h"
+#include "Vzb_rop_fast_probe.h"
+#include "Vzb_rop_fast_zb_rop.h"
+using VModel = Vzb_rop_fast;
+using VParams = Vzb_rop_fast_zb_rop;
+using VProbe = Vzb_rop_fast_probe;
 #elif defined(ZB_RTL_MUT)
 #include "Vzb_rop_mut.h"
 #include "Vzb_rop_mut_probe.h"
@@ -742,6 +749,18 @@ struct RtlRop::Impl {
     }
   }
 };
+
+const char* RtlRop::build() {
+#if defined(ZB_RTL_FAST)
+  return "speed build (no assertions)";
+#elif defined(ZB_RTL_MUT)
+  return "mutant netlist (no assertions)";
+#elif defined(ZB_RTL_BUG)
+  return "assertion build with injected defects";
+#else
+  return "assertion build";
+#endif
+}
 
 RtlRop::RtlRop(RtlOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {}
 RtlRop::~RtlRop() = default;

@@ -5,16 +5,17 @@
 # three-pass 640x480 on one model with perf, and sums the samples by module, by Verilator
 # region (ico: logic on input ports, every evaluation; nba: at the clock edge) and by host code.
 # Writes out/profile/modules.csv and prints the table.
-# Usage: scripts/profile_rtl.sh [-j JOBS] [-a 0|1]   (-a: the model's assertions, default 1)
+# Usage: scripts/profile_rtl.sh [-j JOBS] [-a 0|1]
+#   -a 1: the assertion build (zblend_bench_rtl_assert); 0, the default: the speed build
 set -euo pipefail
 
 jobs=$(nproc)
-assertions=1
+assertions=0
 while getopts "j:a:h" opt; do
   case $opt in
     j) jobs=$OPTARG ;;
     a) assertions=$OPTARG ;;
-    *) sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'; [[ $opt == h ]] && exit 0 || exit 2 ;;
+    *) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; [[ $opt == h ]] && exit 0 || exit 2 ;;
   esac
 done
 [[ $assertions == 0 || $assertions == 1 ]] || { echo "profile_rtl: -a takes 0 or 1" >&2; exit 2; }
@@ -27,10 +28,12 @@ mkdir -p "$out"
 echo "profile_rtl: building zblend_bench_rtl with --prof-cfuncs ($dir)" >&2
 cmake -S "$root" -B "$dir" -DCMAKE_BUILD_TYPE=Release \
   "-DZBLEND_VERILATOR_OPT=-O3;--x-assign;fast;--x-initial;fast;--prof-cfuncs" >/dev/null
-cmake --build "$dir" -j "$jobs" --target zblend_bench_rtl >/dev/null
-filter="BM_CadThreePassRtl/w:640/h:480/models:1/assertions:$assertions"
-echo "profile_rtl: perf record of $filter" >&2
-perf record -q -o "$out/perf.data" "$dir/zblend_bench_rtl" --benchmark_filter="$filter" \
+bench=zblend_bench_rtl
+[[ $assertions == 0 ]] || bench=zblend_bench_rtl_assert
+cmake --build "$dir" -j "$jobs" --target $bench >/dev/null
+filter="BM_CadThreePassRtl/w:640/h:480/models:1"
+echo "profile_rtl: perf record of $bench $filter" >&2
+perf record -q -o "$out/perf.data" "$dir/$bench" --benchmark_filter="$filter" \
   --benchmark_min_time=2 >/dev/null 2>&1
 perf report -q -i "$out/perf.data" --no-children --sort symbol 2>/dev/null |
   /usr/bin/python3 -c '

@@ -11,6 +11,7 @@
 #include <fmt/core.h>
 
 #include "code_coverage.h"
+#include "rtl_rop.h"
 #include "commands.h"
 #include "suites.h"
 #include "io/trace.h"
@@ -243,6 +244,7 @@ int run(const Config& config, const Args& a, const std::vector<const Suite*>& ch
     coverage = CoverageTotals(a.coverage_out + ".part");
     c.coverage = &coverage;
   }
+  if (!a.quiet) std::fprintf(stderr, "zblend_tb: RTL %s\n", RtlRop::build());
   const int rc = a.replay.empty() ? run_suites(c, chosen, a.quiet) : run_replay(c, a.replay);
   if (!a.coverage_out.empty()) {
     try {
