@@ -69,9 +69,13 @@ REGRESS_ARGS ?=
 regress: build ## Run GROUP (default nightly) of tb/regressions.json: out/regress/GROUP/summary.html, junit.xml
 	python3 scripts/regress.py run $(GROUP) -j $(JOBS) --build $(BUILD) --out out/regress/$(GROUP) $(REGRESS_ARGS)
 
-bench: build ## Benchmarks: datapath, golden vs llvmpipe, memory, RTL, cost growth: out/bench/
-	@cmake --build $(BUILD) -j $(JOBS) --target zblend_bench zblend_bench_rtl zblend_window_sweep
-	@/usr/bin/python3 scripts/bench.py --build $(BUILD) --out out/bench
+# The RTL's speed is measured beside BASELINE's build (built once in build-baseline; empty: none).
+BASELINE ?= d91dc3f
+
+bench: build ## Benchmarks: datapath, golden vs llvmpipe, memory, RTL (beside BASELINE's), cost growth: out/bench/
+	@cmake --build $(BUILD) -j $(JOBS) --target zblend_bench zblend_bench_rtl zblend_bench_rtl_assert zblend_window_sweep
+	@$(if $(BASELINE),scripts/bench_baseline.sh $(BASELINE) build-baseline -j $(JOBS))
+	@/usr/bin/python3 scripts/bench.py --build $(BUILD) --out out/bench $(if $(BASELINE),--baseline build-baseline/build)
 
 profile-rtl: ## Where the RTL simulation's time goes, per module (perf, --prof-cfuncs): out/profile/modules.csv
 	@scripts/setup.sh profile
@@ -226,4 +230,4 @@ lint: setup ## Verilator lint (-Wall) and Icarus elaboration of the RTL for ever
 	@scripts/lint_rtl.sh --all
 
 clean: ## Remove build trees and outputs
-	rm -rf $(BUILD) $(ASAN_BUILD) $(TSAN_BUILD) $(COV_BUILD) $(FUZZ_BUILD) out
+	rm -rf $(BUILD) $(ASAN_BUILD) $(TSAN_BUILD) build-baseline $(COV_BUILD) $(FUZZ_BUILD) out

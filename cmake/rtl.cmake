@@ -6,6 +6,14 @@ file(GLOB ZBLEND_RTL CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/rtl/*.sv)
 list(REMOVE_ITEM ZBLEND_RTL ${PROJECT_SOURCE_DIR}/rtl/zb_pkg.sv)
 list(PREPEND ZBLEND_RTL ${PROJECT_SOURCE_DIR}/rtl/zb_pkg.sv)
 set(ZBLEND_RTL_WAIVERS ${PROJECT_SOURCE_DIR}/rtl/lint_waivers.vlt)
+# What Verilator builds: the simulation views (docs/rtl.md "Two builds, two views") in place of
+# their synthesis views, rtl/sim/X.sv for rtl/X.sv. Everything else reads ZBLEND_RTL.
+file(GLOB sim_views CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/rtl/sim/*.sv)
+set(ZBLEND_RTL_SIM ${ZBLEND_RTL})
+foreach(view IN LISTS sim_views)
+  get_filename_component(name ${view} NAME)
+  list(TRANSFORM ZBLEND_RTL_SIM REPLACE "^.*/rtl/${name}$" ${view})
+endforeach()
 
 # The widths (docs/sizing.md; `make plan-rtl` builds a tree with those `zblend plan` chooses).
 set(ZBLEND_RTL_DEPTH_BITS 24 CACHE STRING "zb_rop DEPTH_BITS: depth width, 8 to 32")
@@ -70,11 +78,11 @@ set(ZBLEND_VERILATOR_OPT_FAST "" CACHE STRING "C++ flags added to the model's ho
 # and the waveform probe, model PREFIX_probe.
 function(zblend_verilate target)
   cmake_parse_arguments(V "SYSTEMC;BUG;FAST;COVERAGE;TRACE" "PREFIX;DIRECTORY;MUTANTS" "" ${ARGN})
-  set(args --assert ${ZBLEND_VERILATOR_OPT} -Wall +define+ZB_SIM_FAST ${ZBLEND_RTL_PARAMS})
-  set(sources ${PROJECT_SOURCE_DIR}/rtlmodel/zb_rop_public.vlt ${ZBLEND_RTL_WAIVERS} ${ZBLEND_RTL})
+  set(args --assert ${ZBLEND_VERILATOR_OPT} -Wall ${ZBLEND_RTL_PARAMS})
+  set(sources ${PROJECT_SOURCE_DIR}/rtlmodel/zb_rop_public.vlt ${ZBLEND_RTL_WAIVERS} ${ZBLEND_RTL_SIM})
   if(V_FAST)
     # Signals only the assertions read are unused here: the assertion build lints them.
-    set(args ${ZBLEND_VERILATOR_OPT} -Wall -Wno-UNUSEDSIGNAL -Wno-UNUSEDPARAM +define+ZB_NO_SVA +define+ZB_SIM_FAST
+    set(args ${ZBLEND_VERILATOR_OPT} -Wall -Wno-UNUSEDSIGNAL -Wno-UNUSEDPARAM +define+ZB_NO_SVA
         ${ZBLEND_RTL_PARAMS})
   endif()
   if(V_MUTANTS)

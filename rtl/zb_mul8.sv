@@ -5,9 +5,6 @@
 // (V_W <= 8) each stage is one carry chain behind a 2-LUT-level select, short enough for
 // 100 MHz in iCE40 fabric; a wider v chains one more adder in stage 2 per further pair.
 // No reset (data only).
-// Two views (docs/rtl.md "Two views"): with ZB_SIM_FAST (every Verilated model) each pair is one
-// K_W x 4 multiply, which Verilator evaluates without the digit selects' branches; the registers
-// and the final sum are shared, and scripts/equiv.sh proves both views equal.
 module zb_mul8 #(
   parameter int K_W = 8,
   parameter int V_W = 8
@@ -21,26 +18,17 @@ module zb_mul8 #(
 
   localparam int Digits = (V_W + 1) / 2;
   localparam int Pairs  = (Digits + 1) / 2;
+  localparam int PpW    = K_W + 2;   // a selected multiple, below 4k
   localparam int PairW  = K_W + 4;   // a pair, pp[2i] + 4 pp[2i+1], below 16k
   localparam int TW     = K_W + V_W;
 
   logic [2*Digits-1:0]   v;          // v with a zero digit on top when V_W is odd
+  logic [Digits*PpW-1:0] pp;         // the selected multiples
   logic [Pairs*PairW-1:0] pair_d, pair_q;
   logic [TW-1:0]         t_d, t_q;
 
   assign v = (2*Digits)'(v_i);
 
-`ifdef ZB_SIM_FAST
-  // Pair i is k times v's bits [4i, 4i + 4) (two digits; one on top when Digits is odd).
-  for (genvar i = 0; i < Pairs; i++) begin : g_pair
-    localparam int NibW = 2*i + 1 < Digits ? 4 : 2;
-    assign pair_d[PairW*i +: PairW] = PairW'(k_i) * PairW'(v[4*i +: NibW]);
-  end
-  logic unused_k3;  // 3k serves the synthesis view's digit selects
-  assign unused_k3 = ^k3_i;
-`else
-  localparam int PpW = K_W + 2;  // a selected multiple, below 4k
-  logic [Digits*PpW-1:0] pp;     // the selected multiples
   for (genvar j = 0; j < Digits; j++) begin : g_pp
     always_comb begin
       unique case (v[2*j +: 2])
@@ -51,6 +39,7 @@ module zb_mul8 #(
       endcase
     end
   end
+
   for (genvar i = 0; i < Pairs; i++) begin : g_pair
     if (2*i + 1 < Digits) begin : g_two
       assign pair_d[PairW*i +: PairW] = PairW'(pp[PpW*(2*i) +: PpW])
@@ -59,7 +48,6 @@ module zb_mul8 #(
       assign pair_d[PairW*i +: PairW] = PairW'(pp[PpW*(2*i) +: PpW]);
     end
   end
-`endif
 
   always_comb begin
     t_d = '0;

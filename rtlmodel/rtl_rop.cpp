@@ -752,9 +752,9 @@ struct RtlRop::Impl {
 
 const char* RtlRop::build() {
 #if defined(ZB_RTL_FAST)
-  return "speed build (no assertions)";
+  return "speed build, no assertions";
 #elif defined(ZB_RTL_MUT)
-  return "mutant netlist (no assertions)";
+  return "mutant netlist, no assertions";
 #elif defined(ZB_RTL_BUG)
   return "assertion build with injected defects";
 #else

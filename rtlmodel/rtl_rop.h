@@ -77,7 +77,7 @@ class RtlRop final : public Backend {
 
   const char* name() const override { return "rtl"; }
   // Which Verilated build of zb_rop this program links (docs/rtl.md "Two builds"), for its
-  // header line: "speed build (no assertions)" or "assertion build".
+  // header line: "speed build, no assertions" or "assertion build".
   static const char* build();
   using Backend::begin_frame;
   void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,

@@ -1,14 +1,16 @@
 #!/usr/bin/env python3
 """zblend's benchmarks in one run (docs/bench.md): `make bench`.
 
-Usage: bench.py [--build DIR] [--out DIR] [--quick]
+Usage: bench.py [--build DIR] [--out DIR] [--baseline BUILD_DIR] [--quick]
 
 Runs, on this machine, one after another:
   1. the golden datapath alone, fragments per second per blend mode (Google Benchmark);
   2. bunny-glass at 1024x1024, three-pass: the golden model and Mesa llvmpipe, whole frames
      timed in one process (zblend_oracle --time), every timed frame checked bit for bit;
   3. peak resident memory of the golden model, the reference and the RTL on that frame;
-  4. the RTL simulation: fragments per second, fragments per clock, ratio to the golden model;
+  4. the RTL simulation: both builds' cycles per second beside Verilator's ceiling, fragments per
+     clock, CPU time against the golden model's, each beside a baseline commit's build
+     (--baseline, scripts/bench_baseline.sh) run in the same bench;
   5. cost growth: render time against resolution, against triangle count, and with the frame
      growing around an object of fixed size on screen.
 Writes OUT/bench.csv (every figure with its command), OUT/bench.md (the table), OUT/growth.csv
@@ -26,6 +28,7 @@ import subprocess
 import sys
 import time
 
+import bench_rtl
 import bench_scenes
 
 SIZE = 1024
@@ -53,7 +56,11 @@ class Bench:
         return proc.stdout
 
     def run_rss(self, cmd):
-        """Runs cmd; returns its peak RSS in bytes (os.wait4: subprocess would reap it first)."""
+        """Runs cmd; returns its peak RSS in bytes."""
+        return self.run_usage(cmd).ru_maxrss * 1024
+
+    def run_usage(self, cmd):
+        """Runs cmd; returns its resource usage (os.wait4: subprocess would reap it first)."""
         err_path = os.path.join(self.out, "stderr.txt")
         pid = os.fork()
         if pid == 0:
@@ -68,7 +75,7 @@ class Bench:
         if code != 0:
             with open(err_path) as f:
                 sys.exit(f"bench: error: `{shlex.join(cmd)}` exited {code}:\n{f.read()}")
-        return usage.ru_maxrss * 1024
+        return usage
 
     def add(self, figure, value, unit, target, cmd):
         self.rows.append((figure, value, unit, target, cmd if isinstance(cmd, str) else shlex.join(cmd)))
@@ -149,29 +156,23 @@ def memory(b, scene):
 
 
 def rtl(b, reps):
-    med, cmd = google_benchmark(b, "zblend_bench_rtl", ".", reps)
+    med, cmd = google_benchmark(b, "zblend_bench_rtl", "BM_RtlHazard|BM_CadThreePassRtl", reps)
     for name, r in med.items():
         if name.startswith("BM_RtlHazard"):
-            b.add("RTL simulation, hazard stream", r["items_per_second"] / 1e6, "M fragments/s",
-                  "", cmd)
-            b.add("RTL simulation, hazard stream, simulated clocks", r["cycles_per_second"] / 1e6,
-                  "M cycles/s", "", cmd)
+            b.add("RTL simulation, hazard stream, speed build", r["items_per_second"] / 1e6,
+                  "M fragments/s", "", cmd)
             # Runs on 1-4 pixels: each waits for the interlock (docs/rtl.md), by design.
             b.add("RTL cycles per fragment, hazard stream", 1 / r["fragments_per_clock"],
                   "cycles", "", cmd)
-        elif name.startswith("BM_VerilatorCeiling"):
-            b.add("Verilator's ceiling: a 32-bit counter clocked as zb_rop is",
-                  r["cycles_per_second"] / 1e6, "M cycles/s", "", cmd)
         elif name.startswith("BM_CadThreePassRtl"):
-            # .../models:N/assertions:A
+            # .../models:N
             args = dict(p.split(":") for p in name.split("/")[1:] if ":" in p)
-            how = (f"{args['models']} model{'s' if args['models'] != '1' else ''}, "
-                   f"assertions {'on' if args['assertions'] == '1' else 'off'}")
+            how = f"{args['models']} model{'s' if args['models'] != '1' else ''}, speed build"
             b.add(f"RTL simulation time / golden time (one thread), cad three-pass 640x480, {how}",
                   r["rtl_over_golden"], "x", "", cmd)
             b.add(f"RTL simulation, cad three-pass 640x480, {how}",
                   r["fragments_per_second"] / 1e6, "M fragments/s", "", cmd)
-            if "fragments_per_clock" in r and args["models"] == "1" and args["assertions"] == "1":
+            if "fragments_per_clock" in r and args["models"] == "1":
                 b.add("RTL cycles per fragment, cad three-pass 640x480",
                       1 / r["fragments_per_clock"], "cycles", "1", cmd)
 
@@ -312,6 +313,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--build", default="build", help="build directory (default: build)")
     ap.add_argument("--out", default="out/bench", help="output directory (default: out/bench)")
+    ap.add_argument("--baseline", help="the build directory of a baseline commit "
+                    "(scripts/bench_baseline.sh), measured beside this one")
     ap.add_argument("--quick", action="store_true", help="fewer repetitions and sizes")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
@@ -328,6 +331,7 @@ def main():
     step(3, "peak memory")
     memory(b, scene)
     step(4, "RTL simulation")
+    bench_rtl.speed(b, reps, a.baseline)
     rtl(b, reps)
     render_rtl(b, reps)
     cosim(b)

@@ -1,14 +1,25 @@
 #!/usr/bin/env python3
 """The RTL's two views proven equal (docs/rtl.md "Two views"): `make formal`, and in `make test`.
 
-Usage: equiv.py [--out DIR] [--defect] [--list]
+Usage: equiv.py [--ci] [--out DIR] [--defect] [--list]
 
-A module with two views keeps its synthesis view (what Yosys, nextpnr and the formal proofs
-read) and, under `ZB_SIM_FAST`, the view every Verilated model runs. For each such module this
+A module with two views keeps its synthesis view in rtl/X.sv (what Yosys, nextpnr, the formal
+proofs, the mutants and Icarus read) and its simulation view in rtl/sim/X.sv (what every
+Verilated model runs). For each such module this
 finds every parameter set zb_rop gives it, at every lint parameter set (rtl/lint_sets.txt), and
-proves the views equal there with Yosys: both elaborated through the module's harness (formal/,
-which drives the inputs as zb_rop does), `equiv_make`, `equiv_simple`, `equiv_induct`,
-`equiv_status -assert`.
+proves the views equal there with Yosys: both views elaborated through the module's harness
+(formal/), `equiv_make` pairing their signals by name, `equiv_simple`, `equiv_induct`,
+`equiv_status -assert`: from equal states, equal forever.
+  zb_mul8: the harness drives k3_i as zb_rop does; every register and output is paired.
+  zb_plane: the views keep different state (banks, one array), so the harness builds the state
+    they must agree on from each view's own registers (taps this script connects after
+    flattening) and pairs that; the tile port is compared after tile reads, where zb_rop looks.
+    The memories are bit-blasted, so its proof runs at two beats of words, the lint set's other
+    parameters as they are: the views' logic is the same at every address.
+
+--ci runs the slice `make test` runs: every zb_mul8 proof, and zb_plane's at each BEAT,
+READ_ONLY and FORWARDED of the lint sets, at the narrowest WIDTH zb_rop gives it there (the
+views' logic is the same in every bit of a word; the widest take minutes, in `make formal`).
 
 --defect plants a difference in the simulation view of each module (one bit of an internal
 signal tied to 0) and requires the proof to fail: the check can fail.
@@ -27,10 +38,17 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-# module: (harness module in formal/<harness>.sv, instance path in it, planted difference)
+# module: (how, harness module in formal/<harness>.sv, the modules it reads besides, planted
+# difference in the simulation view)
 VIEWS = {
-    "zb_mul8": ("zb_mul8_views", "u_mul", "u_mul.pair_d[0]"),
+    "zb_mul8": ("zb_mul8_views", [], "u_mul.pair_d[0]"),
+    "zb_plane": ("zb_plane_views", ["zb_tile_mem"], "u_plane.rd_fresh"),
 }
+# Signals of one name in both views that differ where zb_rop does not look, so not paired: the
+# tile port between tile reads (the harness pairs tile_beat_o), the fresh flags but at W2
+# (inv_fresh2).
+UNPAIRED = {"zb_plane": ["u_plane.tile_rdata_o", "trd", "t_fresh2"]}
+PLANE_BEATS = 2  # the words of zb_plane's proof: two beats
 
 
 def rtl_files():
@@ -97,28 +115,76 @@ def instances(lint_set, out):
 
 
 def prove(module, values, out, defect):
-    harness, _, planted = VIEWS[module]
-    chparam = " ".join(f"-set {k} {v}" for k, v in values)
-    sources = f"rtl/zb_pkg.sv rtl/{module}.sv formal/{harness}.sv"
-    def view(tag, define, extra=""):
-        return (f"read_verilog -sv -DSYNTHESIS {define} {sources}\n"
-                f"chparam {chparam} {harness}\n"
-                f"hierarchy -top {harness}\nproc\nflatten\nopt_clean\nrename {harness} {tag}\n"
-                f"{extra}design -stash {tag}\n")
-    script = (view("gold", "") +
-              view("gate", "-DZB_SIM_FAST", f"connect -set {planted} 1'b0\n" if defect else "") +
-              "design -copy-from gold -as gold gold\ndesign -copy-from gate -as gate gate\n"
-              "equiv_make gold gate equiv\nhierarchy -top equiv\nasync2sync\n"
-              "equiv_simple -seq 2\nequiv_induct -seq 2\nequiv_status -assert\n")
+    if module == "zb_plane":
+        values = tuple((k, PLANE_BEATS * dict(values)["BEAT"] if k == "WORDS" else v)
+                       for k, v in values)
     tag = "_".join(f"{k}{v}" for k, v in values) or "defaults"
     log = os.path.join(out, f"{module}_{tag}{'_defect' if defect else ''}.log")
-    rc, err = yosys(script, log)
+    rc, err = yosys(equiv_script(module, values, defect), log)
     with open(log) as f:
         text = f.read()
     m = re.search(r"Of those cells (\d+) are proven and (\d+) are unproven", text)
     if not m:  # Yosys stopped before the proof: neither proven nor a difference found
-        return None, (err.strip().splitlines() or ["yosys failed"])[-1], log
-    return rc == 0 and m.group(2) == "0", f"{m.group(1)} proven, {m.group(2)} unproven", log
+        return None, (err.strip().splitlines() or ["yosys failed"])[-1], log, values
+    return (rc == 0 and m.group(2) == "0", f"{m.group(1)} proven, {m.group(2)} unproven", log,
+            values)
+
+
+def equiv_script(module, values, defect):
+    harness, others, planted = VIEWS[module]
+    chparam = " ".join(f"-set {k} {v}" for k, v in values)
+    sources = " ".join(["rtl/zb_pkg.sv"] + [f"rtl/{m}.sv" for m in others + [module]] +
+                       [f"formal/{harness}.sv"])
+    def view(tag, sim):
+        reg_taps, mem_taps = plane_taps(values, sim) if module == "zb_plane" else ("", "")
+        read = sources.replace(f"rtl/{module}.sv", f"rtl/sim/{module}.sv") if sim else sources
+        return (f"read_verilog -sv -DSYNTHESIS {'-DZB_VIEW_SIM' if sim else ''} {read}\n"
+                f"chparam {chparam} {harness}\n"
+                f"hierarchy -check -top {harness}\nproc\nflatten\n{reg_taps}"
+                f"memory -nomap\nmemory_map\n{mem_taps}"
+                + (f"connect -set {planted} 1'b0\n" if sim and defect else "") +
+                f"opt_clean\ncheck -assert\nrename {harness} {tag}\ndesign -stash {tag}\n")
+    unpaired = ""
+    if module in UNPAIRED:
+        unpaired = os.path.join(tempfile.gettempdir(), f"equiv_unpaired_{os.getpid()}.txt")
+        with open(unpaired, "w") as f:
+            f.write("\n".join(UNPAIRED[module]) + "\n")
+        unpaired = f"-blacklist {unpaired} "
+    return (view("gold", False) + view("gate", True) +
+            "design -copy-from gold -as gold gold\ndesign -copy-from gate -as gate gate\n"
+            f"equiv_make {unpaired}gold gate equiv\nhierarchy -top equiv\nasync2sync\n"
+            "equiv_simple -seq 2\nequiv_induct -seq 1\nequiv_status -assert\n")
+
+
+def plane_taps(values, sim):
+    """connect commands for zb_plane_views' taps (formal/zb_plane_views.sv) in one view: the
+    registers' (before the memories are mapped, which drops unread wires) and the memory words'
+    (after)."""
+    p = dict(values)
+    width, words, beat, ro = p["WIDTH"], p["WORDS"], p["BEAT"], p["READ_ONLY"]
+    ww = width + (0 if ro else 1)
+    regs = [f"connect -nounset -set t_{r} u_plane.{r}_q"
+            for r in ("wback", "wb2", "epoch", "plane_fresh", "rbank")]
+    mems = []
+    def tap(taps, wire, lo, w, src):
+        taps.append(f"connect -nounset -set {wire}[{lo + w - 1}:{lo}] {src}")
+    if sim:
+        for q in range(words):
+            tap(mems, "inv_mem", q * ww, ww, f"u_plane.mem_q[{q}]")
+        regs += ["connect -nounset -set t_prd u_plane.prd_q",
+                 "connect -nounset -set t_tile_fresh u_plane.tile_fresh_q",
+                 "connect -nounset -set t_fresh2 " + ("0" if ro else "u_plane.fresh2_q")]
+    else:
+        for b in range(beat):
+            for i in range(words // beat):
+                tap(mems, "inv_mem", (i * beat + b) * ww, ww,
+                    f"u_plane.g_bank[{b}].u_mem.mem_q[{i}]")
+            tap(regs, "t_rdata", b * ww, ww, f"u_plane.g_bank[{b}].u_mem.rdata_q")
+            if not ro:
+                tap(regs, "t_fresh2", b, 1, f"u_plane.g_bank[{b}].g_rw.fresh2_q")
+        if ro:
+            regs.append("connect -nounset -set t_fresh2 0")
+    return "\n".join(regs) + "\n", "\n".join(mems) + "\n"
 
 
 def main():
@@ -126,6 +192,9 @@ def main():
     ap.add_argument("--out", default="out/equiv", help="output directory (default out/equiv)")
     ap.add_argument("--defect", action="store_true",
                     help="plant a difference in each simulation view; each proof must fail")
+    ap.add_argument("--ci", action="store_true",
+                    help="the CI slice: zb_plane at the narrowest WIDTH of each BEAT, READ_ONLY, "
+                         "FORWARDED")
     ap.add_argument("--list", action="store_true", help="print the proofs and exit")
     a = ap.parse_args()
     out = os.path.abspath(a.out)
@@ -138,10 +207,21 @@ def main():
         for module, combos in instances(ls, out).items():
             for values in combos:
                 proofs.setdefault((module, values), []).append(ls[0])
+    sim_views = {f[:-3] for f in os.listdir(os.path.join(ROOT, "rtl", "sim")) if f.endswith(".sv")}
+    if sim_views != set(VIEWS):
+        sys.exit("equiv: error: rtl/sim/ holds simulation views of "
+                 f"{', '.join(sorted(sim_views)) or 'nothing'}, VIEWS in scripts/equiv.py proves "
+                 f"{', '.join(sorted(VIEWS))}: each view needs its proof")
     missing = set(VIEWS) - {m for m, _ in proofs}
     if missing:
         sys.exit(f"equiv: error: zb_rop has no instance of {', '.join(sorted(missing))} at any "
                  "lint set: VIEWS in scripts/equiv.py names a module the design lost")
+    if a.ci:
+        narrowest = {}
+        for module, values in sorted(proofs, key=lambda k: dict(k[1]).get("WIDTH", 0)):
+            rest = tuple(kv for kv in values if kv[0] != "WIDTH")
+            narrowest.setdefault((module, rest if module == "zb_plane" else values), (module, values))
+        proofs = {k: proofs[k] for k in narrowest.values()}
     if a.defect:  # one planted difference a module, at its first parameter set
         first = {}
         for key in sorted(proofs):
@@ -157,7 +237,7 @@ def main():
     rows = []
     for (module, values), sets in sorted(proofs.items()):
         t0 = time.monotonic()
-        ok, cells, log = prove(module, values, out, a.defect)
+        ok, cells, log, values = prove(module, values, out, a.defect)
         if ok is None:
             status = "ERROR"
         elif a.defect:

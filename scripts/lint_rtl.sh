@@ -2,6 +2,8 @@
 # Verilator lint (-Wall) of zb_rop with the waivers of rtl/lint_waivers.vlt, and its elaboration
 # under Icarus Verilog (the second simulator, docs/rtl.md "Simulators").
 # Usage: lint_rtl.sh [OPTIONS...]          one parameter set, e.g. -GDEPTH_BITS=16 -GCOV_SAMPLES=4
+#        lint_rtl.sh --sim [OPTIONS...]    the same set with the simulation views (rtl/sim/) in
+#                                          place of their synthesis views, as Verilator builds it
 #        lint_rtl.sh --icarus [OPTIONS...] the same set elaborated by iverilog -g2012, -Wall
 #        lint_rtl.sh --conformance         the conformance testbench (conformance/sv), plain and
 #                                          with its DPI-C lock-step scoreboard
@@ -14,7 +16,15 @@ rtl=("$root/rtl/zb_pkg.sv")
 for f in "$root"/rtl/*.sv; do [[ $f == */zb_pkg.sv ]] || rtl+=("$f"); done
 sv=$root/conformance/sv
 
+# The simulation views (docs/rtl.md "Two builds, two views"): rtl/sim/X.sv in place of rtl/X.sv.
+sim=()
+for f in "${rtl[@]}"; do
+  v=$root/rtl/sim/$(basename "$f")
+  [[ -f $v ]] && sim+=("$v") || sim+=("$f")
+done
+
 lint() { verilator --lint-only -Wall "$root/rtl/lint_waivers.vlt" "${rtl[@]}" --top-module zb_rop "$@"; }
+lint_sim() { verilator --lint-only -Wall "$root/rtl/lint_waivers.vlt" "${sim[@]}" --top-module zb_rop "$@"; }
 
 # Verilator's -GNAME=V and +define+X as iverilog's -Pzb_rop.NAME=V and -DX. Icarus warns only
 # of what docs/rtl.md "Simulators" explains (constant selects in always_* processes, unique
@@ -50,13 +60,15 @@ case ${1:-} in
       name=${BASH_REMATCH[1]}
       read -r -a opts <<<"${BASH_REMATCH[2]}"
       lint "${opts[@]}"
+      lint_sim "${opts[@]}"
       icarus "${opts[@]}"
-      echo "lint: $name clean (Verilator -Wall; Icarus elaborates)"
+      echo "lint: $name clean (Verilator -Wall, both views; Icarus elaborates)"
     done <"$root/rtl/lint_sets.txt"
     conformance
     echo "lint: the conformance testbench clean"
     ;;
   --icarus) shift; icarus "$@" ;;
+  --sim) shift; lint_sim "$@" ;;
   --conformance) conformance ;;
   *) lint "$@" ;;
 esac

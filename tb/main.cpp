@@ -64,6 +64,7 @@ class Progress {
 int run_replay(const Config& c, const std::string& path) {
   try {
     const Trace tr = read_trace(path);
+    std::fprintf(stderr, "zblend_tb: replay %s on the RTL's %s\n", path.c_str(), RtlRop::build());
     Cosim cs(cosim_options(c, c.seed));
     replay_trace(tr, cs);  // frame operations included, as the render that wrote it
     std::printf("replay %s: %llu passes, %llu fragments, %llu pixels compared, 0 mismatches\n",
@@ -86,6 +87,7 @@ int run_replay(const Config& c, const std::string& path) {
 
 // Runs the suites, one summary line each. Returns the exit code.
 int run_suites(const Config& config, const std::vector<const Suite*>& chosen, bool quiet) {
+  if (!quiet) std::fprintf(stderr, "zblend_tb: the RTL's %s\n", RtlRop::build());
   int passed = 0, failed = 0;
   Progress progress(quiet);
   Config c = config;
@@ -244,7 +246,6 @@ int run(const Config& config, const Args& a, const std::vector<const Suite*>& ch
     coverage = CoverageTotals(a.coverage_out + ".part");
     c.coverage = &coverage;
   }
-  if (!a.quiet) std::fprintf(stderr, "zblend_tb: RTL %s\n", RtlRop::build());
   const int rc = a.replay.empty() ? run_suites(c, chosen, a.quiet) : run_replay(c, a.replay);
   if (!a.coverage_out.empty()) {
     try {
