@@ -42,11 +42,10 @@ module zb_plane #(
   end
 `endif
 
-  logic [BeatAW-1:0] rbeat, wbeat;
+  logic [BeatAW-1:0] rbeat;
   logic [BankW-1:0]  rbank, wbank;
   assign rbeat = BeatAW'(pipe_raddr_i >> LogBeat);
   assign rbank = BEAT > 1 ? BankW'(pipe_raddr_i) : '0;
-  assign wbeat = BeatAW'(pipe_waddr_i >> LogBeat);
   assign wbank = BEAT > 1 ? BankW'(pipe_waddr_i) : '0;
 
   logic tile_load, tile_read, tile_clear;
@@ -58,40 +57,42 @@ module zb_plane #(
   // clear keeps the epoch (flipping it would make fresh words current). wback_q (W1): the beat
   // read last edge is in the read register; wb2_q (W2): its fresh words are written back this
   // edge. all_fresh falls at W1 already, so a clear between W1 and W2 flips the epoch.
-  logic             epoch_d, epoch_q, all_fresh_d, all_fresh_q, wback_q, wb2_q, wb2_epoch_q;
+  logic             epoch_q, all_fresh_q, wback_q, wb2_q, wb2_epoch_q;
   logic             wb2_current;  // W2 writes at the plane's epoch (no clear since its read)
   logic [WIDTH-1:0] clear_q;
   logic [BeatAW-1:0] wback_addr_q, wb2_addr_q;
   logic [BankW-1:0] rbank_q;
   assign wb2_current = wb2_q & (wb2_epoch_q == epoch_q);
 
-  always_comb begin
-    epoch_d     = epoch_q;
-    all_fresh_d = all_fresh_q;
-    if (tile_clear) begin
-      epoch_d     = all_fresh_q ? epoch_q : ~epoch_q;
-      all_fresh_d = 1'b1;
-    end else if (tile_load || pipe_we_i || wback_q || wb2_current) begin
-      all_fresh_d = 1'b0;
-    end
-  end
-
+  // The next state is computed in the flop blocks, from the tile port's inputs themselves: logic
+  // on the model's inputs outside them would be evaluated at both evaluations of every cycle.
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      epoch_q     <= 1'b0;
-      all_fresh_q <= 1'b0;
-      wback_q     <= 1'b0;
-      wb2_q       <= 1'b0;
+      epoch_q       <= 1'b0;
+      all_fresh_q   <= 1'b0;
+      wback_q       <= 1'b0;
+      wb2_q         <= 1'b0;
+      plane_fresh_q <= 1'b0;
     end else begin
-      epoch_q     <= epoch_d;
-      all_fresh_q <= all_fresh_d;
-      wback_q     <= tile_read;
-      wb2_q       <= wback_q;
+      if (tile_clear_i && tile_en_i) begin
+        epoch_q       <= all_fresh_q ? epoch_q : ~epoch_q;
+        all_fresh_q   <= 1'b1;
+        plane_fresh_q <= 1'b1;
+      end else begin
+        if ((tile_req_i && tile_we_i && tile_en_i) || pipe_we_i || wback_q || wb2_current) begin
+          all_fresh_q <= 1'b0;
+        end
+        if (tile_req_i && tile_we_i && tile_en_i) begin
+          plane_fresh_q <= 1'b0;
+        end
+      end
+      wback_q <= tile_req_i && !tile_we_i;
+      wb2_q   <= wback_q;
     end
   end
 
   always_ff @(posedge clk_i) begin
-    if (tile_clear) begin
+    if (tile_clear_i && tile_en_i) begin
       clear_q <= tile_wdata_i[WIDTH-1:0];
     end
     if (pipe_re_i) begin
@@ -108,24 +109,13 @@ module zb_plane #(
   localparam int WordW = WIDTH + GenW;
   logic [WIDTH-1:0] wdata_one;  // a bank's write data but for a load
   logic             rd_fresh;   // rdata_o's word is fresh
-  logic             plane_fresh_q;
+  logic             plane_fresh_q;  // READ_ONLY: fresh from a fast clear to the next load
   assign wdata_one = wb2_q ? clear_q : pipe_wdata_i;
-
-  // READ_ONLY: fresh from a fast clear to the next load.
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      plane_fresh_q <= 1'b0;
-    end else if (tile_clear) begin
-      plane_fresh_q <= 1'b1;
-    end else if (tile_load) begin
-      plane_fresh_q <= 1'b0;
-    end
-  end
 
   // Each form leaves the other's signals unread.
   if (READ_ONLY) begin : g_unused_rw
     logic unused_rw;
-    assign unused_rw = ^{wbeat, wbank, wb2_addr_q, wdata_one};
+    assign unused_rw = ^{wbank, wb2_addr_q, wdata_one};
   end else begin : g_unused_ro
     logic unused_ro;
     assign unused_ro = plane_fresh_q;
@@ -140,15 +130,6 @@ module zb_plane #(
   logic [WordW-1:0]      prd_q;
   logic [BEAT*WIDTH-1:0] tile_lane_q;
   logic [BEAT-1:0]       tile_fresh_q, fresh2_q;  // the beat's fresh words; at W2
-  logic [BeatAW-1:0]     raddr, waddr;
-  logic [BankW-1:0]      rbank_d;
-  logic                  plane_fresh_d;
-  logic [WIDTH-1:0]      clear_d;
-  assign raddr = tile_req_i ? tile_addr_i : rbeat;
-  assign waddr = tile_load ? tile_addr_i : (wb2_q ? wb2_addr_q : wbeat);
-  assign rbank_d = BEAT > 1 && !pipe_re_i ? rbank_q : rbank;  // BEAT 1: bank 0
-  assign plane_fresh_d = tile_clear | (plane_fresh_q & ~tile_load);
-  assign clear_d = tile_clear ? tile_wdata_i[WIDTH-1:0] : clear_q;
   // Word b of a beat.
   localparam int AddrW = $clog2(WORDS);
   function automatic logic [AddrW-1:0] word(input logic [BeatAW-1:0] beat, input int b);
@@ -156,12 +137,21 @@ module zb_plane #(
   endfunction
   /* verilator lint_off BLKSEQ */
   always_ff @(posedge clk_i) begin
-    logic [WordW-1:0] w;
-    logic             f;
-    if (pipe_re_i || tile_read) begin
-      prd_q <= mem_q[word(raddr, 32'(rbank_d))];
+    logic [WordW-1:0]  w;
+    logic              f, load, read, clear, epoch_d, plane_fresh_d;
+    logic [WIDTH-1:0]  clear_d;
+    logic [BeatAW-1:0] waddr;
+    load          = tile_req_i && tile_we_i && tile_en_i;
+    read          = tile_req_i && !tile_we_i;
+    clear         = tile_clear_i && tile_en_i;
+    epoch_d       = clear && !all_fresh_q ? ~epoch_q : epoch_q;
+    plane_fresh_d = clear || (plane_fresh_q && !load);
+    clear_d       = clear ? tile_wdata_i[WIDTH-1:0] : clear_q;
+    if (pipe_re_i || read) begin
+      prd_q <= mem_q[word(tile_req_i ? tile_addr_i : rbeat,
+                          BEAT > 1 && !pipe_re_i ? 32'(rbank_q) : 32'(rbank))];
     end
-    if (tile_read) begin
+    if (read) begin
       for (int b = 0; b < BEAT; b++) begin
         w = mem_q[word(tile_addr_i, b)];
         f = READ_ONLY ? plane_fresh_d : w[WordW-1] != epoch_d;
@@ -170,16 +160,17 @@ module zb_plane #(
       end
     end
     if (READ_ONLY) begin
-      if (tile_load) begin
+      if (load) begin
         for (int b = 0; b < BEAT; b++) begin
           mem_q[word(tile_addr_i, b)] = WordW'(tile_wdata_i[b*WIDTH +: WIDTH]);
         end
       end
-    end else if (tile_load || wb2_q) begin
+    end else if (load || wb2_q) begin
+      waddr = load ? tile_addr_i : wb2_addr_q;
       for (int b = 0; b < BEAT; b++) begin
-        if (tile_load || fresh2_q[b] || (pipe_we_i && wbank == BankW'(b))) begin
-          mem_q[word(waddr, b)] = WordW'({tile_load ? epoch_q : wb2_epoch_q,
-                                          tile_load ? tile_wdata_i[b*WIDTH +: WIDTH] : wdata_one});
+        if (load || fresh2_q[b] || (pipe_we_i && wbank == BankW'(b))) begin
+          mem_q[word(waddr, b)] = WordW'({load ? epoch_q : wb2_epoch_q,
+                                          load ? tile_wdata_i[b*WIDTH +: WIDTH] : wdata_one});
         end
       end
     end else if (pipe_we_i) begin
