@@ -220,7 +220,8 @@ def main():
         narrowest = {}
         for module, values in sorted(proofs, key=lambda k: dict(k[1]).get("WIDTH", 0)):
             rest = tuple(kv for kv in values if kv[0] != "WIDTH")
-            narrowest.setdefault((module, rest if module == "zb_plane" else values), (module, values))
+            key = (module, rest if module == "zb_plane" else values)
+            narrowest.setdefault(key, (module, values))
         proofs = {k: proofs[k] for k in narrowest.values()}
     if a.defect:  # one planted difference a module, at its first parameter set
         first = {}
@@ -255,7 +256,8 @@ def main():
         w.writerow(["module", "parameters", "lint_sets", "status", "seconds", "equiv_cells", "log"])
         w.writerows(rows)
     what = "planted differences caught" if a.defect else "proofs passed"
-    print(f"equiv: {len(rows) - failed} of {len(rows)} {what}: {os.path.join(a.out, 'summary.csv')}")
+    summary = os.path.join(a.out, "summary.csv")
+    print(f"equiv: {len(rows) - failed} of {len(rows)} {what}: {summary}")
     return 1 if failed else 0
 
 

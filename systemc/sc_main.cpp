@@ -108,10 +108,13 @@ int run(const Options& o) {
   sc_core::sc_start();
 
   bool ok = true;
-  if (!o.quiet)
+  if (!o.quiet) {
+    // The SystemC model is Verilated as the assertion build (docs/rtl.md "Two builds, two views").
+    std::fprintf(stderr, "zblend_systemc: the RTL's assertion build, as SystemC modules\n");
     std::printf("%-24s %9s %6s %10s %12s %12s %12s %12s %12s %10s %12s\n", "method",
                 "fragments", "passes", "mismatches", "golden ns", "golden cyc", "rtl ns",
                 "rtl cyc", "rtl stream", "wall ms", "wall ns/frag");
+  }
   for (const zb::sc::CosimResult& r : cosim.results()) {
     const double gns = r.golden_time.to_seconds() * 1e9, rns = r.rtl_time.to_seconds() * 1e9;
     if (!o.quiet)

@@ -1,9 +1,9 @@
 // zb_plane, simulation view (docs/rtl.md "Two builds, two views"): rtl/zb_plane.sv is the
 // synthesis view and the specification (its header explains the banks, the fast clear and the
-// write-back); every Verilated model reads this file instead. The control logic and the
-// assertions are the synthesis view's; the banks are one array (below). scripts/equiv.py proves
-// the two views equal wherever zb_rop looks, which pins the control logic here to the
-// synthesis view's.
+// write-back); every Verilated model reads this file instead. The assertions are the synthesis
+// view's; the control computes the same next state in its flop blocks, and the banks are one
+// array (below). scripts/equiv.py proves the two views equal wherever zb_rop looks, which pins
+// both to the synthesis view.
 module zb_plane #(
   parameter int WIDTH     = 32,
   parameter int WORDS     = 1024,
@@ -121,11 +121,12 @@ module zb_plane #(
     assign unused_ro = plane_fresh_q;
   end
 
-  // The banks as one array, equal to them wherever zb_rop looks: pixel p at word p, so a pipeline access touches one word. prd_q holds the word of
-  // rdata_o's bank, which every read loads in the banks; the tile port's beat is resolved at its
-  // read (against the epoch and clear value after that edge), since zb_rop takes it in the
-  // cycle after the read alone. mem_q is this block's only, so its writes are blocking, after
-  // its reads: no delayed-write bookkeeping, and a read meeting a write reads the old word.
+  // The banks as one array, equal to them wherever zb_rop looks: pixel p at word p, so a
+  // pipeline access touches one word. prd_q holds the word of rdata_o's bank, which every read
+  // loads in the banks; the tile port's beat is resolved at its read (against the epoch and
+  // clear value after that edge), since zb_rop takes it in the cycle after the read alone. mem_q
+  // is this block's only, so its writes are blocking, after its reads: no delayed-write
+  // bookkeeping, and a read meeting a write reads the old word.
   logic [WordW-1:0]      mem_q [WORDS];
   logic [WordW-1:0]      prd_q;
   logic [BEAT*WIDTH-1:0] tile_lane_q;
