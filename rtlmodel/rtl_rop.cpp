@@ -111,64 +111,8 @@ struct XorShift {
   }
 };
 
-// Bits [lo, lo + width) of a port, width at most 32: a Verilated integer up to 64 bits,
-// VlWide beyond.
-template <class Port>
-void put_bits(Port& port, unsigned lo, unsigned width, uint32_t v) {
-  if constexpr (std::is_integral_v<Port>) {
-    const uint64_t m = (width >= 64 ? ~uint64_t{0} : (uint64_t{1} << width) - 1) << lo;
-    port = Port((uint64_t(port) & ~m) | (uint64_t{v} << lo & m));
-  } else {
-    for (unsigned done = 0; done < width;) {
-      const unsigned pos = lo + done, off = pos % 32, n = std::min(32 - off, width - done);
-      const uint32_t m = (n == 32 ? ~0u : (1u << n) - 1) << off;
-      port[pos / 32] = (port[pos / 32] & ~m) | (v >> done << off & m);
-      done += n;
-    }
-  }
-}
-template <class Port>
-uint32_t get_bits(const Port& port, unsigned lo, unsigned width) {
-  if constexpr (std::is_integral_v<Port>) {
-    return uint32_t(uint64_t(port) >> lo & ((uint64_t{1} << width) - 1));
-  } else {
-    uint32_t v = 0;
-    for (unsigned done = 0; done < width;) {
-      const unsigned pos = lo + done, off = pos % 32, n = std::min(32 - off, width - done);
-      v |= (port[pos / 32] >> off & (n == 32 ? ~0u : (1u << n) - 1)) << done;
-      done += n;
-    }
-    return v;
-  }
-}
-
-// Lane `lane` of a tile port whose lanes are `width` bits.
-template <class Port>
-void put_lane(Port& port, unsigned lane, unsigned width, uint32_t v) {
-  put_bits(port, lane * width, width, v);
-}
-template <class Port>
-uint32_t get_lane(const Port& port, unsigned lane, unsigned width) {
-  return get_bits(port, lane * width, width);
-}
-
-// The accumulation word {r, acc_A, acc_B, acc_G, acc_R} at word `index` of a port.
+// The accumulation word {r, acc_A, acc_B, acc_G, acc_R}, acc_R lowest.
 constexpr unsigned kAccBits = unsigned(kRtlWboit.acc_bits), kRevBits = unsigned(kRtlWboit.rev_bits);
-constexpr unsigned kAccumBits = unsigned(accum_word_bits(kRtlWboit));
-template <class Port>
-void put_accum(Port& port, unsigned index, const AccumWord& w) {
-  const unsigned lo = index * kAccumBits;
-  for (unsigned c = 0; c < 4; ++c) put_bits(port, lo + c * kAccBits, kAccBits, w.acc[c]);
-  put_bits(port, lo + 4 * kAccBits, kRevBits, w.reveal);
-}
-template <class Port>
-AccumWord get_accum(const Port& port, unsigned index) {
-  const unsigned lo = index * kAccumBits;
-  AccumWord w;
-  for (unsigned c = 0; c < 4; ++c) w.acc[c] = get_bits(port, lo + c * kAccBits, kAccBits);
-  w.reveal = get_bits(port, lo + 4 * kAccBits, kRevBits);
-  return w;
-}
 
 // The tile port's lane widths per word plane (kPlane* order: colour pack_rgba, depth,
 // coverage count, peel depth).
@@ -176,16 +120,97 @@ constexpr unsigned kColorBits = 32, kDepthBits = kRtlDepthBits,
                    kCovBits = coverage_bits(kRtlCoverageSamples);
 constexpr unsigned kLaneBits[kWordPlanes] = {kColorBits, kDepthBits, kCovBits, kDepthBits};
 
+// A port's lanes one after another from bit 0 up, each value `width` (at most 32) bits: the
+// tile port's buses are lanes side by side, so a beat moves a 32-bit word at a time instead of
+// a masked read-modify-write per field.
+template <class Port>
+class PortWriter {
+ public:
+  explicit PortWriter(Port& port) : port_(port) {}
+  void put(uint32_t v, unsigned width) {
+    acc_ |= uint64_t(v & mask(width)) << fill_;
+    fill_ += width;
+    if (fill_ >= 32) flush_word();
+  }
+  ~PortWriter() {
+    if constexpr (std::is_integral_v<Port>) {  // at most 64 bits: next_ < 2 while fill_ > 0
+      port_ = Port(fill_ > 0 ? word_ | acc_ << (32 * next_) : word_);
+    } else {
+      if (fill_ > 0) port_[next_] = uint32_t(acc_);
+    }
+  }
+
+ private:
+  static uint32_t mask(unsigned w) { return w >= 32 ? ~0u : (1u << w) - 1; }
+  void flush_word() {
+    if constexpr (std::is_integral_v<Port>) {
+      word_ |= (acc_ & 0xffffffffu) << (32 * next_);
+    } else {
+      port_[next_] = uint32_t(acc_);
+    }
+    ++next_;
+    acc_ >>= 32;
+    fill_ -= 32;
+  }
+  Port& port_;
+  uint64_t acc_ = 0, word_ = 0;
+  unsigned fill_ = 0, next_ = 0;
+};
+
+template <class Port>
+class PortReader {
+ public:
+  explicit PortReader(const Port& port) : port_(port) {}
+  uint32_t get(unsigned width) {
+    if (fill_ < width) {
+      acc_ |= uint64_t(word(next_++)) << fill_;
+      fill_ += 32;
+    }
+    const uint32_t v = uint32_t(acc_) & (width >= 32 ? ~0u : (1u << width) - 1);
+    acc_ >>= width;
+    fill_ -= width;
+    return v;
+  }
+
+ private:
+  uint32_t word(unsigned i) const {
+    if constexpr (std::is_integral_v<Port>) {
+      return i < 2 ? uint32_t(uint64_t(port_) >> (32 * i)) : 0;
+    } else {
+      return port_[i];
+    }
+  }
+  const Port& port_;
+  uint64_t acc_ = 0;
+  unsigned fill_ = 0, next_ = 0;
+};
+
+// The next accumulation word of a port.
+template <class Port>
+AccumWord get_accum(PortReader<Port>& r) {
+  AccumWord w;
+  for (uint32_t& c : w.acc) c = r.get(kAccBits);
+  w.reveal = r.get(kRevBits);
+  return w;
+}
+template <class Port>
+void put_accum(PortWriter<Port>& p, const AccumWord& w) {
+  for (uint32_t c : w.acc) p.put(c, kAccBits);
+  p.put(w.reveal, kRevBits);
+}
+
 // The beat the tile port read at the last edge (colour, depth, coverage, accumulation; peel is
 // never stored).
 template <class Model>
 BeatWords read_beat(const Model& t) {
   BeatWords w{};
+  PortReader color(t.tile_rcolor_o), depth(t.tile_rdepth_o), cov(t.tile_rcov_o),
+      acc(t.tile_racc_o);
   for (unsigned l = 0; l < unsigned(kRtlBeat); ++l) {
-    w[0][l] = get_lane(t.tile_rcolor_o, l, kColorBits);
-    w[1][l] = get_lane(t.tile_rdepth_o, l, kDepthBits);
-    w[2][l] = get_lane(t.tile_rcov_o, l, kCovBits);
-    w.accum[l] = get_accum(t.tile_racc_o, l);
+    w[0][l] = color.get(kColorBits);
+    w[1][l] = depth.get(kDepthBits);
+    w[2][l] = cov.get(kCovBits);
+    w.accum[l] = get_accum(acc);
   }
   return w;
 }
@@ -193,12 +218,14 @@ BeatWords read_beat(const Model& t) {
 // A beat onto the tile port's write lanes (colour, depth, coverage, peel, accumulation).
 template <class Model>
 void put_beat(Model& t, const BeatWords& w) {
+  PortWriter color(t.tile_wcolor_i), depth(t.tile_wdepth_i), cov(t.tile_wcov_i),
+      peel(t.tile_wpeel_i), acc(t.tile_wacc_i);
   for (unsigned l = 0; l < unsigned(kRtlBeat); ++l) {
-    put_lane(t.tile_wcolor_i, l, kColorBits, w[0][l]);
-    put_lane(t.tile_wdepth_i, l, kDepthBits, w[1][l]);
-    put_lane(t.tile_wcov_i, l, kCovBits, w[2][l]);
-    put_lane(t.tile_wpeel_i, l, kDepthBits, w[3][l]);
-    put_accum(t.tile_wacc_i, l, w.accum[l]);
+    color.put(w[0][l], kColorBits);
+    depth.put(w[1][l], kDepthBits);
+    cov.put(w[2][l], kCovBits);
+    peel.put(w[3][l], kDepthBits);
+    put_accum(acc, w.accum[l]);
   }
 }
 
@@ -491,7 +518,8 @@ struct RtlRop::Impl {
       p.cwe = t.mon_cwe_o;
       p.wcolor = t.mon_wcolor_o;
       p.awe = t.mon_awe_o;
-      p.wacc = get_accum(t.mon_wacc_o, 0);
+      PortReader wacc(t.mon_wacc_o);
+      p.wacc = get_accum(wacc);
       go = s.monitor->observe(p, s.cycle - run.load_begin, k) && go;
     };
     t.tile_x0_i = x0;

@@ -1,13 +1,26 @@
 #include "tile_bins.h"
 
+#include <stdexcept>
+
 namespace zb {
 
 void bin_by_tile(const Fragment* f, size_t n, int width, int height, int tile_w, int tile_h,
                  TileBins& out) {
-  const int tx = (width + tile_w - 1) / tile_w, ty = (height + tile_h - 1) / tile_h;
+  // Tiles are powers of two (zb_rop's TILE_W, TILE_H): a shift, not a division, per fragment.
+  auto log2_of = [](int v) {
+    if (v < 1 || (v & (v - 1)) != 0)
+      throw std::invalid_argument("bin_by_tile: a tile side must be a power of two");
+    int s = 0;
+    while ((1 << s) < v) ++s;
+    return s;
+  };
+  const int sx = log2_of(tile_w), sy = log2_of(tile_h);
+  const int tx = (width + tile_w - 1) >> sx, ty = (height + tile_h - 1) >> sy;
   out.columns = tx;
   out.first.assign(size_t(tx) * size_t(ty) + 1, 0);
-  auto tile_of = [&](const Fragment& g) { return size_t(g.y / tile_h) * size_t(tx) + g.x / tile_w; };
+  auto tile_of = [&](const Fragment& g) {
+    return size_t(g.y >> sy) * size_t(tx) + size_t(g.x >> sx);
+  };
   for (size_t i = 0; i < n; ++i) ++out.first[tile_of(f[i]) + 1];
   for (size_t i = 1; i < out.first.size(); ++i) out.first[i] += out.first[i - 1];
   out.order.resize(n);

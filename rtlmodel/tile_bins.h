@@ -16,7 +16,8 @@ struct TileBins {
   std::vector<uint32_t> order;   // fragment indices, tile by tile, pass order within a tile
 };
 
-// Bins `n` fragments of a width x height frame into tiles of tile_w x tile_h pixels.
+// Bins `n` fragments of a width x height frame into tiles of tile_w x tile_h pixels, each a
+// power of two (std::invalid_argument otherwise).
 void bin_by_tile(const Fragment* f, size_t n, int width, int height, int tile_w, int tile_h,
                  TileBins& out);
 
