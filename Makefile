@@ -7,7 +7,7 @@ ZBLEND     := $(BUILD)/zblend
 RUN_SIZE   ?= --width 640 --height 480
 
 .DEFAULT_GOAL := build
-.PHONY: help setup full-tree build run test test-release test-asan test-tsan regress conformance mutate bench bench-verilator profile-rtl synth formal systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
+.PHONY: help setup full-tree build run test test-release test-asan test-tsan regress conformance mutate bench pgo bench-verilator profile-rtl synth formal systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
 
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | awk -F'\t' '{printf "%-16s %s\n", $$1, $$2}'
@@ -72,10 +72,14 @@ regress: build ## Run GROUP (default nightly) of tb/regressions.json: out/regres
 # The RTL's speed is measured beside BASELINE's build (built once in build-baseline; empty: none).
 BASELINE ?= d91dc3f
 
-bench: build ## Benchmarks: datapath, golden vs llvmpipe, memory, RTL (beside BASELINE's), cost growth: out/bench/
+bench: build ## Benchmarks: datapath, golden vs llvmpipe, memory, RTL (beside BASELINE's and PGO's), cost growth: out/bench/
 	@cmake --build $(BUILD) -j $(JOBS) --target zblend_bench zblend_bench_rtl zblend_bench_rtl_assert zblend_window_sweep
 	@$(if $(BASELINE),scripts/bench_baseline.sh $(BASELINE) build-baseline -j $(JOBS))
-	@/usr/bin/python3 scripts/bench.py --build $(BUILD) --out out/bench $(if $(BASELINE),--baseline build-baseline/build)
+	@scripts/pgo.sh -j $(JOBS) -d build-pgo
+	@/usr/bin/python3 scripts/bench.py --build $(BUILD) --out out/bench $(if $(BASELINE),--baseline build-baseline/build) --pgo build-pgo
+
+pgo: setup ## The speed build's model with gcc PGO, trained on cad: build-pgo/zblend, build-pgo/zblend_bench_rtl
+	@scripts/pgo.sh -j $(JOBS) -d build-pgo
 
 profile-rtl: ## Where the RTL simulation's time goes, per module (perf, --prof-cfuncs): out/profile/modules.csv
 	@scripts/setup.sh profile

@@ -67,6 +67,22 @@ set(ZBLEND_VERILATOR_OPT -O3 --x-assign fast --x-initial fast CACHE STRING
 set(ZBLEND_VERILATOR_THREADS 1 CACHE STRING "Verilator --threads of the RTL model")
 list(APPEND ZBLEND_RTL_DEFINES ZBLEND_VERILATOR_THREADS=${ZBLEND_VERILATOR_THREADS})
 set(ZBLEND_VERILATOR_OPT_FAST "" CACHE STRING "C++ flags added to the model's hot code")
+# gcc profile-guided optimisation of the speed build's model (scripts/pgo.sh, docs/bench.md):
+# generate instruments its hot code, use compiles it with the profile a training run left in
+# ZBLEND_PGO_DIR. Profiles name their objects by path: generate and use in one build tree.
+set(ZBLEND_PGO "" CACHE STRING "PGO of the speed build's model: '' (none), generate or use")
+set(ZBLEND_PGO_DIR ${PROJECT_BINARY_DIR}/pgo CACHE PATH "The PGO training run's profile")
+if(NOT ZBLEND_PGO MATCHES "^(|generate|use)$")
+  message(FATAL_ERROR "ZBLEND_PGO=${ZBLEND_PGO}: choose generate or use, or leave it empty "
+                      "(scripts/pgo.sh runs both)")
+endif()
+if(ZBLEND_PGO STREQUAL "use")
+  file(GLOB_RECURSE pgo_profiles ${ZBLEND_PGO_DIR}/*.gcda)
+  if(NOT pgo_profiles)
+    message(FATAL_ERROR "ZBLEND_PGO=use: no profile in ${ZBLEND_PGO_DIR}; build with "
+                        "ZBLEND_PGO=generate and run a training render first (scripts/pgo.sh)")
+  endif()
+endif()
 
 # zblend_verilate(TARGET PREFIX P DIRECTORY D [SYSTEMC] [BUG] [FAST] [COVERAGE] [TRACE]
 #                 [MUTANTS NETLIST]): a static library TARGET holding zb_rop Verilated with the
@@ -107,11 +123,21 @@ function(zblend_verilate target)
   if(V_COVERAGE)
     list(APPEND extra COVERAGE)
   endif()
+  set(opt_fast ${ZBLEND_VERILATOR_OPT_FAST})
+  if(V_FAST AND ZBLEND_PGO STREQUAL "generate")
+    list(APPEND opt_fast -fprofile-generate=${ZBLEND_PGO_DIR} -fprofile-update=atomic)
+  elseif(V_FAST AND ZBLEND_PGO STREQUAL "use")
+    list(APPEND opt_fast -fprofile-use=${ZBLEND_PGO_DIR} -fprofile-partial-training
+         -Wno-missing-profile)
+  endif()
   add_library(${target} STATIC)
+  if(V_FAST AND ZBLEND_PGO STREQUAL "generate")
+    target_link_options(${target} INTERFACE -fprofile-generate=${ZBLEND_PGO_DIR})
+  endif()
   verilate(${target} ${kind} ${extra}
     SOURCES ${sources}
     TOP_MODULE zb_rop PREFIX ${V_PREFIX}
-    THREADS ${ZBLEND_VERILATOR_THREADS} OPT_FAST ${ZBLEND_VERILATOR_OPT_FAST}
+    THREADS ${ZBLEND_VERILATOR_THREADS} OPT_FAST ${opt_fast}
     DIRECTORY ${V_DIRECTORY}
     VERILATOR_ARGS ${args})
   if(V_SYSTEMC)

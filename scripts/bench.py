@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """zblend's benchmarks in one run (docs/bench.md): `make bench`.
 
-Usage: bench.py [--build DIR] [--out DIR] [--baseline BUILD_DIR] [--quick]
+Usage: bench.py [--build DIR] [--out DIR] [--baseline BUILD_DIR] [--pgo BUILD_DIR] [--quick]
 
 Runs, on this machine, one after another:
   1. the golden datapath alone, fragments per second per blend mode (Google Benchmark);
@@ -10,7 +10,8 @@ Runs, on this machine, one after another:
   3. peak resident memory of the golden model, the reference and the RTL on that frame;
   4. the RTL simulation: both builds' cycles per second beside Verilator's ceiling, fragments per
      clock, CPU time against the golden model's, each beside a baseline commit's build
-     (--baseline, scripts/bench_baseline.sh) run in the same bench;
+     (--baseline, scripts/bench_baseline.sh) and the speed build with PGO (--pgo,
+     scripts/pgo.sh) run in the same bench;
   5. cost growth: render time against resolution, against triangle count, and with the frame
      growing around an object of fixed size on screen.
 Writes OUT/bench.csv (every figure with its command), OUT/bench.md (the table), OUT/growth.csv
@@ -77,6 +78,15 @@ class Bench:
                 sys.exit(f"bench: error: `{shlex.join(cmd)}` exited {code}:\n{f.read()}")
         return usage
 
+    def google_benchmark(self, path, filt, reps):
+        """Runs Google Benchmark `path`'s benchmarks matching filt, reps times; returns each
+        run's median (one repetition reports the run itself) by run name, and the command."""
+        cmd = [path, f"--benchmark_filter={filt}", f"--benchmark_repetitions={reps}",
+               "--benchmark_report_aggregates_only=true", "--benchmark_format=json"]
+        medians = {r["run_name"]: r for r in json.loads(self.run(cmd))["benchmarks"]
+                   if r.get("aggregate_name", "median") == "median"}
+        return medians, cmd
+
     def add(self, figure, value, unit, target, cmd):
         self.rows.append((figure, value, unit, target, cmd if isinstance(cmd, str) else shlex.join(cmd)))
 
@@ -85,20 +95,8 @@ def step(n, text):
     print(f"[{n}/5] {text}", file=sys.stderr, flush=True)
 
 
-def google_benchmark(b, exe, filt, reps):
-    cmd = [b.exe(exe), f"--benchmark_filter={filt}", f"--benchmark_repetitions={reps}",
-           "--benchmark_report_aggregates_only=true", "--benchmark_format=json"]
-    out = b.run(cmd)
-    medians = {}
-    for r in json.loads(out)["benchmarks"]:
-        # One repetition reports the run itself, several only their aggregates.
-        if r.get("aggregate_name", "median") == "median":
-            medians[r["run_name"]] = r
-    return medians, cmd
-
-
 def datapath(b, reps):
-    med, cmd = google_benchmark(b, "zblend_bench", "BM_GoldenDatapath", reps)
+    med, cmd = b.google_benchmark(b.exe("zblend_bench"), "BM_GoldenDatapath", reps)
     for name, r in sorted(med.items()):
         mode = name.split("/")[-1]
         b.add(f"golden datapath, {mode} blend", r["items_per_second"] / 1e6, "M fragments/s", "",
@@ -156,7 +154,8 @@ def memory(b, scene):
 
 
 def rtl(b, reps):
-    med, cmd = google_benchmark(b, "zblend_bench_rtl", "BM_RtlHazard|BM_CadThreePassRtl", reps)
+    med, cmd = b.google_benchmark(b.exe("zblend_bench_rtl"), "BM_RtlHazard|BM_CadThreePassRtl",
+                                  reps)
     for name, r in med.items():
         if name.startswith("BM_RtlHazard"):
             b.add("RTL simulation, hazard stream, speed build", r["items_per_second"] / 1e6,
@@ -252,7 +251,7 @@ def growth(b, scene, reps, quick):
         ms, frags, tris, cmd = host_ms(b, path, n, n, reps, f"eye=0,0,4,at=0,0,0,fov={fov:.3f}")
         rows.append(("frame", n * n, tris, frags, ms, shlex.join(cmd)))
     # The planes alone, allocated and cleared: what grows with the frame whatever is drawn.
-    med, cmd = google_benchmark(b, "zblend_bench", "BM_FrameBuffers", reps)
+    med, cmd = b.google_benchmark(b.exe("zblend_bench"), "BM_FrameBuffers", reps)
     clear = {int(name.split("/")[1]): r["real_time"] for name, r in med.items()}
     for n in sizes:
         if n in clear:
@@ -315,6 +314,8 @@ def main():
     ap.add_argument("--out", default="out/bench", help="output directory (default: out/bench)")
     ap.add_argument("--baseline", help="the build directory of a baseline commit "
                     "(scripts/bench_baseline.sh), measured beside this one")
+    ap.add_argument("--pgo", help="a build directory of scripts/pgo.sh (the speed build with "
+                    "PGO), measured beside this one")
     ap.add_argument("--quick", action="store_true", help="fewer repetitions and sizes")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
@@ -331,7 +332,7 @@ def main():
     step(3, "peak memory")
     memory(b, scene)
     step(4, "RTL simulation")
-    bench_rtl.speed(b, reps, a.baseline)
+    bench_rtl.speed(b, reps, a.baseline, a.pgo)
     rtl(b, reps)
     render_rtl(b, reps)
     cosim(b)

@@ -1,8 +1,8 @@
 """The RTL simulation's speed in `make bench` (bench.py step 4, docs/bench.md): both builds of
 zb_rop against Verilator's ceiling, the RTL against the golden model in CPU time, and, beside
-every figure, the same run of a baseline build (scripts/bench_baseline.sh) in the same bench:
-ratios measured side by side, never against figures of another day."""
-import json
+every figure, the same runs of a baseline build (scripts/bench_baseline.sh) and of the speed build
+with PGO (scripts/pgo.sh) in the same bench: ratios measured side by side, never against
+figures of another day."""
 import os
 import statistics
 import time
@@ -12,12 +12,8 @@ CAD = ["--scene", "cad", "-W", "640", "-H", "480"]
 
 def hazard(b, exe, reps):
     """Hazard stream M cycles/s and Verilator's ceiling M cycles/s of one zblend_bench_rtl."""
-    cmd = [exe, "--benchmark_filter=BM_RtlHazard|BM_VerilatorCeiling",
-           f"--benchmark_repetitions={reps}", "--benchmark_report_aggregates_only=true",
-           "--benchmark_format=json"]
-    runs = json.loads(b.run(cmd))["benchmarks"]
-    med = {r["run_name"].split("/")[0]: r for r in runs
-           if r.get("aggregate_name", "median") == "median"}
+    med, cmd = b.google_benchmark(exe, "BM_RtlHazard|BM_VerilatorCeiling", reps)
+    med = {name.split("/")[0]: r for name, r in med.items()}
     return (med["BM_RtlHazard"]["cycles_per_second"] / 1e6,
             med["BM_VerilatorCeiling"]["cycles_per_second"] / 1e6, cmd)
 
@@ -33,29 +29,42 @@ def cpu_seconds(b, cmd, reps):
     return statistics.median(cpu), statistics.median(wall)
 
 
-def speed(b, reps, baseline):
-    """Adds the rows; baseline: a build directory of another commit, or None."""
-    builds = [("speed build", b.exe("zblend_bench_rtl")),
-              ("assertion build", b.exe("zblend_bench_rtl_assert"))]
+def speed(b, reps, baseline, pgo):
+    """Adds the rows; baseline: a build directory of another commit, or None; pgo: a build
+    directory of scripts/pgo.sh, or None."""
+    def exe(build, name):
+        path = os.path.join(build, name)
+        if not os.access(path, os.X_OK):
+            raise SystemExit(f"bench: error: {path} is missing (make bench builds it)")
+        return path
+
+    this, with_pgo = "speed build", "speed build with PGO"
+    builds = [(this, b.exe("zblend_bench_rtl"))]
+    zblends = [(this, b.exe("zblend"))]
+    if pgo:
+        builds.append((with_pgo, exe(pgo, "zblend_bench_rtl")))
+        zblends.append((with_pgo, exe(pgo, "zblend")))
+    builds.append(("assertion build", b.exe("zblend_bench_rtl_assert")))
     base = None
     if baseline:
-        rev = open(os.path.join(baseline, "..", "rev")).read().strip()[:7]
-        base = (f"baseline {rev}", os.path.join(baseline, "zblend_bench_rtl"))
-        builds.append(base)
+        with open(os.path.join(baseline, "..", "rev")) as f:
+            base = f"baseline {f.read().strip()[:7]}"
+        builds.append((base, exe(baseline, "zblend_bench_rtl")))
+        zblends.append((base, exe(baseline, "zblend")))
+    ours = [name for name, _ in zblends if name != base]
+
     cycles = {}
-    for name, exe in builds:
-        sim, ceiling, cmd = hazard(b, exe, reps)
+    for name, path in builds:
+        sim, ceiling, cmd = hazard(b, path, reps)
         cycles[name] = sim
         b.add(f"RTL simulation, hazard stream, {name} (Verilator's ceiling in the same run "
               f"{ceiling:.1f} M cycles/s: {100 * sim / ceiling:.1f} % of it)", sim, "M cycles/s",
               "", cmd)
     if base:
-        b.add(f"RTL simulation, hazard stream: speed build / {base[0]}",
-              cycles["speed build"] / cycles[base[0]], "x", ">= 3.5", "the two rows above")
+        for name in ours:
+            b.add(f"RTL simulation, hazard stream: {name} / {base}", cycles[name] / cycles[base],
+                  "x", ">= 3.5", "the rows above")
 
-    zblends = [("", b.exe("zblend"))]
-    if baseline:
-        zblends.append((base[0], os.path.join(baseline, "zblend")))
     out = ["--out", os.path.join(b.out, "cpu.png")]
     for method, target in (("three-pass", "<= 5"), ("depth-peel-4", "<= 12")):
         wall = {}
@@ -64,11 +73,11 @@ def speed(b, reps, baseline):
             rtl = golden + ["--backend", "rtl"]
             g_cpu, _ = cpu_seconds(b, golden, reps)
             r_cpu, wall[name] = cpu_seconds(b, rtl, reps)
-            what = f" ({name})" if name else ""
             b.add(f"zblend render --backend rtl / golden, cad {method} 640x480, whole process "
-                  f"CPU time{what}", r_cpu / g_cpu, "x", "" if name else target,
+                  f"CPU time ({name})", r_cpu / g_cpu, "x", "" if name == base else target,
                   " ; ".join(" ".join(c) for c in (rtl, golden)))
-        if baseline:
-            b.add(f"zblend render --backend rtl, cad {method} 640x480, default threads, end to "
-                  f"end: {base[0]} wall time / this build's", wall[base[0]] / wall[""], "x",
-                  ">= 3", "the runs above")
+        if base:
+            for name in ours:
+                b.add(f"zblend render --backend rtl, cad {method} 640x480, default threads, end "
+                      f"to end: {base} wall time / {name}'s", wall[base] / wall[name], "x",
+                      ">= 3", "the runs above")
