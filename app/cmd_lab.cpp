@@ -301,7 +301,10 @@ void run_lab(const LabCommandOptions& o) {
       if (e.path().extension() == ".png") in.sweep_images.push_back("sweeps/" + e.path().filename().string());
   std::sort(in.sweep_images.begin(), in.sweep_images.end());
 
-  if (!o.quiet) fmt::print(stderr, "zblend lab: {}\n", lab::tile_share_text(in.rows, kRtlBeat));
+  if (!o.quiet) {
+    fmt::print(stderr, "zblend lab: {}\n", lab::tile_share_text(in.rows, kRtlBeat));
+    fmt::print(stderr, "zblend lab: {}\n", lab::stream_share_text(in.rows, kRtlBeat));
+  }
   write(dir / "report.md", lab::report_markdown(in));
   write(dir / "report.html", lab::report_html(in));
   if (!o.quiet)

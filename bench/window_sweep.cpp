@@ -1,6 +1,7 @@
 // zblend_window_sweep: the issue window's depth against streaming cycles per fragment, by the
 // RTL's own schedule (rtlmodel/rtl_timing.h), on the scenes and methods where fragments wait
-// for their pixels. Usage: zblend_window_sweep [WIDTH HEIGHT] [SCENE...] (scene files or
+// for their pixels; with one tile buffer (zb_rop) and with two (the proposed design: each
+// pass's tiles as one stream, IssueSchedule::run_two_buffers, its tile port taking no cycles). Usage: zblend_window_sweep [WIDTH HEIGHT] [SCENE...] (scene files or
 // built-in names; default the lab's two real meshes).
 #include <cctype>
 #include <cstdio>
@@ -46,10 +47,21 @@ class Sweep final : public Backend {
   PassStats end_pass() override {
     bin_by_tile(frags_.data(), frags_.size(), width_, height_, kRtlTileW, kRtlTileH, bins_);
     fragments_ += frags_.size();
+    keys_.assign(bins_.order.size(), 0);
+    std::vector<TileStream> tiles;
+    for (size_t t = 0; t + 1 < bins_.first.size(); ++t) {
+      for (uint32_t k = bins_.first[t]; k < bins_.first[t + 1]; ++k) {
+        const Fragment& g = frags_[bins_.order[k]];
+        keys_[k] = uint32_t(g.y) * uint32_t(width_) + g.x;
+      }
+      if (bins_.first[t + 1] > bins_.first[t])
+        tiles.push_back(TileStream{keys_.data() + bins_.first[t], bins_.first[t + 1] - bins_.first[t], 0, 0});
+    }
     for (size_t w = 0; w < std::size(kWindows); ++w) {
       IssueSchedule schedule(kWindows[w]);
       for (size_t t = 0; t + 1 < bins_.first.size(); ++t)
         cycles_[w] += schedule.run_tile(bins_, t, frags_.data(), width_);
+      two_[w] += schedule.run_two_buffers(tiles).stream;
     }
     return golden_.end_pass();
   }
@@ -57,6 +69,7 @@ class Sweep final : public Backend {
   const Framebuffer& framebuffer() const override { return golden_.framebuffer(); }
 
   double per_fragment(size_t w) const { return double(cycles_[w]) / double(fragments_); }
+  double two_per_fragment(size_t w) const { return double(two_[w]) / double(fragments_); }
 
  private:
   GoldenRop golden_;
@@ -64,7 +77,9 @@ class Sweep final : public Backend {
   std::vector<Fragment> frags_;
   TileBins bins_;
   uint64_t fragments_ = 0;
+  std::vector<uint32_t> keys_;  // the pass's frame pixel indices, in tile order
   uint64_t cycles_[std::size(kWindows)] = {};
+  uint64_t two_[std::size(kWindows)] = {};
 };
 
 }  // namespace
@@ -98,6 +113,9 @@ int main(int argc, char** argv) {
         std::printf("%-24s %-16s", name.substr(slash == std::string::npos ? 0 : slash + 1).c_str(),
                     method);
         for (size_t w = 0; w < std::size(kWindows); ++w) std::printf(" %6.4f", sweep.per_fragment(w));
+        std::printf("\n%-24s %-16s", "", "  two buffers");
+        for (size_t w = 0; w < std::size(kWindows); ++w)
+          std::printf(" %6.4f", sweep.two_per_fragment(w));
         std::printf("\n");
       }
     }

@@ -123,8 +123,13 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
         outer = counters.back().get();
       }
       const RenderResult rr = render(rs, *plan, *outer);
-      for (size_t k = 0; k < kLabBeats.size(); ++k)
-        row.model_tile_cycles[k] = counters[k]->cost().at(kRtlTileW).tile_io_cycles;
+      for (size_t k = 0; k < kLabBeats.size(); ++k) {
+        const TileCost& c = counters[k]->cost().at(kRtlTileW);
+        row.model_tile_cycles[k] = c.tile_io_cycles;
+        row.model_stream_2buf[k] = c.two_buffer_stream;
+        row.model_cycles_2buf[k] = c.two_buffer_cycles;
+      }
+      row.model_pipe_2buf = counters[0]->cost().at(kRtlTileW).two_buffer_pipe;
       row.model_stream_cycles = counters[0]->cost().at(kRtlTileW).stream_cycles;
       if (rtl) {
         row.rtl_stream_cycles = sum_passes(rr).cycles;
@@ -168,8 +173,10 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
       "rtl_mismatch_pixels,rmse,psnr_db,max_abs,share_over_2,share_over_16,delta_e_mean,"
       "delta_e_max,ss_rmse,ss_psnr_db,ss_max_abs,ss_share_over_2,ss_share_over_16,"
       "ss_delta_e_mean,ss_delta_e_max,fair_reference,fair_delta_e_mean,fair_rmse,"
-      "model_stream_cycles";
+      "model_stream_cycles,pipe_cycles_2buf";
   for (const int beat : kLabBeats) csv += fmt::format(",tile_cycles_beat{}", beat);
+  for (const int beat : kLabBeats) csv += fmt::format(",stream_cycles_2buf_beat{}", beat);
+  for (const int beat : kLabBeats) csv += fmt::format(",cycles_2buf_beat{}", beat);
   csv += ",edge_pixels,hidden_drawn,visible_missing,hidden_drawn_share,visible_missing_share\n";
   for (const LabRow& r : rows) {
     const PassStats& s = r.golden;
@@ -184,10 +191,12 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
                      : ",,,";
     std::string model;
     if (r.has_cost) {
-      model = fmt::format("{}", r.model_stream_cycles);
+      model = fmt::format("{},{}", r.model_stream_cycles, r.model_pipe_2buf);
       for (const uint64_t t : r.model_tile_cycles) model += fmt::format(",{}", t);
+      for (const uint64_t t : r.model_stream_2buf) model += fmt::format(",{}", t);
+      for (const uint64_t t : r.model_cycles_2buf) model += fmt::format(",{}", t);
     } else {
-      model = std::string(kLabBeats.size(), ',');
+      model = std::string(3 * kLabBeats.size() + 1, ',');
     }
     const std::string lines =
         r.lines ? fmt::format("{},{},{},{:.6f},{:.6f}", r.lines->edge_pixels,
@@ -221,6 +230,49 @@ std::string tile_share_text(const std::vector<LabRow>& rows, int beat) {
   if (rtl_stream)
     out += fmt::format("; RTL: {} tile / {} streaming cycles = {:.1f}%", rtl_tile, rtl_stream,
                        100.0 * double(rtl_tile) / double(rtl_stream));
+  return out;
+}
+
+std::string stream_share_text(const std::vector<LabRow>& rows, int beat) {
+  const auto at = std::find(kLabBeats.begin(), kLabBeats.end(), beat);
+  const size_t k = size_t(at - kLabBeats.begin());
+  struct Tally {
+    uint64_t cycles = 0, fragments = 0, above = 0, runs = 0;
+    double worst = 0;
+    std::string worst_run;
+    void add(const LabRow& r, uint64_t c) {
+      const uint64_t f = r.golden.fragments_in;
+      if (f == 0) return;
+      cycles += c;
+      fragments += f;
+      ++runs;
+      const double per = double(c) / double(f);
+      above += per > 1.01;
+      if (per > worst) worst = per, worst_run = r.scene + " " + r.method;
+    }
+    double overall() const { return fragments ? double(cycles) / double(fragments) : 0.0; }
+    std::string text() const {
+      return fmt::format("{:.4f} overall, worst {:.3f} ({}), {} of {} runs above 1.01",
+                         overall(), worst, worst_run.empty() ? "none" : worst_run, above, runs);
+    }
+  } one, two, all_one, all_two;
+  for (const LabRow& r : rows) {
+    if (!r.has_cost) continue;
+    const uint64_t stream = r.rtl_cycles ? r.rtl_stream_cycles : r.model_stream_cycles;
+    one.add(r, stream);
+    two.add(r, r.model_pipe_2buf);
+    if (at == kLabBeats.end()) continue;
+    all_one.add(r, r.rtl_cycles ? *r.rtl_cycles : stream + r.model_tile_cycles[k]);
+    all_two.add(r, r.model_cycles_2buf[k]);
+  }
+  std::string out = fmt::format(
+      "streaming cycles per fragment: {}; with a second tile buffer (cost model of the "
+      "proposed design; its fill and drain once a pass): {}", one.text(), two.text());
+  if (at != kLabBeats.end())
+    out += fmt::format(". All cycles per fragment, the tile port's included, at {} pixels a "
+                       "beat: {:.4f} with one buffer, {:.4f} with two (worst run {:.3f}, {})",
+                       beat, all_one.overall(), all_two.overall(), all_two.worst,
+                       all_two.worst_run.empty() ? "none" : all_two.worst_run);
   return out;
 }
 

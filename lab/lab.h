@@ -64,6 +64,11 @@ struct LabRow {
   // each of kLabBeats (at zb_rop's BEAT they are the RTL's).
   uint64_t model_stream_cycles = 0;
   std::array<uint64_t, kLabBeats.size()> model_tile_cycles{};
+  // The cost model with a second tile buffer (docs/rtl.md "A second tile buffer", proposed),
+  // at each of kLabBeats: streaming cycles (each pass's first offer to its last drain) and all
+  // cycles, the tile port's included.
+  std::array<uint64_t, kLabBeats.size()> model_stream_2buf{}, model_cycles_2buf{};
+  uint64_t model_pipe_2buf = 0;  // its streaming cycles with a port of no cycles (TileCost)
   ImageError error;               // against the exact reference
   ImageError error_ss;            // against the supersampled reference
   FairReference fair = FairReference::kExact;
@@ -100,6 +105,11 @@ std::string lab_csv(const std::vector<LabRow>& rows);
 // One line: tile cycles as a share of streaming cycles over `rows` at each of kLabBeats
 // (`beat` marked as zb_rop's), and the RTL's own share when the rows have RTL cycles.
 std::string tile_share_text(const std::vector<LabRow>& rows, int beat);
+// Streaming cycles per fragment over the rows with a cost, as the RTL runs (its figures, or the
+// cost model's, equal, without it) and with a second tile buffer (the pipeline's own): overall,
+// the worst run, the runs above 1.01; and all cycles per fragment, tile port included, with one
+// buffer and with two at `beat` (one of kLabBeats; otherwise left out).
+std::string stream_share_text(const std::vector<LabRow>& rows, int beat);
 
 // The non-dominated points when both coordinates are to be minimised: indices of the points
 // that no other point matches or beats in both and beats in one, in order of x, then y.

@@ -260,6 +260,10 @@ std::string body(const ReportInput& in, Format f) {
                        ". Tile cycles: per touched tile a setup cycle, the beats of the planes "
                        "the pass loads (a cleared plane is fast-cleared, not loaded) and of those "
                        "it stores (docs/rtl.md \"Tile port\").");
+    out += para(f, stream_share_text(in.rows, kRtlBeat) +
+                       ". A second tile buffer would let each tile's stream follow the last "
+                       "without its fill and drain, the port loading and storing the other "
+                       "buffer meanwhile (docs/rtl.md \"A second tile buffer\").");
   }
 
   out += heading(f, 2, "Scene families");

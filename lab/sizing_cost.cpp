@@ -86,7 +86,8 @@ void CostCounter::draw(const Fragment* fragments, size_t count) {
 
 // The driver's run of a pass (rtlmodel/rtl_rop.cpp): per touched tile, the setup cycle and the
 // load beats of its planes (tile_io.h; the whole tile, also where the frame clips it), stream
-// through zb_rop's issue window and drain (IssueSchedule), the store beats.
+// through zb_rop's issue window and drain (IssueSchedule), the store beats; and the same tiles
+// with a second tile buffer.
 PassStats CostCounter::end_pass() {
   const PassStats s = inner_.end_pass();
   cost_.totals += s;
@@ -95,6 +96,9 @@ PassStats CostCounter::end_pass() {
   for (size_t k = 0; k < grids_.size(); ++k) {
     Grid& g = grids_[k];
     TileCost& c = cost_.tiles[k];
+    // The driver runs the touched tiles in tile order; the two-buffer schedule depends on it.
+    std::sort(g.touched.begin(), g.touched.end());
+    std::vector<TileStream> overlapped;
     for (const uint32_t t : g.touched) {
       const int x0 = int(t % uint32_t(g.columns)) * g.size;
       const int y0 = int(t / uint32_t(g.columns)) * g.size;
@@ -107,8 +111,16 @@ PassStats CostCounter::end_pass() {
       c.tile_beats += (io.load ? beats : 0) + (io.store ? beats : 0);
       for (int p = 0; p < kTilePlanes; ++p)
         c.plane_pixels[size_t(p)] += pixels * ((io.load >> p & 1) + (io.store >> p & 1));
-      g.stream[t].clear();
+      overlapped.push_back(TileStream{g.stream[t].data(), g.stream[t].size(),
+                                      kRtlTileSetup + (io.load ? beats : 0),
+                                      io.store ? beats : 0});
     }
+    const OverlapCycles two = schedule_.run_two_buffers(overlapped);
+    c.two_buffer_stream += two.stream;
+    c.two_buffer_cycles += two.total;
+    for (TileStream& t : overlapped) t.load_cycles = t.store_cycles = 0;
+    c.two_buffer_pipe += schedule_.run_two_buffers(overlapped).stream;
+    for (const uint32_t t : g.touched) g.stream[t].clear();
     c.tiles_loaded += g.touched.size();
     g.touched.clear();
   }

@@ -21,6 +21,14 @@ struct TileCost {
   uint64_t stream_cycles = 0;   // per touched tile: issue cycles as zb_rop's window, drain
   uint64_t tile_io_cycles = 0;  // per touched tile: setup, load and store beats (tile_io.h)
   uint64_t tile_beats = 0;      // beats loaded and stored
+  // With a second tile buffer (IssueSchedule::run_two_buffers; docs/rtl.md "A second tile
+  // buffer", proposed): per pass, the first fragment offered to the last drain, and the pass's
+  // cycles, tile port included, summed over passes.
+  uint64_t two_buffer_stream = 0;
+  uint64_t two_buffer_cycles = 0;
+  // The same stream with a tile port that takes no cycles: the pipeline's own cost (fill and
+  // drain once a pass, a buffer reloaded only after its last tile drained), not the port's.
+  uint64_t two_buffer_pipe = 0;
   // Per plane (colour, depth, coverage, peel, accumulation): pixels loaded plus pixels stored.
   std::array<uint64_t, kTilePlanes> plane_pixels{};
   // The RTL's clock cycles for the frame without back-pressure (`zblend render --backend rtl`

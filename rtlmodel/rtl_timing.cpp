@@ -1,6 +1,7 @@
 #include "rtl_timing.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace zb {
 
@@ -13,9 +14,9 @@ IssueSchedule::IssueSchedule(unsigned window, size_t keys)
   entries_.reserve(window_);
 }
 
-uint64_t IssueSchedule::run(const uint32_t* pixel, size_t n, uint64_t* issue,
-                            const uint64_t* accept) {
-  if (n == 0) return 0;
+template <class Ready, class Issued>
+uint64_t IssueSchedule::schedule(const uint32_t* pixel, size_t n, Ready&& ready,
+                                 Issued&& issued) {
   if (++run_ == 0) {  // the stamp wrapped: forget every pixel
     std::fill(stamp_.begin(), stamp_.end(), 0);
     run_ = 1;
@@ -27,7 +28,7 @@ uint64_t IssueSchedule::run(const uint32_t* pixel, size_t n, uint64_t* issue,
     pending_.resize(stamp_.size(), 0);
   }
   entries_.clear();
-  size_t next = 0;      // the fragment in the input register I, from cycle 1
+  size_t next = 0;      // the fragment in the input register I
   uint64_t c = 1, last_issue = 0;
   while (next < n || !entries_.empty()) {
     // The pick of cycle c: the oldest entry whose pixel is free. It issues in c + 2 (K, M).
@@ -37,16 +38,15 @@ uint64_t IssueSchedule::run(const uint32_t* pixel, size_t n, uint64_t* issue,
         pick = e;
         break;
       }
-    // The next fragment is in I (or moving there from S) from the cycle after its accept.
     const bool room = next < n && entries_.size() < window_;
-    const uint64_t ready = room && accept ? accept[next] + 1 : 0;
-    const bool take = room && c >= ready;
+    const uint64_t from = room ? ready(next) : kNever;
+    const bool take = room && c >= from;
     const bool picked_one = pick < entries_.size();
     if (picked_one) {
       const Entry picked = entries_[pick];
       entries_.erase(entries_.begin() + std::ptrdiff_t(pick));
       last_issue = c + kPickToIssue;
-      if (issue) issue[picked.index] = last_issue;
+      issued(picked.index, last_issue);
       last_[picked.pixel] = last_issue;
       if (--pending_[picked.pixel] > 0)
         for (Entry& e : entries_)
@@ -72,15 +72,94 @@ uint64_t IssueSchedule::run(const uint32_t* pixel, size_t n, uint64_t* issue,
       ++next;
     } else if (!picked_one) {
       // Nothing picked and nothing taken: nothing changes until the first entry frees (the
-      // oldest entry of each pixel has a finite `earliest`).
-      uint64_t wake = room ? ready : kNever;
+      // oldest entry of each pixel has a finite `earliest`) or the next fragment arrives.
+      uint64_t wake = from;
       for (const Entry& e : entries_) wake = std::min(wake, e.earliest);
+      if (wake == kNever) throw std::logic_error("IssueSchedule: a fragment waits for nothing");
       c = std::max(c + 1, wake);
       continue;
     }
     ++c;
   }
-  return last_issue + kRtlDrain;
+  return last_issue;
+}
+
+uint64_t IssueSchedule::run(const uint32_t* pixel, size_t n, uint64_t* issue,
+                            const uint64_t* accept) {
+  if (n == 0) return 0;
+  // Fragment k is in I from the cycle after its accept (from cycle 1 without back-pressure).
+  auto ready = [accept](size_t k) { return accept ? accept[k] + 1 : 0; };
+  auto issued = [issue](size_t k, uint64_t c) {
+    if (issue) issue[k] = c;
+  };
+  return schedule(pixel, n, ready, issued) + kRtlDrain;
+}
+
+OverlapCycles IssueSchedule::run_two_buffers(const std::vector<TileStream>& tiles) {
+  OverlapCycles out;
+  if (tiles.empty()) return out;
+  const size_t count = tiles.size();
+  std::vector<uint32_t> keys;
+  std::vector<uint32_t> tile_of;     // per fragment of the pass
+  std::vector<size_t> first(count + 1, 0), left(count);
+  for (size_t t = 0; t < count; ++t) {
+    if (tiles[t].n == 0) throw std::invalid_argument("run_two_buffers: a tile with no fragment");
+    keys.insert(keys.end(), tiles[t].pixel, tiles[t].pixel + tiles[t].n);
+    tile_of.insert(tile_of.end(), tiles[t].n, uint32_t(t));
+    first[t + 1] = first[t] + tiles[t].n;
+    left[t] = tiles[t].n;
+  }
+  std::vector<uint64_t> drain(count, kNever), load_end(count, kNever), last(count, 0);
+  // The port's operations in order: load 0, then for k >= 1 load k and store k - 1; then the
+  // last store. Each starts when the port is free and its inputs are known: a store at its
+  // tile's drain, a load (k >= 2) at the end of the store of tile k - 2, its buffer's.
+  uint64_t port = 0;  // the port is free from this cycle
+  size_t op = 0;      // the next operation: 2k - 1 loads tile k (op 0: tile 0), 2k stores tile k - 1
+  std::vector<uint64_t> store_end(count, kNever);
+  auto advance = [&] {
+    for (;; ++op) {
+      if (op < 2 * count && op % 2 == 0 && op > 0) {  // store tile op/2 - 1
+        const size_t t = op / 2 - 1;
+        if (drain[t] == kNever) return;
+        port = std::max(port, drain[t]) + tiles[t].store_cycles;
+        store_end[t] = port;
+      } else if (op < 2 * count) {  // load tile (op + 1) / 2
+        const size_t t = (op + 1) / 2;
+        if (t >= count) continue;
+        if (t >= 2 && store_end[t - 2] == kNever) return;
+        port = std::max(port, t >= 2 ? store_end[t - 2] : 0) + tiles[t].load_cycles;
+        load_end[t] = port;
+      } else if (op == 2 * count) {  // the last tile's store
+        const size_t t = count - 1;
+        if (drain[t] == kNever) return;
+        port = std::max(port, drain[t]) + tiles[t].store_cycles;
+        store_end[t] = port;
+      } else {
+        return;
+      }
+    }
+  };
+  advance();
+  // Tile t's fragments are offered from the cycle its load ends and taken from the next; the
+  // rest follow in order.
+  auto ready = [&](size_t k) -> uint64_t {
+    const size_t t = tile_of[k];
+    if (k != first[t]) return 0;
+    return load_end[t] == kNever ? kNever : load_end[t] + 1;
+  };
+  auto issued = [&](size_t k, uint64_t c) {
+    const size_t t = tile_of[k];
+    last[t] = std::max(last[t], c);
+    if (--left[t] == 0) {
+      drain[t] = last[t] + kRtlDrain;
+      advance();
+    }
+  };
+  schedule(keys.data(), keys.size(), ready, issued);
+  advance();
+  out.stream = drain[count - 1] - load_end[0];
+  out.total = std::max(port, drain[count - 1]);
+  return out;
 }
 
 uint64_t IssueSchedule::run_tile(const TileBins& bins, size_t tile, const Fragment* f, int width,

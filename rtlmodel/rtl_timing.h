@@ -23,6 +23,21 @@ constexpr uint64_t kRtlFirstIssue = 4;  // a lone fragment: accepted 0, window 2
 constexpr uint64_t kRtlIssueSpan = 4;   // cycles between issues to one pixel
 constexpr uint64_t kRtlDrain = 12;
 
+// One touched tile of a pass for the two-buffer schedule: its fragments' pixel keys (distinct
+// from every other tile's: frame pixel indices), and its cycles at the tile port before its
+// stream (setup and load beats, tile_io.h) and after its drain (store beats).
+struct TileStream {
+  const uint32_t* pixel = nullptr;
+  size_t n = 0;
+  uint64_t load_cycles = 0, store_cycles = 0;
+};
+
+// A pass's cycles with two tile buffers (docs/rtl.md "A second tile buffer").
+struct OverlapCycles {
+  uint64_t stream = 0;  // the first fragment offered to the last tile's drain
+  uint64_t total = 0;   // the first port cycle to the end of the last store (or drain)
+};
+
 // The issue schedule of a tile's stream, cycle for cycle as zb_rop issues it.
 class IssueSchedule {
  public:
@@ -42,6 +57,14 @@ class IssueSchedule {
   uint64_t run_tile(const TileBins& bins, size_t tile, const Fragment* f, int width,
                     uint64_t* issue = nullptr);
 
+  // A pass's touched tiles, in the driver's order, with two tile buffers: the proposed RTL of
+  // docs/rtl.md "A second tile buffer", not zb_rop's yet. Tile k streams in buffer k % 2 while
+  // the one tile port, in the order load 0, load 1, store 0, load 2, store 1, ..., loads the
+  // next tile into the other buffer and stores the one before; a tile is stored once drained,
+  // loaded once the tile before it in its buffer is stored, and offered from the cycle after its
+  // load and the last fragment before it. Fragments of consecutive tiles share the window.
+  OverlapCycles run_two_buffers(const std::vector<TileStream>& tiles);
+
  private:
   struct Entry {
     uint32_t pixel;
@@ -49,6 +72,12 @@ class IssueSchedule {
     uint64_t earliest;  // first cycle it may be picked; kNever while an older one has its pixel
   };
   static constexpr uint64_t kNever = ~uint64_t{0};
+
+  // The window's loop over the concatenated stream pixel[0..n): fragment `next` may be taken
+  // from cycle ready(next) (kNever: not yet known; the window then holds older fragments);
+  // issued(k, c) reports fragment k's issue cycle c. Returns the last issue cycle.
+  template <class Ready, class Issued>
+  uint64_t schedule(const uint32_t* pixel, size_t n, Ready&& ready, Issued&& issued);
 
   unsigned window_;
   uint32_t run_ = 0;                // stamps the pixels this run has seen

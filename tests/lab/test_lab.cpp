@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "lab.h"
+#include "rtl_params.h"
 #include "report.h"
 #include "scene/builtin_scenes.h"
 
@@ -129,6 +130,42 @@ TEST(LabSummary, MeansPerFamilyAndOverAll) {
 }
 
 // The tiny run: two methods on quads at 32x24, golden model and RTL.
+// The streaming summary by hand: two runs of 100 fragments, 101 and 104 streaming cycles as the
+// RTL runs them (200 and 130 in all), 100 and 102 with a second buffer's pipeline, 150 and 140
+// in all with two buffers at 8 pixels a beat; the reference row is left out.
+TEST(LabSummary, StreamShareByHand) {
+  std::vector<zb::lab::LabRow> rows(3);
+  rows[0].scene = "a";
+  rows[0].method = "m1";
+  rows[1].scene = "b";
+  rows[1].method = "m2";
+  for (int k = 0; k < 2; ++k) {
+    rows[size_t(k)].has_cost = true;
+    rows[size_t(k)].golden.fragments_in = 100;
+  }
+  rows[0].rtl_cycles = 200;
+  rows[0].rtl_stream_cycles = 101;
+  rows[1].model_stream_cycles = 104;  // no RTL run: the cost model's
+  const size_t at8 = size_t(std::find(zb::lab::kLabBeats.begin(), zb::lab::kLabBeats.end(), 8) -
+                            zb::lab::kLabBeats.begin());
+  rows[1].model_tile_cycles[at8] = 26;
+  rows[0].model_pipe_2buf = 100;
+  rows[1].model_pipe_2buf = 102;
+  rows[0].model_cycles_2buf[at8] = 150;
+  rows[1].model_cycles_2buf[at8] = 140;
+  rows[2].scene = "c";  // the reference: no cost
+  const std::string text = zb::lab::stream_share_text(rows, 8);
+  EXPECT_NE(text.find("fragment: 1.0250 overall, worst 1.040 (b m2), 1 of 2 runs above 1.01"),
+            std::string::npos) << text;
+  EXPECT_NE(text.find("once a pass): 1.0100 overall, worst 1.020 (b m2), 1 of 2 runs above"),
+            std::string::npos) << text;
+  EXPECT_NE(text.find("8 pixels a beat: 1.6500 with one buffer, 1.4500 with two (worst run "
+                      "1.500, a m1)"),
+            std::string::npos) << text;
+  // A beat the model does not run: no whole-frame figures.
+  EXPECT_EQ(zb::lab::stream_share_text(rows, 1).find("All cycles"), std::string::npos);
+}
+
 TEST(LabRun, TinyCaseCsv) {
   zb::lab::LabScene scene{"quads", "built-in", "three quads",
                           [] { return *zb::builtin_scene("quads"); }};
@@ -165,6 +202,14 @@ TEST(LabRun, TinyCaseCsv) {
             std::stoull(cell(1, "rtl_stream_cycles")) + std::stoull(cell(1, "rtl_tile_cycles")));
   EXPECT_EQ(cell(1, "rtl_mismatch_pixels"), "0");
   EXPECT_GT(std::stod(cell(1, "rmse")), 0.0);  // unsorted gets the left half wrong
+  // One tile a pass: a second buffer has no tile to overlap, so its cycles are the RTL's.
+  if (zb::kRtlTileW >= 32 && zb::kRtlTileH >= 24) {
+    const std::string beat = std::to_string(zb::kRtlBeat);
+    if (cell(1, "cycles_2buf_beat" + beat) != "?") {
+      EXPECT_EQ(cell(1, "cycles_2buf_beat" + beat), cell(1, "rtl_cycles"));
+      EXPECT_EQ(cell(1, "stream_cycles_2buf_beat" + beat), cell(1, "rtl_stream_cycles"));
+    }
+  }
 
   EXPECT_EQ(cell(2, "method"), "reference");
   EXPECT_EQ(cell(2, "passes"), "");

@@ -88,6 +88,67 @@ TEST(IssueSchedule, OnePixelRunsAtTheSpan) {
               kRtlFirstIssue + 99 * kRtlIssueSpan + kRtlDrain);
 }
 
+// Two tile buffers (the proposed design, docs/rtl.md "A second tile buffer"), by hand: two
+// tiles of one fragment each, 5 port cycles of setup and load and 3 of store. Load 0 ends at
+// 5 and load 1 at 10. Tile 0's fragment is taken at 6, picked at 7, issues at 9: drained at
+// 21, stored by 24. Tile 1's is taken at 11, issues at 14, drains at 26, is stored by 29.
+// One buffer: each tile 5 + 16 + 3.
+TEST(TwoBuffers, PortBoundByHand) {
+  const uint32_t a = 0, b = 1;
+  const std::vector<TileStream> tiles{{&a, 1, 5, 3}, {&b, 1, 5, 3}};
+  IssueSchedule schedule;
+  const OverlapCycles c = schedule.run_two_buffers(tiles);
+  EXPECT_EQ(c.total, 29u);
+  EXPECT_EQ(c.stream, 26u - 5u);
+  EXPECT_EQ(2 * (5 + schedule.run(&a, 1) + 3), 48u);
+}
+
+// A buffer is loaded only once the tile before it there is stored: with three tiles, tile 2's
+// load waits for tile 0's store, which waits for tile 0's drain, so tile 2's fragment is
+// offered after that, not behind tile 1's.
+TEST(TwoBuffers, ThirdTileWaitsForTheFirstsStore) {
+  const uint32_t k[3] = {0, 1, 2};
+  const std::vector<TileStream> tiles{{&k[0], 1, 1, 4}, {&k[1], 1, 1, 4}, {&k[2], 1, 1, 4}};
+  IssueSchedule schedule;
+  // Load 0 [0,1), load 1 [1,2). Tile 0 taken 2, issues 5, drains 17; tile 1 taken 3, issues
+  // 6, drains 18. Store 0 [17,21), load 2 [21,22): tile 2 taken 23, issues 26, drains 38.
+  // Store 1 [22,26), store 2 [38,42).
+  const OverlapCycles c = schedule.run_two_buffers(tiles);
+  EXPECT_EQ(c.stream, 38u - 1u);
+  EXPECT_EQ(c.total, 42u);
+}
+
+// Tiles whose port work fits under the stream run as one stream: the fill and drain once per
+// pass, the window shared across tile edges, as one run over all their fragments.
+TEST(TwoBuffers, FillAndDrainOncePerPass) {
+  std::mt19937 rng(3);
+  std::vector<std::vector<uint32_t>> keys(6);
+  std::vector<uint32_t> all;
+  std::vector<TileStream> tiles;
+  for (size_t t = 0; t < keys.size(); ++t) {
+    for (int i = 0; i < 300; ++i) keys[t].push_back(uint32_t(t * 64 + rng() % 64));
+    all.insert(all.end(), keys[t].begin(), keys[t].end());
+  }
+  for (auto& k : keys) tiles.push_back({k.data(), k.size(), 9, 8});
+  IssueSchedule schedule;
+  const OverlapCycles c = schedule.run_two_buffers(tiles);
+  EXPECT_EQ(c.stream, schedule.run(all.data(), all.size()));
+  EXPECT_EQ(c.total, 9 + c.stream + 8);
+  uint64_t one_buffer = 0;
+  for (auto& k : keys) one_buffer += 9 + schedule.run(k.data(), k.size()) + 8;
+  EXPECT_LT(c.total + 5 * (kRtlFirstIssue + kRtlDrain - 1), one_buffer + 1);
+}
+
+TEST(TwoBuffers, OneTileIsTheOneBufferRun) {
+  const uint32_t k[4] = {5, 5, 6, 5};
+  IssueSchedule schedule;
+  const OverlapCycles c = schedule.run_two_buffers({{k, 4, 7, 2}});
+  EXPECT_EQ(c.stream, schedule.run(k, 4));
+  EXPECT_EQ(c.total, 7 + c.stream + 2);
+  EXPECT_EQ(schedule.run_two_buffers({}).total, 0u);
+  EXPECT_THROW(schedule.run_two_buffers({{k, 0, 1, 0}}), std::invalid_argument);
+}
+
 Fragment at(int x, int y) {
   Fragment f;
   f.x = static_cast<uint16_t>(x);
