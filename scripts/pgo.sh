@@ -15,7 +15,7 @@ while getopts "j:d:h" opt; do
   case $opt in
     j) jobs=$OPTARG ;;
     d) dir=$(realpath -m "$OPTARG") ;;
-    *) sed -n '2,7p' "$0" | sed 's/^# \{0,1\}//'; [[ $opt == h ]] && exit 0 || exit 2 ;;
+    *) sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'; [[ $opt == h ]] && exit 0 || exit 2 ;;
   esac
 done
 profile=$dir/pgo
