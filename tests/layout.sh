@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The layout's rules (README.md "Layout"), checked on the tree:
+# The layout's rules (docs/layout.md), checked on the tree:
 #  1. a golden-model header under an area's internal/ is included only inside cmodel/;
 #  2. outside its own folder, a cmodel header is included by area ("raster/raster.h");
 #  3. the golden model includes nothing of the folders built on it.

@@ -1,15 +1,15 @@
 #!/usr/bin/env python3
 """Runs the README's commands as a user would copy them, so that an example that stops working
-fails CI.
+fails CI (also docs/verification.md's, which the README points to).
 
-Every command of every ```sh block of README.md, in order, in a scratch directory where build/
+Every command of every ```sh block of the file, in order, in a scratch directory where build/
 is the build tree and scripts/ the project's: each must exit 0, and each output it names
 (--out, --out-dir, --stats, an export's directory) must exist and not be empty. Not run here,
 each for its reason (REASONS below): `make run` and `make test` (.ci/run runs both, this test
 is inside the second) and the other make targets (hours of both cores; `make -n` checks the
 target exists), and commands whose arguments are the reader's own files (a DUT's sources, a
 hosts file, a Slurm partition: their subcommand's --help must work instead).
-Usage: test_readme.py README.md BUILD_DIR SOURCE_DIR"""
+Usage: test_readme.py FILE.md BUILD_DIR SOURCE_DIR"""
 import os
 import re
 import shlex
