@@ -120,7 +120,7 @@ def prove(module, values, out, defect):
                        for k, v in values)
     tag = "_".join(f"{k}{v}" for k, v in values) or "defaults"
     log = os.path.join(out, f"{module}_{tag}{'_defect' if defect else ''}.log")
-    rc, err = yosys(equiv_script(module, values, defect), log)
+    rc, err = yosys(equiv_script(module, values, defect, out), log)
     with open(log) as f:
         text = f.read()
     m = re.search(r"Of those cells (\d+) are proven and (\d+) are unproven", text)
@@ -130,7 +130,7 @@ def prove(module, values, out, defect):
             values)
 
 
-def equiv_script(module, values, defect):
+def equiv_script(module, values, defect, out):
     harness, others, planted = VIEWS[module]
     chparam = " ".join(f"-set {k} {v}" for k, v in values)
     sources = " ".join(["rtl/zb_pkg.sv"] + [f"rtl/{m}.sv" for m in others + [module]] +
@@ -146,7 +146,7 @@ def equiv_script(module, values, defect):
                 f"opt_clean\ncheck -assert\nrename {harness} {tag}\ndesign -stash {tag}\n")
     unpaired = ""
     if module in UNPAIRED:
-        unpaired = os.path.join(tempfile.gettempdir(), f"equiv_unpaired_{os.getpid()}.txt")
+        unpaired = os.path.join(os.path.abspath(out), f"{module}_unpaired.txt")  # beside the logs
         with open(unpaired, "w") as f:
             f.write("\n".join(UNPAIRED[module]) + "\n")
         unpaired = f"-blacklist {unpaired} "
