@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <unistd.h>
 
 #include <fmt/core.h>
@@ -18,6 +19,29 @@ namespace zb::conformance {
 
 namespace fs = std::filesystem;
 
+std::vector<std::string> trace_features(const Trace& trace) {
+  std::set<std::string> f{fmt::format("depth_bits.{}", trace.depth_bits),
+                          fmt::format("coverage_samples.{}", trace.coverage_samples)};
+  auto resolves = [&](const std::vector<FrameOp>& ops) {
+    for (const FrameOp& op : ops)
+      if (op.kind == FrameOpKind::kResolveWboit) f.insert("accum_plane");
+  };
+  for (const TracePass& p : trace.passes) {
+    resolves(p.frame_ops);
+    if (p.fragments.empty()) continue;
+    const RopState& s = p.state;
+    f.insert(fmt::format("blend.{}", to_string(s.blend)));
+    if (s.blend == BlendMode::kAccumulate) f.insert("accum_plane");
+    const bool coverage = is_coverage_pass(s);
+    if (s.depth_test && !coverage) f.insert(fmt::format("depth_func.{}", to_string(s.depth_func)));
+    if (s.depth_test && s.depth_write) f.insert("depth_write");
+    if ((s.color_mask & kMaskRgba) != kMaskRgba) f.insert("color_mask");
+    if (s.peel_test && !coverage) f.insert("peel_test");
+  }
+  resolves(trace.final_ops);
+  return {f.begin(), f.end()};
+}
+
 TestVectors make_vectors(const TestSpec& t) {
   const Trace trace = test_trace(t);
   TestVectors v;
@@ -26,6 +50,8 @@ TestVectors make_vectors(const TestSpec& t) {
   v.words = s.words;
   v.fragments = s.fragments;
   v.passes = int(trace.passes.size());
+  v.features = trace_features(trace);
+  v.stream_sha256 = sha256_hex(v.stream);
   auto resolves = [](const std::vector<FrameOp>& ops) {
     return std::any_of(ops.begin(), ops.end(),
                        [](const FrameOp& op) { return op.kind == FrameOpKind::kResolveWboit; });
@@ -38,6 +64,7 @@ TestVectors make_vectors(const TestSpec& t) {
   Sha256 hash;
   for (size_t p = 0; p < std::size(kPlanes); ++p) {
     v.expect[p] = plane_hex(golden.framebuffer(), kPlanes[p]);
+    v.expect_sha256[p] = sha256_hex(v.expect[p]);
     hash.update(v.expect[p]);
   }
   v.signature_sha256 = hash.hex();
@@ -85,7 +112,11 @@ nlohmann::json manifest_entry(const TestSpec& t, const TestVectors& v) {
                       {"fragments", v.fragments},
                       {"words", v.words},
                       {"needs_accum", v.needs_accum},
+                      {"features", v.features},
                       {"signature_sha256", v.signature_sha256}};
+  nlohmann::json& files = e["files"] = {{"stream.hex", v.stream_sha256}};
+  for (size_t p = 0; p < std::size(kPlanes); ++p)
+    files[fmt::format("expect.{}.hex", to_string(kPlanes[p]))] = v.expect_sha256[p];
   if (t.kind == TestKind::kScene) {
     e["scene"] = t.scene;
     e["method"] = t.method;

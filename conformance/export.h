@@ -22,7 +22,15 @@ struct TestVectors {
   // A resolve wboit makes its colour from the accumulation plane: a DUT without one cannot run
   // it (the manifest's needs_accum; docs/conformance.md "Skipped tests").
   bool needs_accum = false;
+  // What a DUT must support to run it, sorted (the manifest's "features"; docs/conformance.md
+  // "Features and profiles").
+  std::vector<std::string> features;
+  std::string stream_sha256, expect_sha256[std::size(kPlanes)];  // each file's, for "files"
 };
+
+// The features `trace` asks of a DUT: only passes with fragments count (a pass without any loads
+// no tile, so the DUT never sees its state).
+std::vector<std::string> trace_features(const Trace& trace);
 
 // The test's stream, and its planes after replay_trace onto GoldenRop.
 TestVectors make_vectors(const TestSpec& t);

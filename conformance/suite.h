@@ -17,7 +17,9 @@ constexpr const char* kSuiteName = "zblend-conformance";
 // Version 3: the accumulation plane (expect.accum.hex, in every test's signature; its widths in
 // FRAME and the manifest's configs) and the wboit tests.
 // Version 4: random-wboit, the random stream with resolves (the other tests as in version 3).
-constexpr int kSuiteVersion = 4;
+// Version 5: each test's "features" and the SHA-256 of each of its files (the files' bytes as in
+// version 4).
+constexpr int kSuiteVersion = 5;
 
 // Bad input to the kit (a malformed suite, a path it cannot use, an unknown test): one line.
 struct ConformanceError : std::runtime_error {

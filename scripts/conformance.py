@@ -1,20 +1,31 @@
 #!/usr/bin/env python3
 """Runs a conformance suite on a DUT under a simulator (make conformance, docs/conformance.md).
 
-  conformance.py --suite DIR --sim verilator|icarus --out DIR [--tests a,b] [-j N]
-                 [--dut FILE ...] [--define NAME ...] [--plusarg ARG ...] [--param N=V ...] [--gap P]
-                 [--lockstep --golden-libs LIB ...]
+  conformance.py --suite DIR --sim verilator|icarus --out DIR [--profile FILE]
+                 [--features GLOBS] [--tests GLOBS] [--feature GLOB ...] [--list] [-j N]
+                 [--timeout S] [--watchdog N] [--dut FILE ...] [--define NAME ...]
+                 [--plusarg ARG ...] [--param N=V ...] [--gap P] [--lockstep --golden-libs LIB ...]
 
-For each of the suite's configurations (depth bits, coverage samples) the testbench
-conformance/sv/zb_conf_tb.sv is built once with the DUT (by default zb_rop and its adapter,
-conformance/sv/zb_conf_adapter.sv); each test runs it on its stream.hex and writes
-OUT/<test>/got.<plane>.hex and sim.log; then `zblend conformance check` compares the signatures
-and names the first differing pixel. A DUT whose adapter has no accumulation plane (its
-planes_o) skips the tests that need it: reported as skipped, not passed. Exit 0 when every test
-that ran matches, 1 on a mismatch or a simulation that failed, 2 on bad usage.
+The DUT declares what it supports in a profile (--profile; zb_rop's, the full one, by default):
+features, testbench parameters, its sources, whether it has a retire port. A test whose manifest
+features are not all in the profile is NOT SUPPORTED: not run, not failed, counted apart. For
+each of the suite's configurations (depth bits, coverage samples) the testbench
+conformance/sv/zb_conf_tb.sv is built once with the DUT; each test runs it on its stream.hex
+(killed after --timeout seconds; the testbench's watchdog fails a DUT that stops making
+progress) and writes OUT/<test>/got.<plane>.hex and sim.log; then `zblend conformance check`
+compares the signatures and names the first differing pixel. Every file of the suite is checked
+against the manifest's SHA-256 first: a corrupt suite is bad input, never a DUT failure.
+Results: this text, OUT/results.json and OUT/junit.xml. Exit 0 when every test that ran
+passed, 1 on a failure, a timeout or when no test was supported, 2 on bad usage or a bad suite.
+
+Suite versions: 5 (features and per-file checksums in the manifest). Earlier suites lack the
+features a profile is matched against: export the suite again with this zblend.
 """
 import argparse
 import concurrent.futures
+import fnmatch
+import glob
+import hashlib
 import json
 import math
 import os
@@ -22,14 +33,29 @@ import shlex
 import subprocess
 import sys
 import time
+import xml.etree.ElementTree as ET
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SUITE_VERSION = 4  # conformance/suite.h kSuiteVersion
+SUITE_VERSIONS = (5,)  # the versions this script runs (conformance/suite.h kSuiteVersion)
+# Why each earlier version is refused.
+REFUSED = {v: "it has no per-test features or file checksums (version 5 added them)"
+           for v in range(1, 5)}
 PLANES = ("color", "depth", "coverage", "peel", "accum")
 # The testbench's parameters that each test's configuration sets (manifest "configs").
 CONFIG_PARAMS = {"DEPTH_BITS": "depth_bits", "COV_SAMPLES": "coverage_samples",
                  "ACC_BITS": "acc_bits", "REV_BITS": "rev_bits", "WEIGHT_BITS": "weight_bits"}
 SV = os.path.join(ROOT, "conformance", "sv")
+DEFAULT_PROFILE = os.path.join(SV, "zb_rop.profile.json")
+# The manifest's feature names (conformance/export.cpp trace_features): a profile's pattern must
+# match one, so a misspelt feature is an error, not a silently unsupported test.
+FEATURES = (["blend." + b for b in ("replace", "alpha", "additive", "coverage", "under",
+                                    "accumulate")]
+            + ["depth_func." + f for f in ("never", "less", "equal", "lequal", "greater",
+                                           "notequal", "gequal", "always")]
+            + ["depth_write", "color_mask", "peel_test", "accum_plane"]
+            + [f"depth_bits.{b}" for b in range(8, 33)] + [f"coverage_samples.{n}" for n in
+                                                             (1, 2, 4, 8, 16)])
+PROFILE_KEYS = {"dut", "features", "params", "retire_port", "sources", "defines"}
 
 
 # The waves' save file: the testbench's signals by role (zb_conf_tb.sv), hex for buses.
@@ -98,41 +124,111 @@ def usage_error(msg):
     sys.exit(2)
 
 
-def rtl_sources():
-    """zb_rop's sources, the package first, and its adapter."""
-    rtl = os.path.join(ROOT, "rtl")
-    files = sorted(os.path.join(rtl, f) for f in os.listdir(rtl) if f.endswith(".sv"))
-    pkg = os.path.join(rtl, "zb_pkg.sv")
-    return [pkg] + [f for f in files if f != pkg] + [os.path.join(SV, "zb_conf_adapter.sv")]
-
-
-def load_suite(suite, only):
+def load_suite(suite):
+    """The manifest's configs and tests, after every file of the suite matched its checksum."""
     path = os.path.join(suite, "manifest.json")
+    again = "export it again: zblend conformance export DIR"
     try:
         with open(path) as f:
             m = json.load(f)
     except (OSError, ValueError) as e:
         usage_error(f"{path}: {e} (write a suite with `zblend conformance export DIR`)")
-    if m.get("suite") != "zblend-conformance" or m.get("version") != SUITE_VERSION:
-        usage_error(f"{path}: not a version {SUITE_VERSION} zblend conformance suite")
-    configs = {c["name"]: c for c in m["configs"]}
-    tests = m["tests"]
-    if only:
-        names = {t["name"] for t in tests}
-        unknown = [n for n in only if n not in names]
-        if unknown:
-            usage_error(f"--tests: no test {', '.join(unknown)} in {path}")
-        tests = [t for t in tests if t["name"] in only]
+    if not isinstance(m, dict) or m.get("suite") != "zblend-conformance":
+        usage_error(f"{path}: not a zblend conformance suite (no \"suite\": \"zblend-conformance\")")
+    v = m.get("version")
+    if v not in SUITE_VERSIONS:
+        why = REFUSED.get(v, "it is newer than this script: use the kit of the zblend that wrote it")
+        usage_error(f"{path}: suite version {v} is refused: {why}; this script runs version "
+                    f"{', '.join(map(str, SUITE_VERSIONS))} ({again})")
+    try:
+        configs = {c["name"]: c for c in m["configs"]}
+        tests = m["tests"]
+        for t in tests:
+            t["features"], t["files"], t["config"]  # noqa: B018 (present in every entry)
+    except (KeyError, TypeError) as e:
+        usage_error(f"{path}: malformed manifest, no {e} in an entry ({again})")
+    for t in tests:
+        for name, want in sorted(t["files"].items()):
+            fp = os.path.join(suite, t["name"], name)
+            try:
+                with open(fp, "rb") as f:
+                    got = hashlib.sha256(f.read()).hexdigest()
+            except OSError as e:
+                usage_error(f"corrupt suite: {fp}: {e.strerror} ({again})")
+            if got != want:
+                usage_error(f"corrupt suite: {fp}: SHA-256 {got[:16]}..., the manifest says "
+                            f"{want[:16]}... (truncated or changed; {again})")
     return configs, tests
+
+
+def load_profile(path, features_arg):
+    """The DUT's profile: {features, params, retire_port, sources, defines, dut, path}."""
+    prof = {"features": [], "params": {}, "retire_port": False, "sources": [], "defines": [],
+            "dut": "", "path": path}
+    try:
+        with open(path) as f:
+            j = json.load(f)
+    except (OSError, ValueError) as e:
+        usage_error(f"--profile {path}: {e}")
+    if not isinstance(j, dict):
+        usage_error(f"--profile {path}: not a JSON object")
+    unknown = sorted(set(j) - PROFILE_KEYS)
+    if unknown:
+        usage_error(f"--profile {path}: unknown key {unknown[0]!r} (keys: "
+                    f"{', '.join(sorted(PROFILE_KEYS))})")
+    prof.update(j)
+    base = os.path.dirname(os.path.abspath(path))
+    sources = []
+    for pattern in prof["sources"]:
+        found = sorted(glob.glob(os.path.join(base, pattern)))
+        if not found:
+            usage_error(f"--profile {path}: source {pattern!r} matches no file in {base}")
+        sources += [f for f in found if f not in sources]
+    prof["sources"] = sources
+    if features_arg is not None:
+        prof["features"] = [f for f in features_arg.split(",") if f]
+    for pattern in prof["features"]:
+        if not fnmatch.filter(FEATURES, pattern):
+            usage_error(f"feature {pattern!r} (in {'--features' if features_arg else path}) names "
+                        f"no feature; they are: {', '.join(FEATURES[:18])}, depth_bits.N, "
+                        "coverage_samples.N (globs allowed)")
+    for k, v in prof["params"].items():
+        if not k.isidentifier() or not isinstance(v, int):
+            usage_error(f"--profile {path}: params: {k!r}: {v!r} is not NAME: integer")
+    return prof
+
+
+def missing_features(test, prof):
+    """The test's features the profile does not cover."""
+    return [f for f in test["features"]
+            if not any(fnmatch.fnmatchcase(f, p) for p in prof["features"])]
+
+
+def select(tests, globs, feature_globs):
+    """The tests named by --tests (globs) and using every --feature (globs), in suite order."""
+    chosen = tests
+    if globs:
+        for g in globs:
+            if not any(fnmatch.fnmatchcase(t["name"], g) for t in tests):
+                usage_error(f"--tests: {g!r} names no test of the suite (`--list` shows them)")
+        chosen = [t for t in chosen if any(fnmatch.fnmatchcase(t["name"], g) for g in globs)]
+    for g in feature_globs:
+        if not fnmatch.filter(FEATURES, g):
+            usage_error(f"--feature {g!r} names no feature")
+        chosen = [t for t in chosen if fnmatch.filter(t["features"], g)]
+    if not chosen:
+        usage_error("no test of the suite matches --tests and --feature")
+    return chosen
 
 
 def build(sim, config, a, bdir):
     """Builds the testbench for one configuration; returns the command that runs it."""
     params = {k: config[v] for k, v in CONFIG_PARAMS.items()}
+    params.update(a.prof["params"])
     params.update(a.params)
-    sources = a.dut or rtl_sources()
+    sources = a.dut or a.prof["sources"]
     tb = [os.path.join(SV, "zb_conf_tb.sv")]
-    defines = list(a.define)
+    defines = list(a.prof["defines"]) + list(a.define)
     if a.lockstep:
         defines.append("ZB_CONF_LOCKSTEP")
         tb = [os.path.join(SV, "zb_golden_pkg.sv"),
@@ -143,7 +239,7 @@ def build(sim, config, a, bdir):
         cmd = ["verilator", "--binary", "--timing", "--assert", "-Wall", "--timescale", "1ns/1ps",
                "--top-module", "zb_conf_tb", "-Mdir", bdir, "-o", "zb_conf_tb", "-j", str(a.jobs)]
         cmd += ["--trace-fst", "--trace-structs"] if a.waves else []
-        cmd += ["-Wno-fatal"] if a.dut else [os.path.join(ROOT, "rtl", "lint_waivers.vlt")]
+        cmd += [os.path.join(ROOT, "rtl", "lint_waivers.vlt")] if a.ours else ["-Wno-fatal"]
         cmd += [os.path.join(SV, "zb_conf.vlt")]
         cmd += [os.path.join(SV, "zb_golden_pkg.vlt")] if a.lockstep else []
         cmd += [f"-G{k}={v}" for k, v in params.items()]
@@ -176,6 +272,8 @@ def build(sim, config, a, bdir):
 
 
 def run_test(test, run_cmd, a):
+    """Runs one test's simulation; returns (name, finished, seconds, first error line, verdict
+    hint: "timeout", "not_supported" (the testbench skipped it) or "", DUT lacks accum)."""
     d = os.path.join(a.out, test["name"])
     os.makedirs(d, exist_ok=True)
     for plane in PLANES:
@@ -186,26 +284,46 @@ def run_test(test, run_cmd, a):
     # A lock-step run that failed here before: its waves start 30 cycles before the wrong write.
     first_wrong = mismatch_cycle(os.path.join(d, "sim.log"))
     cmd = run_cmd + [f"+stream={os.path.join(a.suite, test['name'], 'stream.hex')}",
-                     f"+out={d}", f"+gap={a.gap}", f"+seed={a.seed}"] + list(a.plusarg)
+                     f"+out={d}", f"+gap={a.gap}", f"+seed={a.seed}",
+                     f"+watchdog={a.watchdog}"] + list(a.plusarg)
     if a.waves:
         cmd.append(f"+dump={os.path.join(d, 'waves.fst')}")
         if first_wrong is not None:
             cmd.append(f"+dump_from={max(0, first_wrong - 30)}")
     t0 = time.time()
-    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                         start_new_session=True)
+    timed_out = False
+    try:
+        out, _ = p.communicate(timeout=a.timeout)
+    except subprocess.TimeoutExpired:
+        timed_out = True
+        os.killpg(p.pid, 9)
+        out, _ = p.communicate()
+        out += (f"conformance: killed after {a.timeout} s (--timeout): the simulation's output "
+                "up to then is above\n")
+    secs = time.time() - t0
     with open(os.path.join(d, "sim.log"), "w") as f:
-        f.write(shlex.join(cmd) + "\n" + p.stdout)
-    if a.waves:
+        f.write(shlex.join(cmd) + "\n" + out)
+    if a.waves and os.path.exists(os.path.join(d, "waves.fst")):
         write_save_file(os.path.join(d, "waves.fst"), a.sim)
+    lines = out.splitlines()
     # Icarus's $fatal exits 0 on some versions: a run counts only with its done (or skip) line.
-    skipped = "zb_conf: skip:" in p.stdout
-    ok = p.returncode == 0 and ("zb_conf: done:" in p.stdout or skipped)
-    first = next((ln for ln in p.stdout.splitlines()
-                  if ln.startswith(("zb_conf: FAILED", "zb_conf: MISMATCH", "%Error"))), "")
+    skipped = any(ln.startswith("zb_conf: skip:") for ln in lines)
+    finished = not timed_out and p.returncode == 0 and (
+        skipped or any(ln.startswith("zb_conf: done:") for ln in lines))
+    first = next((ln for ln in lines if ln.startswith(
+        ("zb_conf: PROTOCOL", "zb_conf: WATCHDOG", "zb_conf: FAILED", "zb_conf: MISMATCH",
+         "%Error"))), "")
+    if timed_out:
+        first = f"killed after {a.timeout} s (--timeout){': ' + first if first else ''}"
+    elif not finished and not first:
+        first = f"the simulation exited {p.returncode} without its done line (sim.log)"
     # The DUT's planes, as the testbench read them from the adapter.
     no_accum = any(ln.startswith("zb_conf: planes:") and "accum" not in ln.split()
-                   for ln in p.stdout.splitlines())
-    return test["name"], ok, time.time() - t0, first, skipped, no_accum
+                   for ln in lines)
+    hint = "timeout" if timed_out else "not_supported" if skipped and finished else ""
+    return test["name"], finished, secs, first, hint, no_accum
 
 
 def strip_option(argv, name):
@@ -221,17 +339,59 @@ def strip_option(argv, name):
     return out
 
 
+def write_results(a, results, suite_version):
+    """OUT/results.json and OUT/junit.xml: every selected test's verdict, in suite order."""
+    counts = {v: sum(r["verdict"] == v for r in results) for v in VERDICTS}
+    doc = {"suite": a.suite, "suite_version": suite_version, "sim": a.sim,
+           "profile": a.prof["path"], "dut": a.prof["dut"], "counts": counts, "tests": results}
+    with open(os.path.join(a.out, "results.json"), "w") as f:
+        json.dump(doc, f, indent=2)
+        f.write("\n")
+    root = ET.Element("testsuites")
+    suite = ET.SubElement(root, "testsuite", name=f"zblend-conformance-{a.sim}",
+                          tests=str(len(results)), failures=str(counts["fail"]),
+                          errors=str(counts["timeout"]), skipped=str(counts["not_supported"]),
+                          time=f"{sum(r['seconds'] for r in results):.3f}")
+    for r in results:
+        case = ET.SubElement(suite, "testcase", classname=f"conformance.{r['config']}",
+                             name=r["name"], time=f"{r['seconds']:.3f}")
+        if r["verdict"] == "fail":
+            ET.SubElement(case, "failure", message=r["message"]).text = r["message"]
+        elif r["verdict"] == "timeout":
+            ET.SubElement(case, "error", message=r["message"]).text = r["message"]
+        elif r["verdict"] == "not_supported":
+            ET.SubElement(case, "skipped", message="NOT SUPPORTED: " + r["message"])
+    ET.ElementTree(root).write(os.path.join(a.out, "junit.xml"), encoding="utf-8",
+                               xml_declaration=True)
+
+
+VERDICTS = ("pass", "fail", "not_supported", "timeout")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                  formatter_class=argparse.RawDescriptionHelpFormatter,
                                  epilog=__doc__.split("\n\n", 1)[1])
     ap.add_argument("--suite", required=True, help="a suite written by `zblend conformance export`")
     ap.add_argument("--sim", required=True, choices=["verilator", "icarus"])
-    ap.add_argument("--out", required=True, help="got signatures, logs and the builds")
-    ap.add_argument("--tests", default="", help="comma-separated test names (default: all)")
+    ap.add_argument("--out", required=True, help="got signatures, logs, results and the builds")
+    ap.add_argument("--profile", default=DEFAULT_PROFILE,
+                    help="the DUT's profile, JSON (default: zb_rop's, conformance/sv/zb_rop.profile.json)")
+    ap.add_argument("--features", default=None, metavar="GLOBS",
+                    help="comma-separated features the DUT supports, in place of the profile's")
+    ap.add_argument("--tests", default="", metavar="GLOBS",
+                    help="comma-separated test names or globs, e.g. 'cad-*,hazard' (default: all)")
+    ap.add_argument("--feature", action="append", default=[], metavar="GLOB",
+                    help="only the tests that use this feature, e.g. blend.alpha (repeatable: all of them)")
+    ap.add_argument("--list", action="store_true",
+                    help="list the selected tests, supported or not and why; run nothing")
     ap.add_argument("-j", "--jobs", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--timeout", type=float, default=600,
+                    help="seconds a test's simulation may take before it is killed (default 600)")
+    ap.add_argument("--watchdog", type=int, default=10000,
+                    help="cycles without progress before the testbench fails the test (default 10000)")
     ap.add_argument("--dut", nargs="+", default=[],
-                    help="the DUT's sources and its adapter (default: rtl/*.sv, zb_conf_adapter.sv)")
+                    help="the DUT's sources and its adapter, in place of the profile's")
     ap.add_argument("--define", action="append", default=[],
                     help="a preprocessor define, e.g. ZB_INJECT_BLEND_BUG")
     ap.add_argument("--plusarg", action="append", default=[], help="given to every run, e.g. +zb_bug_window")
@@ -240,7 +400,7 @@ def main():
     ap.add_argument("--gap", type=int, default=0, help="percent of cycles with no fragment offered")
     ap.add_argument("--seed", type=int, default=1, help="the gaps' pattern")
     ap.add_argument("--lockstep", action="store_true",
-                    help="the golden model as a DPI-C scoreboard beside the DUT (verilator)")
+                    help="the golden model as a DPI-C scoreboard beside the DUT (verilator; a retire port)")
     ap.add_argument("--golden-libs", nargs="+", default=[],
                     help="with --lockstep: the C API's libraries to link")
     ap.add_argument("--waves", action="store_true",
@@ -252,8 +412,8 @@ def main():
         usage_error(f"--gap {a.gap}: choose 0 to 95 (percent)")
     if a.jobs < 1:
         usage_error(f"-j {a.jobs}: at least 1")
-    if a.lockstep and not a.golden_libs:
-        usage_error("--lockstep needs --golden-libs (the C API's static libraries)")
+    if a.timeout <= 0 or a.watchdog < 1:
+        usage_error("--timeout and --watchdog: more than 0")
     a.params = {}
     for p in a.param:
         name, eq, value = p.partition("=")
@@ -262,18 +422,44 @@ def main():
         if name in CONFIG_PARAMS:
             usage_error(f"--param {name}: set by each test's configuration in the suite")
         a.params[name] = int(value)
+    a.prof = load_profile(a.profile, a.features)
+    a.ours = not a.dut and os.path.abspath(a.profile) == DEFAULT_PROFILE
+    if not a.dut and not a.prof["sources"]:
+        usage_error(f"--profile {a.profile} lists no sources: give them there or with --dut")
+    if a.lockstep and not a.prof["retire_port"]:
+        usage_error(f"--lockstep needs a retire port; the profile {a.profile} says "
+                    "\"retire_port\": false")
+    if a.lockstep and not a.golden_libs:
+        usage_error("--lockstep needs --golden-libs (the C API's static libraries)")
     a.golden_libs = [os.path.abspath(f) for f in a.golden_libs]
     for f in a.golden_libs:
         if not os.path.isfile(f):
             usage_error(f"--golden-libs: no file {f} (build it: cmake --build build "
                         "--target zbgolden_dpi)")
+    if not a.list and not os.access(a.zblend, os.X_OK):
+        usage_error(f"--zblend {a.zblend}: not a program (it checks the signatures: build it, or "
+                    "name the kit's)")
     a.suite = os.path.abspath(a.suite)
     a.out = os.path.abspath(a.out)
-    only = [t for t in a.tests.split(",") if t]
-    configs, tests = load_suite(a.suite, only)
+    configs, all_tests = load_suite(a.suite)
+    with open(os.path.join(a.suite, "manifest.json")) as f:
+        suite_version = json.load(f)["version"]
+    tests = select(all_tests, [g for g in a.tests.split(",") if g], a.feature)
+    unsupported = {t["name"]: missing_features(t, a.prof) for t in tests}
+    unsupported = {k: v for k, v in unsupported.items() if v}
+    if a.list:
+        for t in tests:
+            miss = unsupported.get(t["name"])
+            print(f"{'NOT SUPPORTED' if miss else 'supported':13}  {t['name']:32} "
+                  + (f"needs {', '.join(miss)}" if miss else ", ".join(t["features"])))
+        print(f"{len(tests) - len(unsupported)} of {len(tests)} selected tests supported by "
+              f"{a.profile}")
+        return
+    os.makedirs(a.out, exist_ok=True)
+    to_run = [t for t in tests if t["name"] not in unsupported]
 
     by_config = {}
-    for t in tests:
+    for t in to_run:
         by_config.setdefault(t["config"], []).append(t)
     runs = []
     for name, group in by_config.items():
@@ -281,43 +467,91 @@ def main():
         run_cmd = build(a.sim, configs[name], a, os.path.join(a.out, "build", kind))
         runs += [(t, run_cmd) for t in group]
 
-    unfinished = set()
+    sims = {}
     no_accum = False
     t0 = time.time()
     with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as pool:
         futures = [pool.submit(run_test, t, c, a) for t, c in runs]
         for i, f in enumerate(concurrent.futures.as_completed(futures), 1):
-            name, ok, secs, first, skipped, lacks_accum = f.result()
+            name, finished, secs, first, hint, lacks_accum = f.result()
             no_accum |= lacks_accum
-            if not ok:
-                unfinished.add(name)
-            verdict = "skipped (no accumulation plane)" if ok and skipped else "ok" if ok else "FAILED"
+            sims[name] = (finished, secs, first, hint)
+            verdict = ("skipped (no accumulation plane)" if hint == "not_supported" else
+                       "ok" if finished else "TIMEOUT" if hint == "timeout" else "FAILED")
             print(f"conformance: [{i}/{len(runs)}] {verdict} {name} {secs:.1f} s"
                   + (f": {first}" if first else ""), file=sys.stderr, flush=True)
+    unfinished = sorted(n for n, (done, *_rest) in sims.items() if not done)
     print(f"conformance: {len(runs)} simulations on {a.sim} in {time.time() - t0:.0f} s, "
           f"{len(unfinished)} failed to finish", file=sys.stderr)
-    check = [a.zblend, "conformance", "check", a.suite, a.out]
-    if only:
-        check += ["--tests", ",".join(only)]
-    if no_accum:
-        check.append("--no-accum")
-    p = subprocess.run(check, stdout=subprocess.PIPE, text=True)
-    sys.stdout.write(p.stdout)
-    if p.returncode == 2:
-        sys.exit(2)
-    bad = sorted({ln.split()[1].rstrip(":") for ln in p.stdout.splitlines() if ln.startswith("FAIL ")}
-                 | unfinished)
+
+    checked = {}
+    finished = [t["name"] for t in to_run if sims[t["name"]][0]]
+    if finished:
+        check = [a.zblend, "conformance", "check", a.suite, a.out, "--tests", ",".join(finished)]
+        if no_accum:
+            check.append("--no-accum")
+        p = subprocess.run(check, stdout=subprocess.PIPE, text=True)
+        sys.stdout.write(p.stdout)
+        if p.returncode == 2:
+            sys.exit(2)
+        for ln in p.stdout.splitlines():
+            word, _, rest = ln.partition(" ")
+            if word in ("pass", "FAIL", "skip"):
+                name, _, why = rest.strip().partition(":")
+                checked[name] = (word, why.strip())
+
+    results = []
+    for t in tests:
+        name = t["name"]
+        r = {"name": name, "config": t["config"], "features": t["features"], "seconds": 0.0}
+        if name in unsupported:
+            r.update(verdict="not_supported",
+                     message=f"needs {', '.join(unsupported[name])}, not in the profile")
+        else:
+            done, secs, first, hint = sims[name]
+            r["seconds"] = round(secs, 3)
+            word, why = checked.get(name, ("", ""))
+            if hint == "timeout":
+                r.update(verdict="timeout", message=first)
+            elif not done:
+                r.update(verdict="fail", message=first)
+            elif word == "pass":
+                r.update(verdict="pass", message="")
+            elif word == "skip" or hint == "not_supported":
+                r.update(verdict="not_supported",
+                         message="the DUT has no accumulation plane (planes_o[4] low)")
+            else:
+                r.update(verdict="fail", message=why or "the checker gave no verdict")
+        results.append(r)
+    write_results(a, results, suite_version)
+    counts = {v: sum(r["verdict"] == v for r in results) for v in VERDICTS}
+    if counts["not_supported"]:
+        needs = {}
+        for r in results:
+            for feat in unsupported.get(r["name"], []):
+                needs[feat] = needs.get(feat, 0) + 1
+        print("conformance: NOT SUPPORTED by the profile: " + ", ".join(
+            f"{k} ({v} tests)" for k, v in sorted(needs.items(), key=lambda kv: -kv[1])),
+            file=sys.stderr)
+    print(f"conformance: {counts['pass']} pass, {counts['fail']} fail, {counts['not_supported']} "
+          f"not supported, {counts['timeout']} timeout, of {len(results)} tests "
+          f"(results: {os.path.join(a.out, 'results.json')}, junit.xml)", file=sys.stderr)
+    bad = [r["name"] for r in results if r["verdict"] in ("fail", "timeout")]
     if bad and not a.waves:
         # The same run again, only the failing tests, with waves: one command to paste.
-        again = [sys.argv[0]] + [x for x in sys.argv[1:]]
-        again = strip_option(again, "--tests") + ["--tests", ",".join(bad), "--waves"]
-        print(f"conformance: reproduce with waves: python3 {shlex.join(again)}", file=sys.stderr)
+        again = strip_option(sys.argv[1:], "--tests") + ["--tests", ",".join(bad), "--waves"]
+        print(f"conformance: reproduce: python3 {shlex.join([sys.argv[0]] + again)}",
+              file=sys.stderr)
     elif bad:
         for t in bad:
             w = os.path.join(a.out, t, "waves")
             print(f"conformance: waves: gtkwave {w}.gtkw  ({w}.fst, its save file beside it)",
                   file=sys.stderr)
-    sys.exit(1 if p.returncode != 0 or unfinished else 0)
+    if not bad and counts["pass"] == 0:
+        print("conformance: no test ran to a verdict: the profile supports none of the selection",
+              file=sys.stderr)
+        sys.exit(1)
+    sys.exit(1 if bad else 0)
 
 
 if __name__ == "__main__":

@@ -11,7 +11,13 @@
 // Plusargs: +stream=FILE (required) +out=DIR (existing; default .) +gap=P (percent of cycles
 // with no fragment offered, default 0) +seed=N (the gaps' pattern) +dump=FILE (waves of the
 // run: Verilator built with --trace-fst, or Icarus's vvp run with -fst) +dump_from=C (the waves
-// start at cycle C: GTKWave opens a file at its first time).
+// start at cycle C: GTKWave opens a file at its first time) +watchdog=N (cycles without progress
+// before the test fails, default 10000).
+// The DUT's ports are checked as the run goes: an output that is X or Z, planes_o changing, a
+// store pixel offered outside a store, idle_o high inside one: each a "zb_conf: PROTOCOL:" line
+// naming the port, the rule and the cycle. A DUT that stops making progress (no fragment, load
+// beat or store pixel taken, no idle_o where it is awaited) for N cycles fails with a
+// "zb_conf: WATCHDOG:" line and every port's state, never a silent hang.
 // With ZB_CONF_LOCKSTEP defined, the golden model runs beside it through DPI-C
 // (zb_conf_scoreboard.sv) and every write the DUT makes is compared at its cycle.
 module zb_conf_tb #(
@@ -126,6 +132,55 @@ module zb_conf_tb #(
   always @(posedge clk) begin
     frag_took <= frag_valid && frag_ready;
     ld_took   <= ld_valid && ld_ready;
+  end
+
+  // ---------------------------------------------------------------------------------------
+  // Watchdog and protocol checks.
+  // ---------------------------------------------------------------------------------------
+  int unsigned cycle = 0;          // rising edges since time 0
+  int unsigned last_progress = 0;  // the cycle of the last fragment, beat or pixel taken
+  int unsigned watchdog_cycles;
+  string       phase = "reset";    // what the host waits for, for the watchdog's line
+  bit          storing = 1'b0;     // from the edge that takes st_start_i to the last pixel read
+  bit          checking = 1'b0;    // after reset
+  logic [4:0]  planes_at_reset;
+  always @(posedge clk) cycle <= cycle + 1;
+
+  function automatic void progress();
+    last_progress = cycle;
+  endfunction
+
+  function automatic string port_states();
+    return $sformatf("frag_valid_i=%b frag_ready_o=%b ld_valid_i=%b ld_ready_o=%b st_start_i=%b st_valid_o=%b idle_o=%b planes_o=%b",
+                     frag_valid, frag_ready, ld_valid, ld_ready, st_start, st_valid, idle, planes);
+  endfunction
+
+  function automatic void protocol(input string port, input string rule);
+    $display("zb_conf: PROTOCOL: cycle %0d: %s: %s (%s)", cycle, port, rule, port_states());
+    fail($sformatf("protocol violation on %s at cycle %0d", port, cycle));
+  endfunction
+
+  // Sampled at the falling edge, as the host reads: the values the next rising edge will see.
+  always @(negedge clk) begin
+    if (checking) begin
+      // One port at a time: Icarus 11's $isunknown of a concatenation is X for known bits.
+      if ($isunknown(frag_ready)) protocol("frag_ready_o", "is X or Z after reset");
+      if ($isunknown(ld_ready)) protocol("ld_ready_o", "is X or Z after reset");
+      if ($isunknown(idle)) protocol("idle_o", "is X or Z after reset");
+      if ($isunknown(st_valid)) protocol("st_valid_o", "is X or Z after reset");
+      if (planes !== planes_at_reset)
+        protocol("planes_o", $sformatf("changed from %05b after reset: it is a constant",
+                                       planes_at_reset));
+      if (st_valid && !storing)
+        protocol("st_valid_o", "high with no store under way (a store begins at the edge that takes st_start_i)");
+      if (idle && storing)
+        protocol("idle_o", "high while a store is under way (idle means no load or store under way)");
+      if (cycle - last_progress > watchdog_cycles) begin
+        $display("zb_conf: WATCHDOG: %0d cycles without progress at cycle %0d, %s (%s)",
+                 watchdog_cycles, cycle, phase, port_states());
+        fail($sformatf("no progress for %0d cycles (+watchdog=N to allow more)", watchdog_cycles));
+      end
+    end
   end
 
 `ifdef ZB_CONF_LOCKSTEP
@@ -297,8 +352,10 @@ module zb_conf_tb #(
         ld_peel  = '0;
         ld_acc   = '0;
       end
+      phase = $sformatf("loading tile (%0d, %0d), pixel %0d of %0d: waiting for ld_ready_o", x0, y0, k, Words);
       @(negedge clk);
       while (!ld_took) @(negedge clk);
+      progress();
     end
     ld_valid = 1'b0;
   endtask
@@ -316,6 +373,8 @@ module zb_conf_tb #(
         end
         frag_valid = 1'b1;
         frag_index = k - first;
+        phase = $sformatf("pass %0d, tile (%0d, %0d), fragment %0d of the pass: waiting for frag_ready_o",
+                          n_passes, x0, y0, frag_index);
         frag_x     = w[15:0];
         frag_y     = w[31:16];
         frag_z     = w[63:32];
@@ -326,6 +385,7 @@ module zb_conf_tb #(
 `endif
         @(negedge clk);
         while (!frag_took) @(negedge clk);
+        progress();
         n_frags++;
       end
     end
@@ -333,15 +393,21 @@ module zb_conf_tb #(
   endtask
 
   // Reads the tile back into the frame (its pixels on the frame).
+  // A pixel is taken at each rising edge with st_valid_o high, from the first one after the edge
+  // that takes st_start_i: read here at the falling edge before it.
   task automatic store_tile(input int unsigned x0, input int unsigned y0);
     int unsigned k, x, y;
     st_start = 1'b1;
+    @(posedge clk);
+    storing = 1'b1;
     @(negedge clk);
     st_start = 1'b0;
     k = 0;
     while (k < Words) begin
-      @(negedge clk);
+      phase = $sformatf("storing tile (%0d, %0d), pixel %0d of %0d: waiting for st_valid_o", x0, y0, k, Words);
+      if (k > 0 || !st_valid) @(negedge clk);
       if (st_valid) begin
+        progress();
         x = x0 + k % TILE_W;
         y = y0 + k / TILE_W;
         if (x < width && y < height) begin
@@ -352,20 +418,24 @@ module zb_conf_tb #(
           if (planes[4]) fb_acc[y * width + x] = st_acc;
         end
         k++;
+        if (k == Words) begin
+          @(posedge clk);
+          storing = 1'b0;
+        end
       end
     end
+    phase = $sformatf("after the store of tile (%0d, %0d): waiting for idle_o", x0, y0);
+    @(negedge clk);
     while (!idle) @(negedge clk);
+    progress();
   endtask
 
   task automatic wait_idle;
-    int unsigned waited;
-    waited = 0;
+    phase = $sformatf("pass %0d, tile (%0d, %0d): the tile's fragments sent, waiting for idle_o",
+                      n_passes, tile_x0, tile_y0);
     @(negedge clk);
-    while (!idle) begin
-      @(negedge clk);
-      waited++;
-      if (waited > 1000000) fail("the DUT stayed busy for 10^6 cycles after its last fragment");
-    end
+    while (!idle) @(negedge clk);
+    progress();
   endtask
 
   // One pass: the fragments are words[first .. last - 1]; every tile with one of them is
@@ -445,6 +515,7 @@ module zb_conf_tb #(
     if (!$value$plusargs("out=%s", out_dir)) out_dir = ".";
     if (!$value$plusargs("gap=%d", gap_pct)) gap_pct = 0;
     if (!$value$plusargs("seed=%d", seed)) seed = 1;
+    if (!$value$plusargs("watchdog=%d", watchdog_cycles)) watchdog_cycles = 10000;
     rng = 32'(seed) ^ 32'h9e37_79b9;
     if (rng == 0) rng = 32'h1;
     for (int unsigned k = 0; k <= MAX_WORDS; k++) words[k] = '0;
@@ -484,6 +555,9 @@ module zb_conf_tb #(
     repeat (2) @(negedge clk);
     rst_n = 1'b1;
     @(negedge clk);
+    planes_at_reset = planes;
+    progress();
+    checking = 1'b1;
     if (planes[3:0] != 4'hf)
       fail($sformatf("the adapter's planes_o is %05b: colour, depth, coverage and peel are needed", planes));
     if (planes[4]) $display("zb_conf: planes: color depth coverage peel accum");

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # zblend conformance export: byte-for-byte reproducible (two exports, diff -r), each test's
-# signature_sha256 as sha256sum computes it over its five expect files, each stream's count line
+# signature_sha256 as sha256sum computes it over its five expect files, each file's own hash, each
+# test's features as its stream's PASS words say (decoded here apart), each stream's count line
 # and manifest counts as the files hold them, --quick a subset of the full suite, file for file,
 # and an export over an earlier suite replacing it with nothing left beside it.
 set -u
@@ -17,15 +18,51 @@ cat "$tmp/a.log"
 
 # name, frame and counts of every test, from the manifest (python3 reads the JSON only).
 python3 - "$tmp/a/manifest.json" >"$tmp/tests" <<'PY' || bad "manifest unreadable"
-import json, sys
+import hashlib, json, os, sys
 m = json.load(open(sys.argv[1]))
-assert m["suite"] == "zblend-conformance" and m["version"] == 4
+assert m["suite"] == "zblend-conformance" and m["version"] == 5
 configs = {c["name"] for c in m["configs"]}
+BLEND = ["replace", "alpha", "additive", "coverage", "under", "accumulate"]
+FUNC = ["never", "less", "equal", "lequal", "greater", "notequal", "gequal", "always"]
+
+
+def features(stream):
+    """The features a DUT needs for this stream, decoded from its words (docs/conformance.md
+    "stream.hex"): a pass counts only with fragments."""
+    words = [int(w, 16) for w in stream.split()[1:]]
+    f = {f"depth_bits.{words[0] >> 32 & 0xff}", f"coverage_samples.{words[0] >> 40 & 0xff}"}
+    for i, w in enumerate(words):
+        op = w >> 120
+        if op == 5 and w & 0xf == 4:
+            f.add("accum_plane")
+        if op != 2 or i + 1 >= len(words) or words[i + 1] >> 120 != 3:
+            continue
+        blend = w >> 5 & 7
+        f.add("blend." + BLEND[blend])
+        if blend == 5:
+            f.add("accum_plane")
+        if w & 1 and blend != 3:
+            f.add("depth_func." + FUNC[w >> 1 & 7])
+        if w & 1 and w >> 4 & 1:
+            f.add("depth_write")
+        if w >> 8 & 0xf != 0xf:
+            f.add("color_mask")
+        if w >> 12 & 1 and blend != 3:
+            f.add("peel_test")
+    return sorted(f)
+
+
+suite = os.path.dirname(sys.argv[1])
 assert all((c["acc_bits"], c["rev_bits"], c["weight_bits"]) == (16, 8, 4) for c in m["configs"])
 for t in m["tests"]:
     assert t["config"] in configs, t["name"]
     # Only a resolve wboit needs the accumulation plane: the wboit scene tests and random-wboit.
     assert t["needs_accum"] == (t.get("method") == "wboit" or t["name"] == "random-wboit"), t["name"]
+    d = os.path.join(suite, t["name"])
+    assert sorted(t["files"]) == sorted(os.listdir(d)), t["name"]
+    for name, sha in t["files"].items():
+        assert hashlib.sha256(open(os.path.join(d, name), "rb").read()).hexdigest() == sha, (t["name"], name)
+    assert t["features"] == features(open(os.path.join(d, "stream.hex")).read()), t["name"]
     print(t["name"], t["width"] * t["height"], t["words"], t["signature_sha256"])
 PY
 tests=0

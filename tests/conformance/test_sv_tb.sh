@@ -70,7 +70,7 @@ case $mode in
     c=$(sed -n 's/^zb_conf: MISMATCH at cycle \([0-9]*\):.*/\1/p' "$log")
     # The printed command reproduces it with waves: the FST starts 30 cycles before the wrong
     # write, its save file puts marker A at that cycle.
-    again=$(sed -n 's/^conformance: reproduce with waves: //p' "$out/log.txt")
+    again=$(sed -n 's/^conformance: reproduce: //p' "$out/log.txt")
     [[ -n $again ]] || fail "no reproduce command printed"
     (cd "$root" && eval "$again") >"$out/again.txt" 2>&1 && fail "the reproduce command passed"
     grep -q "^zb_conf: MISMATCH at cycle $c:" "$log" || fail "the reproduce command did not fail at cycle $c"
