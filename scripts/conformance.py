@@ -291,7 +291,8 @@ def run_test(test, run_cmd, a):
         if first_wrong is not None:
             cmd.append(f"+dump_from={max(0, first_wrong - 30)}")
     t0 = time.time()
-    p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+    # Line-buffered, so a run killed at --timeout keeps what it printed.
+    p = subprocess.Popen(["stdbuf", "-oL", "-eL"] + cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                          start_new_session=True)
     timed_out = False
     try:
@@ -452,8 +453,8 @@ def main():
             miss = unsupported.get(t["name"])
             print(f"{'NOT SUPPORTED' if miss else 'supported':13}  {t['name']:32} "
                   + (f"needs {', '.join(miss)}" if miss else ", ".join(t["features"])))
-        print(f"{len(tests) - len(unsupported)} of {len(tests)} selected tests supported by "
-              f"{a.profile}")
+        print(f"{len(tests) - len(unsupported)} of {len(tests)} selected tests supported by the "
+              f"profile ({'--features' if a.features is not None else a.profile})")
         return
     os.makedirs(a.out, exist_ok=True)
     to_run = [t for t in tests if t["name"] not in unsupported]
