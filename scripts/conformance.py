@@ -30,8 +30,10 @@ import json
 import math
 import os
 import shlex
+import shutil
 import subprocess
 import sys
+import tarfile
 import time
 import xml.etree.ElementTree as ET
 
@@ -122,6 +124,25 @@ def write_save_file(fst, sim):
 def usage_error(msg):
     print(f"conformance.py: error: {msg}", file=sys.stderr)
     sys.exit(2)
+
+
+def unpack_suite(archive, out):
+    """A suite archive (.tar.gz, as `make kit` writes it) unpacked into OUT/suite; its folder."""
+    dest = os.path.join(out, "suite")
+    try:
+        with tarfile.open(archive) as tar:
+            for m in tar.getmembers():
+                if m.name.startswith("/") or ".." in m.name.split("/") or not (m.isfile() or m.isdir()):
+                    usage_error(f"--suite {archive}: member {m.name!r} is not a plain file inside it")
+            if os.path.isdir(dest):
+                shutil.rmtree(dest)
+            tar.extractall(dest)
+    except (OSError, tarfile.TarError) as e:
+        usage_error(f"--suite {archive}: {e}")
+    for d, _, files in os.walk(dest):
+        if "manifest.json" in files:
+            return d
+    usage_error(f"--suite {archive}: no manifest.json inside (is it a suite archive?)")
 
 
 def load_suite(suite):
@@ -373,7 +394,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                  formatter_class=argparse.RawDescriptionHelpFormatter,
                                  epilog=__doc__.split("\n\n", 1)[1])
-    ap.add_argument("--suite", required=True, help="a suite written by `zblend conformance export`")
+    ap.add_argument("--suite", required=True,
+                    help="a suite written by `zblend conformance export`, or its .tar.gz archive")
     ap.add_argument("--sim", required=True, choices=["verilator", "icarus"])
     ap.add_argument("--out", required=True, help="got signatures, logs, results and the builds")
     ap.add_argument("--profile", default=DEFAULT_PROFILE,
@@ -442,6 +464,9 @@ def main():
                     "name the kit's)")
     a.suite = os.path.abspath(a.suite)
     a.out = os.path.abspath(a.out)
+    if os.path.isfile(a.suite):
+        os.makedirs(a.out, exist_ok=True)
+        a.suite = unpack_suite(a.suite, a.out)
     configs, all_tests = load_suite(a.suite)
     with open(os.path.join(a.suite, "manifest.json")) as f:
         suite_version = json.load(f)["version"]

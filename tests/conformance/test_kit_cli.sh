@@ -54,6 +54,13 @@ grep -q "cad-opaque\|cad-coverage-aa" "$out/list.txt" && fail "--list: a test wi
 grep -q "^5 of 7 selected tests supported by the profile (--features)$" "$out/list.txt" ||
   fail "--list: the count line: $(tail -1 "$out/list.txt")"
 
+# A suite archive is unpacked, checked and listed alike.
+tar czf "$out/suite.tar.gz" -C "$(dirname "$suite")" "$(basename "$suite")"
+conf --suite "$out/suite.tar.gz" --out "$out/arc" --list --tests 'cad-*,random' --feature blend.alpha \
+  --features 'blend.replace,blend.alpha,depth_func.*,depth_write,color_mask,depth_bits.*,coverage_samples.*' \
+  >"$out/list-arc.txt" || fail "--list of the archive exited $?"
+cmp -s "$out/list.txt" "$out/list-arc.txt" || fail "the archive lists differently: $(diff "$out/list.txt" "$out/list-arc.txt")"
+
 # A run: two tests pass on zb_rop, one NOT SUPPORTED; results as data.
 conf --suite "$suite" --out "$out/run" --tests 'cad-three-pass,cad-opaque,cad-coverage-aa' \
   --features 'blend.replace,blend.alpha,depth_func.*,depth_write,color_mask,depth_bits.*,coverage_samples.*' \
