@@ -7,7 +7,7 @@ ZBLEND     := $(BUILD)/zblend
 RUN_SIZE   ?= --width 640 --height 480
 
 .DEFAULT_GOAL := build
-.PHONY: help setup full-tree build run test test-release test-asan test-tsan regress conformance mutate bench pgo bench-verilator profile-rtl synth formal systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
+.PHONY: help setup full-tree build run test test-release test-asan test-tsan regress conformance kit kit-install mutate bench pgo bench-verilator profile-rtl synth formal systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
 
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | awk -F'\t' '{printf "%-16s %s\n", $$1, $$2}'
@@ -130,6 +130,20 @@ conformance: build ## The conformance suite on zb_rop under Verilator, Icarus an
 	  --param TILE_W=32 --param TILE_H=32
 	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim verilator --out $(CONF_DIR)/lockstep \
 	  -j $(JOBS) --gap 20 --lockstep --golden-libs $(CONF_LIBS)
+
+# The conformance kit alone, as an outside team installs it (docs/conformance.md "The kit"): its
+# own tree without Verilator (ZBLEND_KIT_ONLY; fails if anything Verilated is built), laid out
+# and archived with the suite in out/kit/, or installed under PREFIX.
+KIT_BUILD ?= build-kit
+PREFIX    ?= /usr/local
+
+kit: ## The conformance kit alone, no Verilator: out/kit/zblend-conformance-kit-<version>.tar.gz, the suite's tarball
+	@scripts/setup.sh kit
+	@scripts/kit.sh -j $(JOBS) -d $(KIT_BUILD) --out out/kit
+
+kit-install: ## The conformance kit installed under PREFIX (default /usr/local): bin/, lib/, include/, share/zblend-conformance/
+	@scripts/setup.sh kit
+	@scripts/kit.sh -j $(JOBS) -d $(KIT_BUILD) --install $(PREFIX)
 
 # Only zblend is built, its log shown only if the build fails; render makes out/waves/.
 waves: setup $(BUILD)/CMakeCache.txt ## Render `cad` on the RTL with a waveform and its GTKWave save file: out/waves/cad.fst, .gtkw

@@ -115,7 +115,11 @@ void add_conformance_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "conformance", "The conformance kit's vectors: export a suite, check a DUT's planes");
   cmd->require_subcommand(1, 1);
+  add_conformance_commands(*cmd);
+}
 
+void add_conformance_commands(CLI::App& parent) {
+  CLI::App* cmd = &parent;
   auto e = std::make_shared<ExportOptions>();
   CLI::App* exp = cmd->add_subcommand(
       "export", "Write the suite (streams, expected planes, manifest) to DIR, replacing an "

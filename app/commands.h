@@ -28,7 +28,13 @@ void add_trace_command(CLI::App& app);
 void add_info_commands(CLI::App& app);  // methods, scenes, plan
 void add_lab_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
-void add_conformance_command(CLI::App& app);  // export, check
+void add_conformance_command(CLI::App& app);  // conformance export, conformance check
+// `export` and `check` themselves, on `parent`: zblend's conformance, or zblend-conformance.
+void add_conformance_commands(CLI::App& parent);
+
+// Parses the command line and runs the chosen command: 0; a usage error or bad input, one line
+// on stderr, 2; a verification failure or an internal error, 1. Every program's main.
+int run_app(CLI::App& app, int argc, char** argv);
 
 // What every subcommand that renders takes: the scene, its camera and the frame.
 struct FrameOptions {

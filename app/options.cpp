@@ -2,6 +2,8 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <limits>
 #include <mutex>
@@ -287,6 +289,30 @@ std::string parse_error_line(const CLI::App& app, const CLI::ParseError& e) {
   if (near.empty())
     return fmt::format("{}: error: unknown option '{}' (see '{} --help')", program, typed, program);
   return fmt::format("{}: error: unknown option '{}'; did you mean '{}'?", program, typed, near);
+}
+
+int run_app(CLI::App& app, int argc, char** argv) {
+  const std::string name = app.get_name();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "%s\n", parse_error_line(app, e).c_str());
+    return 2;
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "%s: error: %s\n", name.c_str(), e.what());
+    return 2;
+  } catch (const VerificationError& e) {
+    std::fprintf(stderr, "%s: FAILED: %s\n", name.c_str(), e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: internal error: %s\n", name.c_str(), e.what());
+    return 1;
+  }
+  return 0;
 }
 
 }  // namespace zb::app

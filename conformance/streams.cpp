@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "rtl_params.h"
-#include "suites.h"
+#include "stimulus.h"
 
 namespace zb::conformance {
 
@@ -40,8 +40,8 @@ namespace {
 // The random stream's draws: edge values of each field about half the time.
 class RandomStream {
  public:
-  RandomStream(uint64_t seed, int width, int height, int depth_bits, int samples, bool wboit)
-      : rng_(seed), w_(width), h_(height), zmax_(depth_max(depth_bits)), n_(samples), wboit_(wboit) {
+  RandomStream(uint64_t seed, int width, int height, int depth_bits, int samples, RandomMix mix)
+      : rng_(seed), w_(width), h_(height), zmax_(depth_max(depth_bits)), n_(samples), mix_(mix) {
     for (uint32_t& z : zpool_) z = depth();
   }
 
@@ -53,7 +53,11 @@ class RandomStream {
     s.blend = BlendMode(rng_.below(kBlendModes));
     s.color_mask = rng_.chance(0.5) ? uint8_t(kMaskRgba) : uint8_t(rng_.below(16));
     s.peel_test = rng_.chance(0.3);
-    if (wboit_ && rng_.chance(0.5)) s.blend = BlendMode::kAccumulate;
+    if (mix_ == RandomMix::kWboit && rng_.chance(0.5)) s.blend = BlendMode::kAccumulate;
+    if (mix_ == RandomMix::kCore) {  // drawn after the others: their draws stay as they were
+      s.blend = rng_.chance(0.5) ? BlendMode::kReplace : BlendMode::kAlpha;
+      s.peel_test = false;
+    }
     return s;
   }
 
@@ -64,7 +68,7 @@ class RandomStream {
     if (rng_.chance(0.25)) ops.push_back({FrameOpKind::kClearDepth, {}, depth(), false});
     if (rng_.chance(0.15)) ops.push_back({FrameOpKind::kClearColor, color(), 0, false});
     if (rng_.chance(0.15)) ops.push_back({FrameOpKind::kResolveUnder, color(), 0, false});
-    if (wboit_ && rng_.chance(0.2)) ops.push_back({FrameOpKind::kResolveWboit, {}, 0, false});
+    if (mix_ == RandomMix::kWboit && rng_.chance(0.2)) ops.push_back({FrameOpKind::kResolveWboit, {}, 0, false});
     return ops;
   }
 
@@ -129,15 +133,15 @@ class RandomStream {
   int w_, h_;
   uint32_t zmax_;
   int n_;
-  bool wboit_;
+  RandomMix mix_;
   uint32_t zpool_[kPool] = {};
 };
 
 }  // namespace
 
 Trace random_trace(uint64_t seed, int width, int height, int depth_bits, int coverage_samples,
-                   int passes, size_t per_pass, bool wboit) {
-  RandomStream r(seed, width, height, depth_bits, coverage_samples, wboit);
+                   int passes, size_t per_pass, RandomMix mix) {
+  RandomStream r(seed, width, height, depth_bits, coverage_samples, mix);
   Trace t;
   t.width = width;
   t.height = height;

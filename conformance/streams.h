@@ -24,8 +24,11 @@ uint8_t coverage_for_samples(int count, int from, int to);
 // depths repeated across the stream; alpha 0, 1, 254, 255; coverage 0, 1, N - 1, N), a share
 // of them in runs on 1 to 4 pixels. Drawn from tb::Rng(seed). With `wboit`, half the passes
 // accumulate and a resolve (frame operation 4) follows a fifth of them, among the clears; the
-// draws without it are those of suite version 2 on.
+// draws without it are those of suite version 2 on. With kCore, only what every ROP has: the
+// replace and alpha blends, no peel test (every depth function, depth write and colour mask
+// still drawn), for a DUT of a subset profile.
+enum class RandomMix { kAll, kWboit, kCore };
 Trace random_trace(uint64_t seed, int width, int height, int depth_bits, int coverage_samples,
-                   int passes, size_t per_pass, bool wboit = false);
+                   int passes, size_t per_pass, RandomMix mix = RandomMix::kAll);
 
 }  // namespace zb::conformance

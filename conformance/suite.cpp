@@ -78,10 +78,12 @@ TestSpec hazard_test(const Config& c) {
   return t;
 }
 
-TestSpec random_test(const Config& c, bool wboit = false) {
+TestSpec random_test(const Config& c, RandomMix mix = RandomMix::kAll) {
   TestSpec t;
-  t.name = named(wboit ? "random-wboit" : "random", c);
-  t.wboit = wboit;
+  const char* what = mix == RandomMix::kWboit ? "random-wboit"
+                     : mix == RandomMix::kCore ? "random-core" : "random";
+  t.name = named(what, c);
+  t.mix = mix;
   t.config = c;
   t.kind = TestKind::kRandom;
   t.seed = kRandomSeed;
@@ -111,12 +113,15 @@ std::vector<TestSpec> suite_tests(bool quick) {
   for (const SceneInfo& s : builtin_scenes())
     for (const PassPlan& p : pass_plans())
       if (uses_accumulation(p)) all.push_back(scene_test(kBase, s.name, p.name));
-  all.push_back(random_test(kBase, true));  // version 4
+  all.push_back(random_test(kBase, RandomMix::kWboit));  // version 4
+  all.push_back(random_test(kBase, RandomMix::kCore));   // version 5
   all.push_back(hazard_test(kCoverage4));
   all.push_back(random_test(kCoverage4));
-  for (const Config* c : {&kDepth16, &kDepth32})
+  for (const Config* c : {&kDepth16, &kDepth32}) {
     for (const char* scene : kWidthScenes)
       for (const char* method : kWidthMethods) all.push_back(scene_test(*c, scene, method));
+    all.push_back(random_test(*c, RandomMix::kCore));  // version 5
+  }
   for (TestSpec& t : all)
     t.quick = std::find(std::begin(kQuick), std::end(kQuick), t.name) != std::end(kQuick);
   if (quick)
@@ -153,7 +158,7 @@ Trace test_trace(const TestSpec& t) {
       break;
     case TestKind::kRandom:
       trace = random_trace(t.seed, t.width, t.height, c.depth_bits, c.coverage_samples,
-                           kRandomPasses, kRandomFragments, t.wboit);
+                           kRandomPasses, kRandomFragments, t.mix);
       break;
   }
   trace.wboit = c.wboit;

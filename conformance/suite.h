@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/trace.h"
+#include "streams.h"
 
 namespace zb::conformance {
 
@@ -17,8 +18,9 @@ constexpr const char* kSuiteName = "zblend-conformance";
 // Version 3: the accumulation plane (expect.accum.hex, in every test's signature; its widths in
 // FRAME and the manifest's configs) and the wboit tests.
 // Version 4: random-wboit, the random stream with resolves (the other tests as in version 3).
-// Version 5: each test's "features" and the SHA-256 of each of its files (the files' bytes as in
-// version 4).
+// Version 5: each test's "features" and the SHA-256 of each of its files; random-core (and -d16,
+// -d32) at the end of their configs' groups, the random stream in the replace and alpha blends
+// only, for subset DUTs (the other tests' bytes as in version 4).
 constexpr int kSuiteVersion = 5;
 
 // Bad input to the kit (a malformed suite, a path it cannot use, an unknown test): one line.
@@ -43,7 +45,7 @@ struct TestSpec {
   TestKind kind = TestKind::kScene;
   std::string scene, method;  // kScene: a built-in scene and a pass plan
   uint64_t seed = 0;          // kHazard, kRandom
-  bool wboit = false;         // kRandom: accumulate passes and resolves (random_trace)
+  RandomMix mix = RandomMix::kAll;  // kRandom: which states and frame operations (random_trace)
   int width = 0, height = 0;
   bool quick = false;         // in the CI-sized subset (export --quick)
 };

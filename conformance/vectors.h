@@ -27,6 +27,15 @@ struct Stream {
 // clamps clear depths).
 Stream encode_stream(const Trace& t);
 
+// stream.hex back into a trace, encode_stream's inverse: every word checked against the format
+// and against what the golden model accepts (widths, pixels, depths, coverage, pass states,
+// frame operations, the commands' order), so replay_trace can take the result. Passes are named
+// "pass-<k>" from 1; the fragments' front and prim, which the stream does not carry, are zero.
+// Throws TraceError, one line: "NAME line N: what is wrong (how to fix it)"; line 1 is the count.
+Trace decode_stream(const std::string& text, const std::string& name);
+// decode_stream of the file at `path`; a file that cannot be read is a TraceError too.
+Trace read_stream(const std::string& path);
+
 // The planes, in signature order; the name in expect.<name>.hex and got.<name>.hex. kAccum is
 // the accumulation word {r, acc_A, acc_B, acc_G, acc_R} (acc_R at bit 0; zb_rop's AccW bits).
 enum class Plane { kColor, kDepth, kCoverage, kPeel, kAccum };

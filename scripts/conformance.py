@@ -46,7 +46,14 @@ PLANES = ("color", "depth", "coverage", "peel", "accum")
 # The testbench's parameters that each test's configuration sets (manifest "configs").
 CONFIG_PARAMS = {"DEPTH_BITS": "depth_bits", "COV_SAMPLES": "coverage_samples",
                  "ACC_BITS": "acc_bits", "REV_BITS": "rev_bits", "WEIGHT_BITS": "weight_bits"}
+# In the source tree: ROOT/conformance/sv and the checker build/zblend. In the kit (make kit):
+# this script in share/zblend-conformance/scripts, the SV files in ../sv, the checker in bin/.
 SV = os.path.join(ROOT, "conformance", "sv")
+if not os.path.isdir(SV):
+    SV = os.path.join(ROOT, "sv")
+CHECKERS = [os.path.join(ROOT, "build", "zblend"),
+            os.path.join(ROOT, "..", "..", "bin", "zblend-conformance"),
+            os.path.join(ROOT, "build-kit", "zblend-conformance")]
 DEFAULT_PROFILE = os.path.join(SV, "zb_rop.profile.json")
 # The manifest's feature names (conformance/export.cpp trace_features): a profile's pattern must
 # match one, so a misspelt feature is an error, not a silently unsupported test.
@@ -428,8 +435,11 @@ def main():
                     help="with --lockstep: the C API's libraries to link")
     ap.add_argument("--waves", action="store_true",
                     help="every run writes OUT/<test>/waves.fst (the testbench built with tracing)")
-    ap.add_argument("--zblend", default=os.path.join(ROOT, "build", "zblend"),
-                    help="the zblend command that checks the signatures")
+    ap.add_argument("--zblend", default=next((c for c in CHECKERS if os.access(c, os.X_OK)),
+                                             CHECKERS[0]),
+                    help="the program that checks the signatures: zblend, or the kit's "
+                         "zblend-conformance (default: the first of build/zblend, the kit's "
+                         "bin/zblend-conformance, build-kit/zblend-conformance)")
     a = ap.parse_args()
     if not 0 <= a.gap <= 95:
         usage_error(f"--gap {a.gap}: choose 0 to 95 (percent)")
@@ -513,7 +523,9 @@ def main():
     checked = {}
     finished = [t["name"] for t in to_run if sims[t["name"]][0]]
     if finished:
-        check = [a.zblend, "conformance", "check", a.suite, a.out, "--tests", ",".join(finished)]
+        sub = ["check"] if os.path.basename(a.zblend).startswith("zblend-conformance") else \
+            ["conformance", "check"]
+        check = [a.zblend] + sub + [a.suite, a.out, "--tests", ",".join(finished)]
         if no_accum:
             check.append("--no-accum")
         p = subprocess.run(check, stdout=subprocess.PIPE, text=True)

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages zblend needs, only those missing. Quiet when all are present.
-# Usage: setup.sh [run|test|synth|profile|view]
+# Usage: setup.sh [run|test|kit|synth|profile|view]
 #   run:     what `make run` needs to build zblend and render: a compiler, CMake, Verilator and
 #            the libraries zblend links (GLM, stb, CLI11, nlohmann-json, fmt, OpenSSL's
 #            libcrypto for the conformance signatures' SHA-256, tinyobjloader, tinygltf).
@@ -12,6 +12,8 @@
 #            server and iproute2 (the regression runner's tests, docs/regressions.md: the ssh
 #            test starts its own sshds in network namespaces); GTKWave and Xvfb (the waves'
 #            test).
+#   kit:     what `make kit` needs to build the conformance kit alone: run's without Verilator
+#            and zlib, and Python 3 with NumPy (the kit's Python module, conformance/python).
 #   synth:   test's, and nextpnr-ice40 and IceStorm (`make synth`).
 #   profile: test's, and perf (`make profile-rtl`).
 #   view:    test's, and Chromium and ImageMagick (HTML reports and waves, headless, screenshots).
@@ -23,10 +25,12 @@ group=${1:-test}
 packages=(
   build-essential cmake make
   libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev libfmt-dev libssl-dev
-  verilator zlib1g-dev
   libtinyobjloader-dev libtinygltf-dev
 )
-if [[ $group != run ]]; then
+if [[ $group != kit ]]; then
+  packages+=(verilator zlib1g-dev)
+fi
+if [[ $group != run && $group != kit ]]; then
   packages+=(
     libgtest-dev libbenchmark-dev
     iverilog libsystemc-dev
@@ -41,11 +45,12 @@ if [[ $group != run ]]; then
 fi
 case $group in
   run | test) ;;
+  kit) packages+=(python3 python3-numpy) ;;
   synth) packages+=(nextpnr-ice40 fpga-icestorm) ;;
   profile) packages+=(linux-perf) ;;
   view) packages+=(chromium imagemagick) ;;
   *)
-    echo "setup: error: unknown group '$group' (choose run, test, synth, profile or view)" >&2
+    echo "setup: error: unknown group '$group' (choose run, test, kit, synth, profile or view)" >&2
     exit 2
     ;;
 esac

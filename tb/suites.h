@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cosim.h"
+#include "stimulus.h"
 
 namespace zb::tb {
 
@@ -40,19 +41,6 @@ struct Tally {
   std::string note;
 };
 
-struct Rng {  // splitmix64: suites' stimulus
-  uint64_t s;
-  explicit Rng(uint64_t seed) : s(seed * 0x2545f4914f6cdd1dull + 0x1234567) {}
-  uint64_t next() {
-    uint64_t z = (s += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
-  uint32_t below(uint32_t n) { return uint32_t((next() >> 32) * n >> 32); }
-  bool chance(double p) { return double(next() >> 11) * 0x1.0p-53 < p; }
-};
-
 // The Cosim options of one iteration: back-pressure pattern `seed`, the run's waveforms.
 CosimOptions cosim_options(const Config& c, uint64_t seed);
 
@@ -79,20 +67,6 @@ bool run_iteration(const char* suite, const Config& c, uint64_t seed, Tally& t,
 // One labelled pass: begin, draw `f`, end (compares).
 void draw_pass(Cosim& cs, const std::string& name, const RopState& st,
                const std::vector<Fragment>& f);
-
-// The hazard suite's stimulus on one kRtlTileW x kRtlTileH tile, one pass at a time: mostly
-// states where back-to-back fragments change the pixel (the read-modify-write path), and
-// streams of long runs on 1-4 pixels mixed with random ones. Also drives bench/bench_rtl.cpp.
-class HazardStimulus {
- public:
-  explicit HazardStimulus(uint64_t seed);
-  RopState next_state();
-  std::vector<Fragment> next_fragments(size_t count);
-
- private:
-  Rng rng_;
-  std::vector<uint32_t> zpool_;  // depths repeated across the stream: equal-depth cases
-};
 
 // The suites, one function each.
 Tally suite_scenes(const Config& c);  // every built-in scene x every pass plan at 96x72

@@ -1,9 +1,11 @@
 // The C API over GoldenRop (zb_golden.h). Each call checks its arguments against the rules of
 // docs/datapath.md before the model sees them, so the model's own checks (which throw) are never
-// reached from here; a catch-all turns anything left into a status all the same.
+// reached from here; a catch-all turns anything left into a status all the same. A stream file
+// is checked word by word by the kit's decoder (vectors.h decode_stream) before it is replayed.
 #include "zb_golden.h"
 
 #include <exception>
+#include <memory>
 #include <new>
 #include <string>
 
@@ -11,6 +13,7 @@
 
 #include "geometry/geometry.h"
 #include "rop/rop.h"
+#include "vectors.h"
 
 struct zb_golden {
   zb::GoldenRop rop;
@@ -21,7 +24,8 @@ struct zb_golden {
 
 namespace {
 
-// A failed create has no handle to hold its error: this thread's, as errno and dlerror() do.
+// A failed create or replay_file has no handle to hold its error: this thread's, as errno and
+// dlerror() do.
 thread_local std::string handleless_error;
 
 // A failed call's status and line; the line is what is wrong, then how to fix it.
@@ -42,8 +46,22 @@ void put(T* out, T value) {
   if (out) *out = value;
 }
 
-// Runs `body` (which returns an empty Failure line on success) with g's error cleared, and
-// turns a failure or any exception into a status and g's line. `call` names the function.
+// `body`'s Failure (an empty line on success), or any exception it throws as one.
+template <class Body>
+Failure caught(Body body) {
+  try {
+    return body();
+  } catch (const std::bad_alloc&) {
+    return {ZB_ENOMEM, "out of memory"};
+  } catch (const std::exception& e) {
+    return {ZB_EINTERNAL, fmt::format("internal error of the golden model, please report it: {}", e.what())};
+  } catch (...) {
+    return {ZB_EINTERNAL, "internal error of the golden model, please report it"};
+  }
+}
+
+// Runs `body(*g)` with g's error cleared, and turns a failure into a status and g's line.
+// `call` names the function.
 template <class Body>
 int guarded(zb_golden* g, const char* call, Body body) {
   if (!g) {
@@ -51,21 +69,22 @@ int guarded(zb_golden* g, const char* call, Body body) {
     return ZB_EHANDLE;
   }
   g->error.clear();
-  Failure f{ZB_OK, ""};
-  try {
-    f = body(*g);
-  } catch (const std::bad_alloc&) {
-    f = {ZB_ENOMEM, "out of memory"};
-  } catch (const std::exception& e) {
-    f = {ZB_EINTERNAL, fmt::format("internal error of the golden model, please report it: {}", e.what())};
-  } catch (...) {
-    f = {ZB_EINTERNAL, "internal error of the golden model, please report it"};
-  }
+  const Failure f = caught([&] { return body(*g); });
   if (f.status != ZB_OK) g->error = fmt::format("{}: {}", call, f.line);
   return f.status;
 }
 
+// The same for a call that makes a handle: its error is the thread's.
+template <class Body>
+int handleless(const char* call, Body body) {
+  handleless_error.clear();
+  const Failure f = caught(body);
+  if (f.status != ZB_OK) handleless_error = fmt::format("{}: {}", call, f.line);
+  return f.status;
+}
+
 const Failure kOk{ZB_OK, ""};
+const char* const kNoHandle = "out is NULL (pass the address of a zb_golden* to receive the handle)";
 
 Failure check_pixel(const zb::Framebuffer& fb, int x, int y) {
   if (x < 0 || x >= fb.width || y < 0 || y >= fb.height)
@@ -74,38 +93,91 @@ Failure check_pixel(const zb::Framebuffer& fb, int x, int y) {
   return kOk;
 }
 
+Failure check_plane(int plane) {
+  if (plane < ZB_PLANE_COLOR || plane > ZB_PLANE_REVEAL)
+    return {ZB_EARG, fmt::format("plane {} is not a plane (0 colour, 1 depth, 2 coverage, 3 peel, "
+                                 "4 to 7 accumulation R, G, B, A, 8 revealage)", plane)};
+  return kOk;
+}
+
+// Pixel i of a plane that check_plane accepted.
+uint32_t plane_value(const zb::Framebuffer& fb, int plane, size_t i) {
+  switch (plane) {
+    case ZB_PLANE_COLOR: return pack(fb.color[i]);
+    case ZB_PLANE_DEPTH: return fb.depth[i];
+    case ZB_PLANE_COVERAGE: return fb.coverage[i];
+    case ZB_PLANE_PEEL: return fb.peel[i];
+    case ZB_PLANE_REVEAL: return fb.reveal_at(i);
+    default: return fb.accum_at(i)[size_t(plane - ZB_PLANE_ACC_R)];
+  }
+}
+
 }  // namespace
 
 extern "C" {
 
 int zb_golden_create(zb_golden** out, int width, int height, int depth_bits,
                      int coverage_samples, uint32_t clear_rgba) {
-  handleless_error.clear();
-  const auto fail = [&](int status, const std::string& line) {
-    handleless_error = "zb_golden_create: " + line;
-    return status;
-  };
-  if (!out) return fail(ZB_EARG, "out is NULL (pass the address of a zb_golden* to receive the handle)");
-  *out = nullptr;
-  if (width < 1 || width > zb::kMaxFrameSize || height < 1 || height > zb::kMaxFrameSize)
-    return fail(ZB_EARG, fmt::format("frame {}x{} is out of range (width and height 1 to {})",
-                                     width, height, zb::kMaxFrameSize));
-  if (depth_bits < zb::kMinDepthBits || depth_bits > zb::kMaxDepthBits)
-    return fail(ZB_EARG, fmt::format("depth_bits {} is out of range ({} to {})", depth_bits,
-                                     zb::kMinDepthBits, zb::kMaxDepthBits));
-  if (!zb::valid_coverage_samples(coverage_samples))
-    return fail(ZB_EARG, fmt::format("coverage_samples {} is not 1, 2, 4, 8 or 16", coverage_samples));
-  try {
-    auto* g = new zb_golden;
-    g->rop.begin_frame(width, height, depth_bits, unpack(clear_rgba), coverage_samples);
-    *out = g;
-    return ZB_OK;
-  } catch (const std::bad_alloc&) {
-    return fail(ZB_ENOMEM, fmt::format("out of memory for a {}x{} frame (choose a smaller one)",
-                                       width, height));
-  } catch (const std::exception& e) {
-    return fail(ZB_EINTERNAL, fmt::format("internal error of the golden model, please report it: {}", e.what()));
-  }
+  return handleless("zb_golden_create", [&]() -> Failure {
+    if (!out) return {ZB_EARG, kNoHandle};
+    *out = nullptr;
+    if (width < 1 || width > zb::kMaxFrameSize || height < 1 || height > zb::kMaxFrameSize)
+      return {ZB_EARG, fmt::format("frame {}x{} is out of range (width and height 1 to {})", width,
+                                   height, zb::kMaxFrameSize)};
+    if (depth_bits < zb::kMinDepthBits || depth_bits > zb::kMaxDepthBits)
+      return {ZB_EARG, fmt::format("depth_bits {} is out of range ({} to {})", depth_bits,
+                                   zb::kMinDepthBits, zb::kMaxDepthBits)};
+    if (!zb::valid_coverage_samples(coverage_samples))
+      return {ZB_EARG, fmt::format("coverage_samples {} is not 1, 2, 4, 8 or 16", coverage_samples)};
+    try {
+      auto g = std::make_unique<zb_golden>();
+      g->rop.begin_frame(width, height, depth_bits, unpack(clear_rgba), coverage_samples);
+      *out = g.release();
+    } catch (const std::bad_alloc&) {
+      return {ZB_ENOMEM, fmt::format("out of memory for a {}x{} frame (choose a smaller one)",
+                                     width, height)};
+    }
+    return kOk;
+  });
+}
+
+int zb_golden_replay_file(zb_golden** out, const char* stream_path) {
+  return handleless("zb_golden_replay_file", [&]() -> Failure {
+    if (!out) return {ZB_EARG, kNoHandle};
+    *out = nullptr;
+    if (!stream_path) return {ZB_EARG, "stream_path is NULL (give a test's stream.hex)"};
+    zb::Trace t;
+    try {
+      t = zb::conformance::read_stream(stream_path);
+    } catch (const zb::TraceError& e) {
+      return {ZB_EARG, e.what()};
+    }
+    auto g = std::make_unique<zb_golden>();
+    try {
+      zb::replay_trace(t, g->rop);
+    } catch (const std::bad_alloc&) {
+      return {ZB_ENOMEM, fmt::format("{}: out of memory for its {}x{} frame", stream_path,
+                                     t.width, t.height)};
+    }
+    g->started = true;
+    *out = g.release();
+    return kOk;
+  });
+}
+
+int zb_golden_frame_info(zb_golden* g, int* width, int* height, int* depth_bits,
+                         int* coverage_samples, int* acc_bits, int* rev_bits, int* weight_bits) {
+  return guarded(g, "zb_golden_frame_info", [&](zb_golden& h) -> Failure {
+    const zb::Framebuffer& fb = h.rop.framebuffer();
+    put(width, fb.width);
+    put(height, fb.height);
+    put(depth_bits, fb.depth_bits);
+    put(coverage_samples, fb.coverage_samples);
+    put(acc_bits, fb.wboit.acc_bits);
+    put(rev_bits, fb.wboit.rev_bits);
+    put(weight_bits, fb.wboit.weight_bits);
+    return kOk;
+  });
 }
 
 void zb_golden_destroy(zb_golden* g) { delete g; }
@@ -217,19 +289,23 @@ int zb_golden_read(zb_golden* g, int plane, int x, int y, uint32_t* value) {
     if (!value) return {ZB_EARG, "value is NULL (pass the address of a uint32_t)"};
     const zb::Framebuffer& fb = h.rop.framebuffer();
     if (Failure f = check_pixel(fb, x, y); f.status != ZB_OK) return f;
-    const size_t i = fb.index(x, y);
-    switch (plane) {
-      case ZB_PLANE_COLOR: *value = pack(fb.color[i]); return kOk;
-      case ZB_PLANE_DEPTH: *value = fb.depth[i]; return kOk;
-      case ZB_PLANE_COVERAGE: *value = fb.coverage[i]; return kOk;
-      case ZB_PLANE_PEEL: *value = fb.peel[i]; return kOk;
-      case ZB_PLANE_ACC_R: case ZB_PLANE_ACC_G: case ZB_PLANE_ACC_B: case ZB_PLANE_ACC_A:
-        *value = fb.accum_at(i)[size_t(plane - ZB_PLANE_ACC_R)];
-        return kOk;
-      case ZB_PLANE_REVEAL: *value = fb.reveal_at(i); return kOk;
-    }
-    return {ZB_EARG, fmt::format("plane {} is not a plane (0 colour, 1 depth, 2 coverage, 3 peel, "
-                                 "4 to 7 accumulation R, G, B, A, 8 revealage)", plane)};
+    if (Failure f = check_plane(plane); f.status != ZB_OK) return f;
+    *value = plane_value(fb, plane, fb.index(x, y));
+    return kOk;
+  });
+}
+
+int zb_golden_read_plane(zb_golden* g, int plane, uint32_t* out, size_t count) {
+  return guarded(g, "zb_golden_read_plane", [&](zb_golden& h) -> Failure {
+    if (Failure f = check_plane(plane); f.status != ZB_OK) return f;
+    const zb::Framebuffer& fb = h.rop.framebuffer();
+    const size_t n = size_t(fb.width) * size_t(fb.height);
+    if (!out) return {ZB_EARG, fmt::format("out is NULL (pass an array of {} uint32_t)", n)};
+    if (count != n)
+      return {ZB_EARG, fmt::format("count {} is not the {}x{} frame's {} pixels (pass an array "
+                                   "of width * height values)", count, fb.width, fb.height, n)};
+    for (size_t i = 0; i < n; ++i) out[i] = plane_value(fb, plane, i);
+    return kOk;
   });
 }
 

@@ -3,7 +3,8 @@
  *
  * One handle is one frame: create it with the widths, then per pass: begin (the 13-bit pass
  * state register), push fragments one by one (each returns the writes it made), end (the
- * counters); frame operations between passes; read any pixel of any plane at any time.
+ * counters); frame operations between passes; read any pixel of any plane at any time. Or
+ * replay a conformance test's stream.hex onto a new frame in one call and read whole planes.
  *
  * Every call that can fail returns a status (ZB_OK or a ZB_E* code), changes nothing when it
  * fails, and leaves one line, what is wrong and how to fix it, for zb_golden_last_error. No call
@@ -13,6 +14,7 @@
 #ifndef ZB_GOLDEN_H_
 #define ZB_GOLDEN_H_
 
+#include <stddef.h>
 #include <stdint.h>
 
 #ifdef __cplusplus
@@ -102,9 +104,28 @@ int zb_golden_frame_op(zb_golden* g, int kind, uint32_t value_rgba, uint32_t dep
  * planes hold every write so far). */
 int zb_golden_read(zb_golden* g, int plane, int x, int y, uint32_t* value);
 
+/* Reads a command stream, a test's stream.hex (docs/conformance.md "stream.hex"), and replays it
+ * on a new frame: FRAME's widths, clear colour and accumulation widths, then every pass,
+ * fragment and frame operation in order, as the exporter did to compute the test's expect
+ * files. On success *out is the handle, between passes: read its planes (or go on with more
+ * passes). On failure *out is NULL and zb_golden_last_error(NULL) names the file and, for a
+ * malformed or truncated stream, the line (line 1 is the count): ZB_EARG for a file that cannot
+ * be read or is not a valid stream, ZB_ENOMEM for a frame too big. */
+int zb_golden_replay_file(zb_golden** out, const char* stream_path);
+
+/* The frame's widths, as created (or read from FRAME); any pointer may be NULL. */
+int zb_golden_frame_info(zb_golden* g, int* width, int* height, int* depth_bits,
+                         int* coverage_samples, int* acc_bits, int* rev_bits, int* weight_bits);
+
+/* A whole plane (ZB_PLANE_*), each pixel's value as zb_golden_read gives it, row-major from row
+ * 0 (the expect files' order): out[y * width + x]. count is out's length in values and must be
+ * width * height. */
+int zb_golden_read_plane(zb_golden* g, int plane, uint32_t* out, size_t count);
+
 /* The error of the last call on `g`: one line, "" when it succeeded. With NULL: the last error
- * of a call in this thread that had no handle (a failed create, or a NULL handle passed). The
- * text stays valid until the next call with the same handle (or NULL). Never NULL. */
+ * of a call in this thread that had no handle (a failed create or replay_file, or a NULL handle
+ * passed). The text stays valid until the next call with the same handle (or NULL). Never
+ * NULL. */
 const char* zb_golden_last_error(const zb_golden* g);
 
 #ifdef __cplusplus

@@ -9,24 +9,27 @@
 # back-front (replace and alpha, less), hidden-line (colour mask 0, lequal) and hidden-line-dim
 # (greater) are supported; facing-additive (additive), coverage-aa (coverage), depth-peel-2/4/8
 # (under, the peel test) and wboit (accumulate) are not, nor the hazard and random streams (every
-# blend mode). So d24-c16: 10 scenes x 6 methods = 60 of 123; d24-c4 (hazard-c4, random-c4): 0 of
-# 2; d16-c16 and d32-c16: 3 scenes x {three-pass, hidden-line} = 6 of 12 each. The suite: 72
-# supported, 77 NOT SUPPORTED; its cad-* tests: 6 + 2 + 2 = 10 of 20.
+# blend mode); random-core (and -d16, -d32), the random stream kept to replace and alpha without
+# the peel test, is. So d24-c16: 10 scenes x 6 methods + random-core = 61 of 124; d24-c4
+# (hazard-c4, random-c4): 0 of 2; d16-c16 and d32-c16: 3 scenes x {three-pass, hidden-line} +
+# random-core = 7 of 13 each. The suite: 75 supported, 77 NOT SUPPORTED; its cad-* tests: 6 + 2 +
+# 2 = 10 of 20, and random-core.
 if(NOT ZBLEND_SANITIZE)
   set(ref ${CMAKE_CURRENT_SOURCE_DIR}/test_ref_dut.sh)
   set(zb $<TARGET_FILE:zblend>)
   set(w ${CMAKE_CURRENT_BINARY_DIR})
   add_test(NAME conformance_ref_lint COMMAND ${ref} lint)
-  # The whole suite: Verilator builds three configurations (3 to 5 s each) and runs the 72 tests
+  # The whole suite: Verilator builds three configurations (3 to 5 s each) and runs the 75 tests
   # in a few seconds.
   add_test(NAME conformance_ref_verilator
-           COMMAND ${ref} pass verilator ${suite} ${w}/ref-verilator ${zb} "" 72 77)
-  # Icarus: every cad test, at the three depth widths the supported tests come in.
+           COMMAND ${ref} pass verilator ${suite} ${w}/ref-verilator ${zb} "" 75 77)
+  # Icarus: every cad test, at the three depth widths the supported tests come in, and the
+  # random stream of every depth function.
   add_test(NAME conformance_ref_icarus
-           COMMAND ${ref} pass icarus ${suite} ${w}/ref-icarus ${zb} "cad-*" 10 10)
+           COMMAND ${ref} pass icarus ${suite} ${w}/ref-icarus ${zb} "cad-*,random-core" 11 10)
   # Another stall seed, most cycles stalled (160 of 256) and gaps in the fragment stream.
   add_test(NAME conformance_ref_random_stalls
-           COMMAND ${ref} stalls verilator ${suite} ${w}/ref-stalls ${zb} "" 72 77 7 160 25
+           COMMAND ${ref} stalls verilator ${suite} ${w}/ref-stalls ${zb} "" 75 77 7 160 25
                    cad-three-pass)
   add_test(NAME conformance_ref_bug
            COMMAND ${ref} bug verilator ${suite} ${w}/ref-bug ${zb} cad-opaque,cad-three-pass

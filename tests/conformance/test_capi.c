@@ -3,10 +3,13 @@
  * exported tests replayed through the API, read straight from their stream.hex (a decoder of
  * the format independent of the exporter's encoder): every push's reported writes must be what
  * the planes then hold, every pass's counters must add up, and the final planes must equal the
- * test's expect files, which the exporter computed with GoldenRop.
+ * test's expect files, which the exporter computed with GoldenRop. Each test again through
+ * zb_golden_replay_file (the library's own decoder) and zb_golden_read_plane: the same planes.
+ * The stream reader's errors: hand-made streams, each wrong in one way, and a suite's stream
+ * cut short.
  *
  * Usage: test_capi SUITE [TEST...]   (no TEST: every test directory of SUITE) */
-#define _POSIX_C_SOURCE 200809L /* opendir */
+#define _POSIX_C_SOURCE 200809L /* opendir, mkstemp */
 
 #include <dirent.h>
 #include <inttypes.h>
@@ -246,6 +249,78 @@ static uint32_t hex_field(const char* hex, int lo, int width) {
   return v;
 }
 
+/* The nine planes of a frame (ZB_PLANE_COLOR .. ZB_PLANE_REVEAL), width * height values each,
+ * row-major from row 0. */
+typedef struct {
+  int width, height, acc_bits, rev_bits;
+  uint32_t* v[N_READ_PLANES];
+} frame_planes;
+
+static int planes_alloc(frame_planes* f, int width, int height, int acc_bits, int rev_bits) {
+  int p, ok = 1;
+  f->width = width;
+  f->height = height;
+  f->acc_bits = acc_bits;
+  f->rev_bits = rev_bits;
+  for (p = 0; p < N_READ_PLANES; ++p) {
+    f->v[p] = (uint32_t*)calloc((size_t)width * (size_t)height, sizeof(uint32_t));
+    ok &= f->v[p] != NULL;
+  }
+  CHECK(ok, "out of memory for a %dx%d frame's planes", width, height);
+  return ok;
+}
+
+static void planes_free(frame_planes* f) {
+  int p;
+  for (p = 0; p < N_READ_PLANES; ++p) free(f->v[p]);
+}
+
+/* Every pixel of every plane through zb_golden_read. */
+static void planes_by_pixel(zb_golden* g, frame_planes* f) {
+  int p, x, y;
+  for (p = 0; p < N_READ_PLANES; ++p)
+    for (y = 0; y < f->height; ++y)
+      for (x = 0; x < f->width; ++x)
+        f->v[p][(size_t)y * (size_t)f->width + (size_t)x] = read_plane(g, p, x, y);
+}
+
+/* The planes against SUITE/TEST/expect.<plane>.hex: the first differing pixel and a count. */
+static void compare_expect(const char* suite, const char* test, const frame_planes* f) {
+  char path[4096];
+  FILE* file;
+  int p;
+  for (p = 0; p < 5; ++p) {
+    int x, y, differ = 0;
+    snprintf(path, sizeof path, "%s/%s/expect.%s.hex", suite, test, kPlaneNames[p]);
+    file = fopen(path, "r");
+    CHECK(file != NULL, "cannot open %s", path);
+    if (!file) continue;
+    for (y = 0; y < f->height; ++y)
+      for (x = 0; x < f->width; ++x) {
+        const size_t i = (size_t)y * (size_t)f->width + (size_t)x;
+        char hex[40];
+        int k, same = 1;
+        if (fscanf(file, "%39s", hex) != 1) {
+          CHECK(0, "%s: too short", path);
+          x = f->width, y = f->height;
+          break;
+        }
+        if (p < 4) { /* one word */
+          same = f->v[p][i] == hex_field(hex, 0, 32);
+        } else { /* the accumulation word: acc R, G, B, A, then r, from bit 0 */
+          for (k = 0; k < 4; ++k)
+            same &= f->v[ZB_PLANE_ACC_R + k][i] == hex_field(hex, k * f->acc_bits, f->acc_bits);
+          same &= f->v[ZB_PLANE_REVEAL][i] == hex_field(hex, 4 * f->acc_bits, f->rev_bits);
+        }
+        if (!same && differ++ == 0)
+          CHECK(0, "%s: %s pixel (%d, %d): expect file %s, C API differs", test, kPlaneNames[p],
+                x, y, hex);
+      }
+    CHECK(differ == 0, "%s: %d %s pixels differ", test, differ, kPlaneNames[p]);
+    fclose(file);
+  }
+}
+
 /* Replays SUITE/TEST/stream.hex through the API and compares the planes with the expect files. */
 static void replay(const char* suite, const char* test) {
   char path[4096];
@@ -253,8 +328,9 @@ static void replay(const char* suite, const char* test) {
   word128 word;
   zb_golden* g = NULL;
   uint64_t count, n, pass_fragments = 0, fragments = 0;
-  int width = 0, height = 0, ended = 0, in_pass = 0, p, acc_bits = 0, rev_bits = 0;
+  int width = 0, height = 0, ended = 0, in_pass = 0, acc_bits = 0, rev_bits = 0;
   const int failures_before = failures;
+  frame_planes planes;
 
   snprintf(path, sizeof path, "%s/%s/stream.hex", suite, test);
   f = fopen(path, "r");
@@ -325,38 +401,194 @@ static void replay(const char* suite, const char* test) {
   fclose(f);
   if (g == NULL) return;
 
-  for (p = 0; p < 5; ++p) {
-    int x, y, differ = 0;
-    snprintf(path, sizeof path, "%s/%s/expect.%s.hex", suite, test, kPlaneNames[p]);
-    f = fopen(path, "r");
-    CHECK(f != NULL, "cannot open %s", path);
-    if (!f) continue;
-    for (y = 0; y < height; ++y)
-      for (x = 0; x < width; ++x) {
-        char hex[40];
-        int k, same = 1;
-        if (fscanf(f, "%39s", hex) != 1) {
-          CHECK(0, "%s: too short", path);
-          x = width, y = height;
-          break;
-        }
-        if (p < 4) { /* one word */
-          same = read_plane(g, p, x, y) == hex_field(hex, 0, 32);
-        } else { /* the accumulation word: acc R, G, B, A, then r, from bit 0 */
-          for (k = 0; k < 4; ++k)
-            same &= read_plane(g, ZB_PLANE_ACC_R + k, x, y) == hex_field(hex, k * acc_bits, acc_bits);
-          same &= read_plane(g, ZB_PLANE_REVEAL, x, y) == hex_field(hex, 4 * acc_bits, rev_bits);
-        }
-        if (!same && differ++ == 0)
-          CHECK(0, "%s: %s pixel (%d, %d): expect file %s, C API differs", test, kPlaneNames[p],
-                x, y, hex);
-      }
-    CHECK(differ == 0, "%s: %d %s pixels differ", test, differ, kPlaneNames[p]);
-    fclose(f);
+  if (planes_alloc(&planes, width, height, acc_bits, rev_bits)) {
+    planes_by_pixel(g, &planes);
+    compare_expect(suite, test, &planes);
   }
+  planes_free(&planes);
   zb_golden_destroy(g);
   printf("%s: %s: %" PRIu64 " words, %" PRIu64 " fragments, %dx%d x 5 planes\n", test,
          failures == failures_before ? "equal" : "FAILED", count, fragments, width, height);
+}
+
+/* SUITE/TEST through zb_golden_replay_file, every plane read whole: the expect files again. */
+static void replay_file(const char* suite, const char* test) {
+  char path[4096];
+  zb_golden* g = NULL;
+  frame_planes planes;
+  int width = 0, height = 0, depth_bits = 0, samples = 0, acc_bits = 0, rev_bits = 0, weight = 0;
+  const int failures_before = failures;
+  snprintf(path, sizeof path, "%s/%s/stream.hex", suite, test);
+  if (zb_golden_replay_file(&g, path) != ZB_OK) {
+    CHECK(0, "%s: replay_file: %s", test, zb_golden_last_error(NULL));
+    return;
+  }
+  CHECK(zb_golden_frame_info(g, &width, &height, &depth_bits, &samples, &acc_bits, &rev_bits,
+                             &weight) == ZB_OK, "%s: frame_info: %s", test, zb_golden_last_error(g));
+  if (planes_alloc(&planes, width, height, acc_bits, rev_bits)) {
+    int p;
+    for (p = 0; p < N_READ_PLANES; ++p)
+      CHECK(zb_golden_read_plane(g, p, planes.v[p], (size_t)width * (size_t)height) == ZB_OK,
+            "%s: read_plane %d: %s", test, p, zb_golden_last_error(g));
+    compare_expect(suite, test, &planes);
+  }
+  planes_free(&planes);
+  zb_golden_destroy(g);
+  printf("%s: replay_file: %s: %dx%d, %d-bit depth, %d samples, widths %d %d %d\n", test,
+         failures == failures_before ? "equal" : "FAILED", width, height, depth_bits, samples,
+         acc_bits, rev_bits, weight);
+}
+
+/* A stream made by hand: a 4x2 frame, 16-bit depth, 4 samples, clear 0x11223344, the default
+ * accumulation widths; a coverage pass with one full-coverage fragment at (1, 1), depth 100;
+ * then depth copied to peel. */
+static const char* const kTinyStream[] = {
+    "00000000000000000000000000000006", /* the count */
+    "01040810112233440000041000020004", /* FRAME */
+    "02000000000000000000000000000f73", /* PASS, STATE_COVERAGE */
+    "03000004ff0000ff0000006400010001", /* FRAG (1, 1), z 100, rgba ff0000ff, coverage 4 */
+    "04000000000000000000000000000000", /* END_PASS */
+    "05000000000000000000000000000002", /* FRAME_OP copy depth to peel */
+    "06000000000000000000000000000000", /* END */
+};
+#define TINY_LINES 7
+
+/* The first n lines of kTinyStream, line `at` (0-based) replaced by `with` (at < 0: none), into
+ * a new temporary file named in path (32 bytes at least). */
+static int write_tiny(char* path, int n, int at, const char* with) {
+  FILE* f;
+  int fd, i;
+  strcpy(path, "/tmp/zb_capi_XXXXXX");
+  fd = mkstemp(path);
+  CHECK(fd >= 0, "mkstemp %s failed", path);
+  if (fd < 0) return 0;
+  f = fdopen(fd, "w");
+  for (i = 0; f && i < n; ++i) fprintf(f, "%s\n", i == at ? with : kTinyStream[i]);
+  if (f) fclose(f);
+  return f != NULL;
+}
+
+/* replay_file on `path` fails with ZB_EARG, leaves the handle NULL, and its line names the file
+ * and holds `want` ("line 4: FRAG: pixel"). */
+static void expect_reader_error(int line, const char* path, const char* want) {
+  zb_golden* g = (zb_golden*)&failures; /* must be set to NULL */
+  const char* e;
+  expect_error(line, zb_golden_replay_file(&g, path), ZB_EARG, NULL, "zb_golden_replay_file");
+  e = zb_golden_last_error(NULL);
+  CHECK(g == NULL, "line %d: a failed replay_file leaves the handle NULL", line);
+  CHECK(strstr(e, path) != NULL && strstr(e, want) != NULL,
+        "line %d: replay_file's error '%s' should name %s and say '%s'", line, e, path, want);
+}
+
+/* The stream reader: a good hand-made stream, then the same stream wrong in one way at a time;
+ * bad arguments; the bulk read's and frame_info's errors. */
+static void test_reader(void) {
+  char path[64];
+  zb_golden* g = NULL;
+  uint32_t plane[8];
+  int i, w = 0, h = 0, d = 0, n = 0, a = 0, r = 0, wt = 0;
+  static const uint32_t kDepth[8] = {0xffff, 0xffff, 0xffff, 0xffff, 0xffff, 100, 0xffff, 0xffff};
+
+  if (!write_tiny(path, TINY_LINES, -1, NULL)) return;
+  CHECK(zb_golden_replay_file(&g, path) == ZB_OK && g != NULL, "replay_file %s: %s", path,
+        zb_golden_last_error(NULL));
+  remove(path);
+  if (g == NULL) return;
+  CHECK(zb_golden_frame_info(g, &w, &h, &d, &n, &a, &r, &wt) == ZB_OK && w == 4 && h == 2 &&
+            d == 16 && n == 4 && a == 16 && r == 8 && wt == 4,
+        "frame_info: %dx%d, %d, %d, %d %d %d (want 4x2, 16, 4, 16 8 4)", w, h, d, n, a, r, wt);
+  CHECK(zb_golden_read_plane(g, ZB_PLANE_DEPTH, plane, 8) == ZB_OK, "read_plane: %s",
+        zb_golden_last_error(g));
+  for (i = 0; i < 8; ++i)
+    CHECK(plane[i] == kDepth[i], "depth pixel %d: %x, want %x (row-major)", i, plane[i], kDepth[i]);
+  CHECK(zb_golden_read_plane(g, ZB_PLANE_PEEL, plane, 8) == ZB_OK && plane[5] == 100 &&
+            plane[0] == 0xffff, "the copy to peel: peel (1, 1) %u, (0, 0) %x", plane[5], plane[0]);
+  CHECK(read_plane(g, ZB_PLANE_COVERAGE, 1, 1) == 4 && read_plane(g, ZB_PLANE_COLOR, 0, 0) == 0x11223344u,
+        "coverage (1, 1) and the clear colour");
+  EXPECT_ERROR(zb_golden_read_plane(g, ZB_PLANE_DEPTH, plane, 7), ZB_EARG, g, "zb_golden_read_plane");
+  EXPECT_ERROR(zb_golden_read_plane(g, ZB_PLANE_DEPTH, NULL, 8), ZB_EARG, g, "zb_golden_read_plane");
+  EXPECT_ERROR(zb_golden_read_plane(g, 9, plane, 8), ZB_EARG, g, "zb_golden_read_plane");
+  EXPECT_ERROR(zb_golden_read_plane(NULL, 0, plane, 8), ZB_EHANDLE, NULL, "zb_golden_read_plane");
+  EXPECT_ERROR(zb_golden_frame_info(NULL, &w, NULL, NULL, NULL, NULL, NULL, NULL), ZB_EHANDLE, NULL,
+               "zb_golden_frame_info");
+  /* The replayed frame is between passes: it takes more. */
+  CHECK(zb_golden_begin_pass(g, STATE_COVERAGE) == ZB_OK &&
+            zb_golden_push(g, 0, 0, 5, 0xff00ff00u, 4, NULL, NULL, NULL, NULL) == ZB_OK &&
+            zb_golden_end_pass(g, NULL, NULL, NULL, NULL, NULL, NULL) == ZB_OK &&
+            read_plane(g, ZB_PLANE_DEPTH, 0, 0) == 5,
+        "a pass after the replay: %s", zb_golden_last_error(g));
+  zb_golden_destroy(g);
+
+  /* Each wrong in one way: the line named, what is wrong said. */
+  {
+    static const struct {
+      int lines, at;
+      const char* with;
+      const char* want;
+    } kBad[] = {
+        {TINY_LINES, 3, "03000004ff0000ff0000006400010004", "line 4: FRAG: pixel (4, 1) is outside"},
+        {TINY_LINES, 3, "03000005ff0000ff0000006400010001", "line 4: FRAG: coverage 5 exceeds"},
+        {TINY_LINES, 3, "03000004ff0000ff0001000000010001", "line 4: FRAG: depth 0x10000 exceeds"},
+        {TINY_LINES, 2, "03000004ff0000ff0000006400010001", "line 3: FRAG outside a pass"},
+        {TINY_LINES, 2, "020000000000000000000000000000e0", "line 3: PASS: state 0xe0"},
+        {TINY_LINES, 1, "01040810112233440000111000020004", "line 2: FRAME: coverage_samples 17"},
+        {TINY_LINES, 1, "02000000000000000000000000000f73", "line 2: the first word is PASS"},
+        {TINY_LINES, 4, "0400000000000000000000000000000g", "line 5: column 32: character 0x67"},
+        {TINY_LINES, 4, "0400000000000000000000000000001", "line 5: 31 characters"},
+        {TINY_LINES, 4, "04000000000000000000000000000001", "line 5: END_PASS has bits set"},
+        {TINY_LINES, 4, "05000000000000000000000000000002", "line 5: FRAME_OP inside the pass that line 3"},
+        {TINY_LINES, 5, "05000000000000000000000000000005", "line 6: FRAME_OP: kind 5"},
+        {TINY_LINES, 5, "07000000000000000000000000000000", "line 6: opcode 0x07"},
+        {TINY_LINES, 0, "00000000000000000000000000000005", "line 6: the last word is FRAME_OP, not END"},
+        {TINY_LINES, 0, "00000000000000000000000000000001", "line 1: the count line announces 1 word:"},
+        {TINY_LINES, 0, "00000000000000010000000000000006", "line 1: the count line is not a count"},
+        {5, -1, NULL, "line 6: the file ends here, but its count line announces 6 words"},
+        {0, -1, NULL, "line 1: the file is empty"},
+    };
+    for (i = 0; i < (int)(sizeof kBad / sizeof kBad[0]); ++i) {
+      if (!write_tiny(path, kBad[i].lines, kBad[i].at, kBad[i].with)) return;
+      expect_reader_error(__LINE__, path, kBad[i].want);
+      remove(path);
+    }
+  }
+  /* A line after END. */
+  if (write_tiny(path, TINY_LINES, -1, NULL)) {
+    FILE* f = fopen(path, "a");
+    if (f) {
+      fputs(kTinyStream[6], f);
+      fputc('\n', f);
+      fclose(f);
+    }
+    expect_reader_error(__LINE__, path, "line 8: a line after END");
+    remove(path);
+  }
+  expect_reader_error(__LINE__, "/nonexistent/stream.hex", "cannot open");
+  expect_reader_error(__LINE__, "/tmp", "is a directory");
+  EXPECT_ERROR(zb_golden_replay_file(NULL, "/tmp"), ZB_EARG, NULL, "zb_golden_replay_file");
+  EXPECT_ERROR(zb_golden_replay_file(&g, NULL), ZB_EARG, NULL, "zb_golden_replay_file");
+}
+
+/* A suite's stream cut after `keep` lines: the reader names the line where it ends. */
+static void test_truncated(const char* suite, const char* test, int keep) {
+  char src[4096], path[64], line[80], want[64];
+  FILE *in, *out;
+  int fd, i;
+  snprintf(src, sizeof src, "%s/%s/stream.hex", suite, test);
+  in = fopen(src, "r");
+  CHECK(in != NULL, "cannot open %s", src);
+  if (!in) return;
+  strcpy(path, "/tmp/zb_capi_XXXXXX");
+  fd = mkstemp(path);
+  out = fd >= 0 ? fdopen(fd, "w") : NULL;
+  CHECK(out != NULL, "cannot write %s", path);
+  for (i = 0; out && i < keep && fgets(line, sizeof line, in); ++i) fputs(line, out);
+  fclose(in);
+  if (!out) return;
+  fclose(out);
+  snprintf(want, sizeof want, "line %d: the file ends here", keep + 1);
+  expect_reader_error(__LINE__, path, want);
+  expect_reader_error(__LINE__, path, "truncated");
+  remove(path);
 }
 
 static int is_test_dir(const char* suite, const char* name) {
@@ -377,8 +609,13 @@ int main(int argc, char** argv) {
   }
   test_errors();
   test_accumulate();
+  test_reader();
   if (argc > 2) {
-    for (i = 2; i < argc; ++i, ++tests) replay(argv[1], argv[i]);
+    for (i = 2; i < argc; ++i, ++tests) {
+      replay(argv[1], argv[i]);
+      replay_file(argv[1], argv[i]);
+    }
+    test_truncated(argv[1], argv[2], 100);
   } else {
     DIR* d = opendir(argv[1]);
     struct dirent* e;
@@ -386,7 +623,8 @@ int main(int argc, char** argv) {
     while (d && (e = readdir(d)) != NULL)
       if (is_test_dir(argv[1], e->d_name)) {
         replay(argv[1], e->d_name);
-        ++tests;
+        replay_file(argv[1], e->d_name);
+        if (tests++ == 0) test_truncated(argv[1], e->d_name, 100);
       }
     if (d) closedir(d);
   }
