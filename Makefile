@@ -248,4 +248,4 @@ lint: setup ## Verilator lint (-Wall) and Icarus elaboration of the RTL for ever
 	@scripts/lint_rtl.sh --all
 
 clean: ## Remove build trees and outputs
-	rm -rf $(BUILD) $(ASAN_BUILD) $(TSAN_BUILD) build-baseline $(COV_BUILD) $(FUZZ_BUILD) out
+	rm -rf $(BUILD) $(ASAN_BUILD) $(TSAN_BUILD) build-baseline $(COV_BUILD) $(FUZZ_BUILD) $(KIT_BUILD) out
