@@ -20,7 +20,7 @@ import tempfile
 from pathlib import Path
 
 # The reader's own files: what a command may name that this machine cannot have.
-PLACEHOLDERS = ("my_rop.sv", "my_adapter.sv", "--sshloginfile", "--partition=")
+PLACEHOLDERS = ("my_rop.sv", "my_adapter.sv", "my_rop.profile.json", "--sshloginfile", "--partition=")
 
 
 def commands(readme: str):
