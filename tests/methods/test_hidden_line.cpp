@@ -358,7 +358,7 @@ TEST(HiddenLine, NoGapsOnTiltedFaces) {
   }
 }
 
-// The silhouette leak (issue 18): on cad the sphere lies wholly inside the box, so every edge
+// The silhouette leak: on cad the sphere lies wholly inside the box, so every edge
 // pixel of the sphere's is hidden by the box's front faces. The polygon offset lifted the
 // sphere's silhouette edges (their faces seen edge-on, slopes without bound) through them; the
 // plans' offset keeps them behind. Measured against the exact line reference at the README's
