@@ -1,6 +1,6 @@
 // zb_rop's parameters as the C++ side sees them. CMake defines them from its cache options
 // ZBLEND_RTL_* (the same values it gives Verilator as -G parameters) for every target that
-// links zbrtl_common; rtl_rop.cpp static_asserts them against the Verilated model.
+// links zbrtl_common; rop_model.cpp static_asserts them against the Verilated model.
 #pragma once
 
 #if !defined(ZBLEND_RTL_DEPTH_BITS) || !defined(ZBLEND_RTL_COV_SAMPLES) || !defined(ZBLEND_RTL_TILE) || \

@@ -1,6 +1,7 @@
 // The RTL backend: the Verilated zb_rop driven through the Backend interface. Fragments of a
 // pass are binned into tiles; each touched tile is loaded, streamed (with random back-pressure),
-// drained and stored back. See docs/datapath.md and the zb_rop port list.
+// drained and stored back (tile_driver.h), under the checks of driver_checks.h. See
+// docs/datapath.md and the zb_rop port list.
 #pragma once
 
 #include <cstdint>

@@ -1,6 +1,10 @@
 #include "tile_bins.h"
 
 #include <stdexcept>
+#include <utility>
+
+#include "rtl_params.h"
+#include "tile_io.h"
 
 namespace zb {
 
@@ -26,6 +30,18 @@ void bin_by_tile(const Fragment* f, size_t n, int width, int height, int tile_w,
   out.order.resize(n);
   std::vector<uint32_t> pos(out.first.begin(), out.first.end() - 1);
   for (size_t i = 0; i < n; ++i) out.order[pos[tile_of(f[i])]++] = uint32_t(i);
+}
+
+void stream_by_tile(const Fragment* f, size_t n, int width, int height,
+                    std::vector<uint32_t>& first, std::vector<Streamed>& out) {
+  TileBins bins;
+  bin_by_tile(f, n, width, height, kRtlTileW, kRtlTileH, bins);
+  first = std::move(bins.first);
+  out.resize(n);
+  for (size_t k = 0; k < bins.order.size(); ++k) {
+    const Fragment& g = f[bins.order[k]];
+    out[k] = Streamed{g.x, g.y, g.z, pack_rgba(g.color), bins.order[k], g.coverage};
+  }
 }
 
 }  // namespace zb

@@ -1,5 +1,5 @@
 // Binning a pass's fragments by tile, stably: the order the RTL driver streams them in
-// (rtlmodel/rtl_rop.cpp), shared with the SystemC modules (systemc/).
+// (rtlmodel/tile_driver.cpp), shared with the SystemC modules (systemc/).
 #pragma once
 
 #include <cstddef>
@@ -20,5 +20,17 @@ struct TileBins {
 // power of two (std::invalid_argument otherwise).
 void bin_by_tile(const Fragment* f, size_t n, int width, int height, int tile_w, int tile_h,
                  TileBins& out);
+
+// A fragment as the RTL driver streams it: the fields zb_rop's fragment port takes (rgba
+// pack_rgba) and its index in the pass.
+struct Streamed {
+  uint16_t x, y;
+  uint32_t z, rgba, index;
+  uint8_t cov;
+};
+// The pass's fragments binned into kRtlTileW x kRtlTileH tiles: `first` as TileBins::first,
+// `out` the fragments in tile order.
+void stream_by_tile(const Fragment* f, size_t n, int width, int height,
+                    std::vector<uint32_t>& first, std::vector<Streamed>& out);
 
 }  // namespace zb
