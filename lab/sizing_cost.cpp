@@ -84,7 +84,7 @@ void CostCounter::draw(const Fragment* fragments, size_t count) {
     }
 }
 
-// The driver's run of a pass (rtlmodel/rtl_rop.cpp): per touched tile, the setup cycle and the
+// The driver's run of a pass (rtlmodel/tile_driver.cpp): per touched tile, the setup cycle and the
 // load beats of its planes (tile_io.h; the whole tile, also where the frame clips it), stream
 // through zb_rop's issue window and drain (IssueSchedule), the store beats; and the same tiles
 // with a second tile buffer.
