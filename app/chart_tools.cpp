@@ -8,11 +8,13 @@
 
 #include <fmt/core.h>
 
-#include "commands.h"
+#include "cli.h"
 
 extern char** environ;
 
 namespace zb::app {
+
+using namespace cli;  // the programs' shared options, checks and errors (cli/)
 
 namespace fs = std::filesystem;
 

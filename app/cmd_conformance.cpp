@@ -9,11 +9,16 @@
 #include <fmt/core.h>
 
 #include "check.h"
+#include "cli.h"
+#include "output_paths.h"
 #include "commands.h"
 #include "export.h"
 #include "suite.h"
 
 namespace zb::app {
+
+using namespace cli;  // the programs' shared options, checks and errors (cli/)
+
 namespace {
 
 namespace cf = zb::conformance;

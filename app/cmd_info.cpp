@@ -4,6 +4,9 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 
+#include "cli.h"
+#include "output_paths.h"
+#include "scene_options.h"
 #include "commands.h"
 #include "io/image.h"
 #include "pipeline/passes.h"
@@ -15,6 +18,8 @@
 #include "sizing_report.h"
 
 namespace zb::app {
+
+using namespace cli;  // the programs' shared options, checks and errors (cli/)
 
 namespace {
 

@@ -14,6 +14,9 @@
 #include <fmt/core.h>
 
 #include "chart_tools.h"
+#include "cli.h"
+#include "output_paths.h"
+#include "scene_options.h"
 #include "commands.h"
 #include "io/image.h"
 #include "lab.h"
@@ -26,6 +29,9 @@
 #include "scene/builtin_scenes.h"
 
 namespace zb::app {
+
+using namespace cli;  // the programs' shared options, checks and errors (cli/)
+
 namespace {
 
 namespace fs = std::filesystem;

@@ -13,6 +13,9 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
+#include "cli.h"
+#include "output_paths.h"
+#include "scene_options.h"
 #include "commands.h"
 #include "cosim.h"
 #include "pipeline/frame_render.h"
@@ -27,6 +30,9 @@
 #include "summary.h"
 
 namespace zb::app {
+
+using namespace cli;  // the programs' shared options, checks and errors (cli/)
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -58,10 +64,11 @@ struct RenderOptions {
   std::string stats;
   std::string backend_text = "golden";  // --backend as given, parsed into `backend`
   BackendKind backend = BackendKind::kGolden;
-  double backpressure = 0;
-  int64_t seed = 1;
-  std::string waves;
-  bool lockstep = true;
+  // The RTL backends' options, which --backpressure, --waves (rtl.trace_path) and
+  // --no-lockstep set directly; make_rtl_backend adds the checked --seed, --threads and each
+  // method's mismatch waveform.
+  CosimOptions cosim;
+  int64_t seed = 1;                 // checked (0 or more) before it becomes cosim.rtl.seed
   std::string background;
   int threads = default_threads();  // golden: render_frame's workers; RTL: models side by side
   bool threads_given = false;
@@ -81,12 +88,12 @@ std::vector<OutputPath> outputs(const RenderOptions& o) {
   return {{"--out", o.out, ".png"},
           {"--out-dir", o.out_dir, nullptr},
           {"--stats", o.stats, ".json"},
-          {"--waves", o.waves, ".fst"}};
+          {"--waves", o.cosim.rtl.trace_path, ".fst"}};
 }
 
 // An option given for a backend the run does not use would do nothing: refused.
 void check_backend_options(const RenderOptions& o) {
-  if (!o.lockstep && o.backend != BackendKind::kBoth)
+  if (!o.cosim.lockstep && o.backend != BackendKind::kBoth)
     throw UsageError("--no-lockstep: needs --backend both (it turns off the per-write comparison)");
   if (o.backend != BackendKind::kGolden) return;
   for (const std::string& name : o.given)
@@ -104,13 +111,16 @@ void check_options(const RenderOptions& o, size_t method_count) {
                                  kRtlDepthBits, o.frame.depth_bits));
   check_backend_options(o);
   check_threads(o.threads);
-  if (!o.waves.empty() && o.threads_given && o.threads > 1)
+  const bool waves = !o.cosim.rtl.trace_path.empty();
+  if (waves && o.threads_given && o.threads > 1)
     throw UsageError(fmt::format("--waves: one waveform needs one RTL model; --threads {} asks "
                                  "for {} (drop --threads or give --threads 1)", o.threads, o.threads));
-  if (!(o.backpressure >= 0 && o.backpressure < 1))
-    throw UsageError(fmt::format("--backpressure: {} is out of range (0 to below 1)", o.backpressure));
+  const double backpressure = o.cosim.rtl.backpressure;
+  if (!(backpressure >= 0 && backpressure < 1))
+    throw UsageError(
+        fmt::format("--backpressure: {} is out of range (0 to below 1)", backpressure));
   if (o.seed < 0) throw UsageError(fmt::format("--seed: {} is out of range (0 or more)", o.seed));
-  if (!o.waves.empty() && method_count != 1) throw UsageError("--waves: takes one method");
+  if (waves && method_count != 1) throw UsageError("--waves: takes one method");
   check_outputs(outputs(o));
 }
 
@@ -122,21 +132,16 @@ struct RtlBackend {
 };
 
 RtlBackend make_rtl_backend(const RenderOptions& o, const PassPlan& plan) {
-  RtlOptions rtl;
-  rtl.backpressure = o.backpressure;
-  rtl.seed = static_cast<uint64_t>(o.seed);
-  rtl.trace_path = o.waves;
-  rtl.threads = o.threads;
+  CosimOptions cosim = o.cosim;
+  cosim.rtl.seed = static_cast<uint64_t>(o.seed);
+  cosim.rtl.threads = o.threads;  // the golden model's bands take the same --threads
   RtlBackend b;
   if (o.backend == BackendKind::kRtl) {
-    auto r = std::make_unique<RtlRop>(rtl);
+    auto r = std::make_unique<RtlRop>(cosim.rtl);
     b.rtl = r.get();
     b.backend = std::move(r);
     return b;
   }
-  CosimOptions cosim;
-  cosim.rtl = rtl;
-  cosim.lockstep = o.lockstep;
   const fs::path dir = o.out_dir.empty() ? fs::path(o.out).parent_path() : fs::path(o.out_dir);
   cosim.mismatch_fst = (dir / ("mismatch-" + plan.name + ".fst")).string();
   auto c = std::make_unique<Cosim>(cosim);
@@ -146,10 +151,12 @@ RtlBackend make_rtl_backend(const RenderOptions& o, const PassPlan& plan) {
   return b;
 }
 
-// Runs one pass plan on the RTL, alone or compared with the golden model. A mismatch between
-// them is recorded in the run and its report printed; the caller fails the command at the end.
-void run_plan(const RenderOptions& o, const RasterizedScene& rs, const PassPlan& plan,
-              MethodRun& run) {
+// One pass plan on the RTL, alone or compared with the golden model: the plan executor
+// (render(), executor.h) on an RTL backend, with the run's counters, traffic and image. A
+// mismatch between them is recorded in the run and its report printed; the caller fails the
+// command at the end.
+void run_rtl(const RenderOptions& o, const RasterizedScene& rs, const PassPlan& plan,
+             MethodRun& run) {
   const RtlBackend b = make_rtl_backend(o, plan);
   run.rtl = true;
   run.compared = b.cosim != nullptr;
@@ -306,7 +313,7 @@ void run_render(const RenderOptions& o) {
       if (golden)
         drawn = run_golden(o, scene, vp, *plan, run);
       else
-        run_plan(o, *rs, *plan, run);
+        run_rtl(o, *rs, *plan, run);
       run.host_ms = ms_since(start);
     } else {
       run.image = reference;
@@ -360,13 +367,13 @@ void add_render_command(CLI::App& app) {
                   "golden (C++ model), rtl (Verilated RTL) or both (compared bit for bit: every "
                   "write at its cycle, every plane after every pass)")
       ->capture_default_str();
-  cmd->add_option("--backpressure", o->backpressure,
+  cmd->add_option("--backpressure", o->cosim.rtl.backpressure,
                   "RTL: probability per cycle of a stall on the fragment input")
       ->capture_default_str();
   cmd->add_option("--seed", o->seed, "RTL: seed of the back-pressure pattern")
       ->capture_default_str();
-  cmd->add_option("--waves", o->waves, "RTL: FST waveform of the whole run");
-  cmd->add_flag("!--no-lockstep", o->lockstep,
+  cmd->add_option("--waves", o->cosim.rtl.trace_path, "RTL: FST waveform of the whole run");
+  cmd->add_flag("!--no-lockstep", o->cosim.lockstep,
                 "--backend both: compare the frames after each pass only, not every write at its "
                 "cycle");
   add_background_option(cmd, o->background);

@@ -8,11 +8,17 @@
 #include <fmt/core.h>
 
 #include "chart_tools.h"
+#include "cli.h"
+#include "output_paths.h"
+#include "scene_options.h"
 #include "commands.h"
 #include "io/image.h"
 #include "sweeps.h"
 
 namespace zb::app {
+
+using namespace cli;  // the programs' shared options, checks and errors (cli/)
+
 namespace {
 
 namespace fs = std::filesystem;

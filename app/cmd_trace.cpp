@@ -4,12 +4,18 @@
 
 #include <fmt/core.h>
 
+#include "cli.h"
+#include "output_paths.h"
+#include "scene_options.h"
 #include "commands.h"
 #include "pipeline/passes.h"
 #include "pipeline/render.h"
 #include "io/trace.h"
 
 namespace zb::app {
+
+using namespace cli;  // the programs' shared options, checks and errors (cli/)
+
 namespace {
 
 struct TraceOptions {

@@ -1,5 +1,6 @@
 // zblend-conformance: `zblend conformance export | check` alone, without the RTL model: the
 // conformance kit's program (make kit; docs/conformance.md).
+#include "cli.h"
 #include "commands.h"
 
 int main(int argc, char** argv) {
@@ -8,5 +9,5 @@ int main(int argc, char** argv) {
   app.name("zblend-conformance");
   app.require_subcommand(1, 1);
   zb::app::add_conformance_commands(app);
-  return zb::app::run_app(app, argc, argv);
+  return zb::cli::run_main(app, argc, argv);
 }

@@ -1,4 +1,5 @@
 // zblend: render scenes through the golden model with each transparency method.
+#include "cli.h"
 #include "commands.h"
 
 int main(int argc, char** argv) {
@@ -12,5 +13,5 @@ int main(int argc, char** argv) {
   zb::app::add_lab_command(app);
   zb::app::add_sweep_command(app);
   zb::app::add_conformance_command(app);
-  return zb::app::run_app(app, argc, argv);
+  return zb::cli::run_main(app, argc, argv);
 }

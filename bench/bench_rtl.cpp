@@ -12,7 +12,7 @@
 #include "rop/rop.h"
 #include "rtl_rop.h"
 #include "scene/builtin_scenes.h"
-#include "suites.h"
+#include "stimulus.h"
 #include "Vceiling_counter.h"
 
 namespace {

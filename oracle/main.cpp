@@ -13,24 +13,26 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
-#include "commands.h"
+#include "cli.h"
 #include "exact_depth.h"
 #include "frame_diff.h"
 #include "pipeline/frame_render.h"
 #include "gl_render.h"
 #include "io/image.h"
+#include "output_paths.h"
 #include "pipeline/render.h"
 #include "rop/rop.h"
+#include "scene_options.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-using zb::app::UsageError;
+using zb::cli::UsageError;
 
 constexpr const char* kDefaultMethods = "opaque,unsorted,three-pass,back-front";
 
 struct Options {
-  zb::app::FrameOptions frame;
+  zb::cli::FrameOptions frame;
   std::string methods = kDefaultMethods;
   std::string out_dir;
   double min_identical = 99.9;
@@ -100,7 +102,7 @@ std::vector<const zb::PassPlan*> oracle_plans(const std::string& list) {
       if (zb::oracle::unsupported_reason(p).empty()) plans.push_back(&p);
     return plans;
   }
-  for (const std::string& m : zb::app::parse_methods(list)) {
+  for (const std::string& m : zb::cli::parse_methods(list)) {
     const zb::PassPlan* p = zb::find_plan(m);
     if (!p) throw UsageError(fmt::format("--method: '{}' has no pass plan to draw", m));
     if (const std::string why = zb::oracle::unsupported_reason(*p); !why.empty())
@@ -129,8 +131,8 @@ std::string csv(const Options& o, const std::vector<Row>& rows) {
 }
 
 int run(const Options& o) {
-  const zb::Scene scene = zb::app::resolve_scene(o.frame.scene, o.frame.camera);
-  const zb::Viewport vp = zb::app::check_viewport(o.frame.width, o.frame.height, o.frame.depth_bits);
+  const zb::Scene scene = zb::cli::resolve_scene(o.frame.scene, o.frame.camera);
+  const zb::Viewport vp = zb::cli::check_viewport(o.frame.width, o.frame.height, o.frame.depth_bits);
   if (vp.depth_bits != 24)
     throw UsageError(fmt::format("--depth-bits: the oracle's depth buffer is DEPTH_COMPONENT24, "
                                  "not {} bits", vp.depth_bits));
@@ -145,9 +147,8 @@ int run(const Options& o) {
       o.window_y == "down" ? zb::oracle::WindowY::kDown : zb::oracle::WindowY::kUp;
   const std::vector<const zb::PassPlan*> plans = oracle_plans(o.methods);
   if (!o.out_dir.empty()) {
-    std::error_code ec;
-    fs::create_directories(o.out_dir, ec);
-    zb::app::check_writable("--out-dir", (fs::path(o.out_dir) / "oracle.csv").string(), ".csv");
+    const std::string table = (fs::path(o.out_dir) / "oracle.csv").string();
+    zb::cli::create_output_dirs({{"--out-dir", o.out_dir, nullptr}, {"--out-dir", table, ".csv"}});
   }
 
   zb::oracle::GlContext gl(vp.width, vp.height);
@@ -191,9 +192,9 @@ int run(const Options& o) {
   }
 
   for (const auto& [name, fb] : images)
-    zb::app::write_or_fail(zb::write_png((fs::path(o.out_dir) / name).string(), fb));
+    zb::cli::write_or_fail(zb::write_png((fs::path(o.out_dir) / name).string(), fb));
   if (!o.out_dir.empty())
-    zb::app::write_or_fail(
+    zb::cli::write_or_fail(
         zb::write_file_atomic((fs::path(o.out_dir) / "oracle.csv").string(), csv(o, rows)));
 
   if (!o.quiet) {
@@ -235,7 +236,7 @@ int main(int argc, char** argv) {
                "pixel, for the pass plans OpenGL can draw"};
   app.name("zblend_oracle");
   Options o;
-  zb::app::add_frame_options(&app, o.frame);
+  zb::cli::add_frame_options(&app, o.frame);
   app.add_option("--method,-m", o.methods,
                  "Methods, comma-separated, or 'all' (every plan OpenGL can draw)")
       ->capture_default_str();
@@ -256,21 +257,11 @@ int main(int argc, char** argv) {
   app.add_option("--repeat", o.repeat, "--time: frames timed per method and renderer (median)")
       ->capture_default_str();
   app.add_flag("--quiet,-q", o.quiet, "Print nothing but failures and errors");
-  try {
-    app.parse(argc, argv);
-    return run(o);
-  } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);
-    std::fprintf(stderr, "%s\n", zb::app::parse_error_line(app, e).c_str());
-    return 2;
-  } catch (const UsageError& e) {
-    std::fprintf(stderr, "zblend_oracle: error: %s\n", e.what());
-    return 2;
-  } catch (const zb::oracle::GlUnavailable& e) {
-    std::fprintf(stderr, "zblend_oracle: cannot run: %s\n", e.what());
-    return 3;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "zblend_oracle: internal error: %s\n", e.what());
-    return 1;
-  }
+  return zb::cli::run_main(app, argc, argv, [&o] {
+    try {
+      return run(o);
+    } catch (const zb::oracle::GlUnavailable& e) {  // no llvmpipe here: exit 3, not a failure
+      throw zb::cli::CannotRun(e.what());
+    }
+  });
 }

@@ -12,11 +12,12 @@
 #include <fmt/core.h>
 #include <systemc>
 
-#include "commands.h"
+#include "cli.h"
 #include "pipeline/passes.h"
 #include "pipeline/render.h"
 #include "rtl_params.h"
 #include "scene/builtin_scenes.h"
+#include "scene_options.h"
 #include "io/trace.h"
 #include "zb_cosim_sc.h"
 #include "zb_golden_sc.h"
@@ -24,7 +25,7 @@
 
 namespace {
 
-using zb::app::UsageError;
+using zb::cli::UsageError;
 
 struct Options {
   std::string scene = "cad";
@@ -54,8 +55,8 @@ std::vector<std::pair<std::string, zb::Trace>> make_traces(const Options& o) {
           zb::kRtlWboit.rev_bits, zb::kRtlWboit.weight_bits));
     return out;
   }
-  const zb::Viewport vp = zb::app::check_viewport(o.width, o.height, zb::kDefaultDepthBits);
-  std::vector<std::string> methods = zb::app::parse_methods(o.method);
+  const zb::Viewport vp = zb::cli::check_viewport(o.width, o.height, zb::kDefaultDepthBits);
+  std::vector<std::string> methods = zb::cli::parse_methods(o.method);
   // The reference is exact floating point, not a pass plan: nothing to stream.
   if (o.method == "all")
     methods.erase(std::remove(methods.begin(), methods.end(), std::string(zb::kReferenceMethod)),
@@ -69,7 +70,7 @@ std::vector<std::pair<std::string, zb::Trace>> make_traces(const Options& o) {
     for (const zb::SceneInfo& s : zb::builtin_scenes()) scenes.push_back(s.name);
   }
   for (const std::string& scene : scenes) {
-    const zb::RasterizedScene rs = zb::rasterize_scene(zb::app::resolve_scene(scene), vp);
+    const zb::RasterizedScene rs = zb::rasterize_scene(zb::cli::resolve_scene(scene), vp);
     for (const std::string& m : methods)
       out.emplace_back(scenes.size() > 1 ? scene + "/" + m : m,
                        zb::make_trace(rs, *zb::find_plan(m)));
@@ -171,18 +172,5 @@ int sc_main(int argc, char** argv) {
       app.add_option("--trace", o.trace, "Run a trace file (zblend trace) instead of a scene");
   trace->excludes("--scene")->excludes("--method")->excludes("--width")->excludes("--height");
   app.add_flag("--quiet,-q", o.quiet, "Print nothing but failures");
-  try {
-    app.parse(argc, argv);
-    return run(o);
-  } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);
-    std::fprintf(stderr, "%s\n", zb::app::parse_error_line(app, e).c_str());
-    return 2;
-  } catch (const UsageError& e) {
-    std::fprintf(stderr, "zblend_systemc: error: %s\n", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "zblend_systemc: FAILED: %s\n", e.what());
-    return 1;
-  }
+  return zb::cli::run_main(app, argc, argv, [&o] { return run(o); });
 }

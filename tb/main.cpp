@@ -10,15 +10,16 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include "cli.h"
 #include "code_coverage.h"
-#include "rtl_rop.h"
-#include "commands.h"
-#include "suites.h"
 #include "io/trace.h"
+#include "output_paths.h"
+#include "rtl_rop.h"
+#include "suites.h"
 
 using namespace zb;
 using namespace zb::tb;
-using zb::app::UsageError;
+using zb::cli::UsageError;
 
 namespace {
 
@@ -30,16 +31,18 @@ struct Args {
   std::string replay, coverage_out;
   int iterations = 0;
   int64_t fragments = 0;
+  bool waves_as_trace = false;   // --waves given as --trace, its old spelling: errors say --trace
   bool list = false;
   bool quiet = false;
   std::string defect = "blend";  // zblend_tb_bug: the injected defect
   int mutant = 0;                // zblend_tb_mut: the live mutant, 0 for none
 };
 
-// Progress on stderr: a line as each suite starts, then one every kEvery with the share done.
-class Progress {
+// Progress on stderr: a line as each suite starts, then one every kEvery with the share done
+// (the suite's WorkCounter reports it through Config::progress).
+class ProgressPrinter {
  public:
-  explicit Progress(bool quiet) : quiet_(quiet) {}
+  explicit ProgressPrinter(bool quiet) : quiet_(quiet) {}
   void start(const Suite& s) {
     name_ = s.name;
     start_ = last_ = Clock::now();
@@ -60,7 +63,8 @@ class Progress {
   Clock::time_point start_, last_;
 };
 
-// Replays a trace file (zblend trace) through the cosim. Returns the exit code.
+// Replays a trace file (zblend trace) through the cosim. Returns the exit code; a trace it
+// cannot read or run is bad input (UsageError).
 int run_replay(const Config& c, const std::string& path) {
   try {
     const Trace tr = read_trace(path);
@@ -80,8 +84,7 @@ int run_replay(const Config& c, const std::string& path) {
     std::printf("%sreplay %s: FAILED\n", e.what(), path.c_str());
     return 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "zblend_tb: %s\n", e.what());
-    return 2;
+    throw UsageError(e.what());
   }
 }
 
@@ -89,7 +92,7 @@ int run_replay(const Config& c, const std::string& path) {
 int run_suites(const Config& config, const std::vector<const Suite*>& chosen, bool quiet) {
   if (!quiet) std::fprintf(stderr, "zblend_tb: the RTL's %s\n", RtlRop::build());
   int passed = 0, failed = 0;
-  Progress progress(quiet);
+  ProgressPrinter progress(quiet);
   Config c = config;
   c.progress = [&progress](double done) { progress.update(done); };
   for (const Suite* s : chosen) {
@@ -121,14 +124,19 @@ int run_suites(const Config& config, const std::vector<const Suite*>& chosen, bo
   return failed ? 1 : 0;
 }
 
-// Verilator-style plusargs: +trace dumps the whole run to out/tb_trace.fst.
-std::vector<std::string> expand_plusargs(int argc, char** argv) {
+// The command line with the Verilator-style plusarg and the old spelling expanded: +trace is
+// --waves out/tb_trace.fst (the whole run); --trace FILE, the deprecated spelling of --waves
+// (a trace is a fragment stream: --replay's), is --waves FILE, and sets `as_trace`.
+std::vector<std::string> expand_args(int argc, char** argv, bool& as_trace) {
   std::vector<std::string> args;
   for (int i = 0; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "+trace") {
-      args.emplace_back("--trace");
+      args.emplace_back("--waves");
       args.emplace_back("out/tb_trace.fst");
+    } else if (i > 0 && (a == "--trace" || a.rfind("--trace=", 0) == 0)) {
+      args.push_back("--waves" + a.substr(7));
+      as_trace = true;
     } else {
       args.push_back(a);
     }
@@ -146,19 +154,20 @@ void add_options(CLI::App& app, Config& c, Args& a) {
                  "iterations per suite, 1 or more (default: the suite's)");
   app.add_option("--fragments", a.fragments,
                  "scale, 1 or more: about this many fragments (random, hazard; blend: a sample)");
-  app.add_option("--backpressure", c.backpressure, "probability of stall and of a valid gap")
+  app.add_option("--backpressure", c.cosim.rtl.backpressure,
+                 "probability of stall and of a valid gap")
       ->check(CLI::Range(0.0, 0.95));
-  app.add_option("--trace", c.trace, "FST of the whole run (also +trace)");
-  app.add_option("--mismatch-fst", c.mismatch_fst, "FST written around the first mismatch")
+  app.add_option("--waves", c.cosim.rtl.trace_path, "FST of the whole run (also +trace)");
+  app.add_option("--mismatch-fst", c.cosim.mismatch_fst, "FST written around the first mismatch")
       ->capture_default_str();
   app.add_option("--replay", a.replay, "replay a trace file (zblend trace) through the cosim");
   app.add_flag("-v,--verbose", c.verbose, "one line per iteration");
   app.add_flag("-q,--quiet", a.quiet, "no progress on stderr");
-  app.add_flag("!--no-assertions", c.assertions,
+  app.add_flag("!--no-assertions", c.cosim.rtl.assertions,
                "run the RTL with its assertions off, to see what the comparison alone catches");
-  app.add_flag("!--no-lockstep", c.lockstep,
+  app.add_flag("!--no-lockstep", c.cosim.lockstep,
                "compare the frames after each pass only, not every write at its cycle");
-  app.add_flag("!--no-timing-check", c.check_timing,
+  app.add_flag("!--no-timing-check", c.cosim.rtl.check_timing,
                "do not check each tile's streaming cycles against the issue schedule "
                "(checked without back-pressure), to see what the comparisons alone catch");
 #ifdef ZB_TB_BUG  // zblend_tb_bug: the RTL holds deliberate defects, one switched on per run
@@ -192,19 +201,21 @@ void check_args(const CLI::App& app, Config& c, const Args& a) {
                                    "suite's default)", name, value));
   c.iterations = a.iterations;
   c.fragments = static_cast<uint64_t>(a.fragments);
-  if (a.defect == "window") c.plusargs.push_back("+zb_bug_window");
-  if (a.defect == "accum") c.plusargs.push_back("+zb_bug_accum");
-  if (a.mutant) c.plusargs.push_back(fmt::format("+zb_mutant={}", a.mutant));
+  std::vector<std::string>& plusargs = c.cosim.rtl.plusargs;
+  if (a.defect == "window") plusargs.push_back("+zb_bug_window");
+  if (a.defect == "accum") plusargs.push_back("+zb_bug_accum");
+  if (a.mutant) plusargs.push_back(fmt::format("+zb_mutant={}", a.mutant));
   // The mismatch waveform's directory is made only if a mismatch writes it.
-  app::check_outputs({{"--mismatch-fst", c.mismatch_fst, ".fst"}});
-  app::create_output_dirs(
-      {{"--trace", c.trace, ".fst"}, {"--coverage-out", a.coverage_out, ".dat"}});
+  cli::check_outputs({{"--mismatch-fst", c.cosim.mismatch_fst, ".fst"}});
+  const char* waves = a.waves_as_trace ? "--trace" : "--waves";  // as the user spelt it
+  cli::create_output_dirs(
+      {{waves, c.cosim.rtl.trace_path, ".fst"}, {"--coverage-out", a.coverage_out, ".dat"}});
 }
 
 // The reproduce command's start (Config::command): argv[0] and every argument but those that
 // choose the suite, seed, iterations and output files.
 std::string base_command(const std::vector<std::string>& args) {
-  static const std::set<std::string> kDropped = {"--suite", "--seed", "--iterations", "--trace",
+  static const std::set<std::string> kDropped = {"--suite", "--seed", "--iterations", "--waves",
                                                  "--mismatch-fst", "--coverage-out", "--replay"};
   auto quoted = [](const std::string& s) {
     if (!s.empty() && s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
@@ -244,7 +255,7 @@ int run(const Config& config, const Args& a, const std::vector<const Suite*>& ch
   CoverageTotals coverage;
   if (!a.coverage_out.empty()) {
     coverage = CoverageTotals(a.coverage_out + ".part");
-    c.coverage = &coverage;
+    c.cosim.rtl.coverage = &coverage;
   }
   const int rc = a.replay.empty() ? run_suites(c, chosen, a.quiet) : run_replay(c, a.replay);
   if (!a.coverage_out.empty()) {
@@ -253,8 +264,7 @@ int run(const Config& config, const Args& a, const std::vector<const Suite*>& ch
       std::printf("coverage: %zu points from %llu models: %s\n", coverage.points(),
                   (unsigned long long)coverage.models(), a.coverage_out.c_str());
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "zblend_tb: %s\n", e.what());
-      return 2;
+      throw UsageError(e.what());
     }
   }
   return rc;
@@ -263,17 +273,16 @@ int run(const Config& config, const Args& a, const std::vector<const Suite*>& ch
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::vector<std::string> args = expand_plusargs(argc, argv);
-  std::vector<const char*> cargv;
-  for (const std::string& a : args) cargv.push_back(a.c_str());
-
   Config c;
   Args a;
+  const std::vector<std::string> args = expand_args(argc, argv, a.waves_as_trace);
+  std::vector<const char*> cargv;
+  for (const std::string& arg : args) cargv.push_back(arg.c_str());
+
   CLI::App app{"zblend_tb: the RTL (Verilated zb_rop) against the golden model, bit for bit"};
   app.name("zblend_tb");
   add_options(app, c, a);
-  try {
-    app.parse(int(cargv.size()), cargv.data());
+  return cli::run_main(app, int(cargv.size()), cargv.data(), [&] {
     if (a.list) {
       for (const Suite& s : suites()) std::printf("%-8s %s\n", s.name, s.about);
       return 0;
@@ -283,13 +292,5 @@ int main(int argc, char** argv) {
     check_args(app, c, a);
     c.command = base_command(args);
     return run(c, a, chosen);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "%s\n", app::parse_error_line(app, e).c_str());
-    return 2;
-  } catch (const UsageError& e) {
-    std::fprintf(stderr, "zblend_tb: error: %s\n", e.what());
-    return 2;
-  }
+  });
 }

@@ -118,7 +118,7 @@ Tally suite_accum(const Config& c) {
   const size_t per_pass =
       c.fragments ? std::max<uint64_t>(1, c.fragments / uint64_t(iters) / kPasses) : 3000;
   uint64_t dist[4] = {};
-  Progress progress(c, uint64_t(iters));
+  WorkCounter progress(c, uint64_t(iters));
   for (int it = 0; it < iters; ++it) {
     const uint64_t seed = c.seed + it;
     const bool ok = run_iteration("accum", c, seed, t, [&](Cosim& cs) {

@@ -75,7 +75,7 @@ Tally suite_clears(const Config& c) {
   Tally t;
   const int iters = c.iterations ? c.iterations : 6;
   const uint32_t zmax = depth_max(24);
-  Progress progress(c, uint64_t(iters) + 1);
+  WorkCounter progress(c, uint64_t(iters) + 1);
   for (int it = 0; it < iters; ++it) {
     const uint64_t seed = c.seed + it;
     const bool ok = run_iteration("clears", c, seed, t, [&](Cosim& cs) {

@@ -1,5 +1,7 @@
 // The testbench's named suites: each runs the golden model and the RTL in lockstep (zb::Cosim)
-// and compares every colour and depth bit after every pass. tb/main.cpp is the command line.
+// and compares every colour and depth bit after every pass. This is their framework
+// (suites.cpp: the registry, one iteration on a fresh Cosim, the failure's reproduce command);
+// each suite is a file of its own, suite_<name>.cpp. tb/main.cpp is the command line.
 #pragma once
 
 #include <cstdint>
@@ -17,17 +19,12 @@ struct Config {
   uint64_t seed = 1;
   int iterations = 0;        // 0: the suite's default
   uint64_t fragments = 0;    // 0: the suite's default scale
-  double backpressure = 0;
-  std::string trace;         // whole-run FST
-  std::string mismatch_fst = "out/mismatch.fst";
   bool verbose = false;
-  CoverageTotals* coverage = nullptr;  // coverage builds: every model's counts are added here
+  // What every iteration's Cosim is made with (cosim_options): the RTL model's options
+  // (back-pressure, the whole run's waveform, plusargs, assertions, the timing check, re-read
+  // stores, coverage totals) and the comparison's (the mismatch waveform, lock-step).
+  CosimOptions cosim;
   std::function<void(double)> progress;  // when set: the share of the suite done, 0 to 1
-  std::vector<std::string> plusargs;     // given to every RTL model (RtlOptions::plusargs)
-  bool assertions = true;                // the RTL's assertions (RtlOptions::assertions)
-  bool lockstep = true;                  // every write at its cycle (CosimOptions::lockstep)
-  bool check_timing = true;              // streaming cycles = the schedule (RtlOptions)
-  bool reread_stores = false;            // each store read twice, alike (RtlOptions)
   // The program and the arguments that do not choose the suite, seed, iterations or output
   // files, shell-quoted: a failure's reproduce command starts with it.
   std::string command;
@@ -41,13 +38,13 @@ struct Tally {
   std::string note;
 };
 
-// The Cosim options of one iteration: back-pressure pattern `seed`, the run's waveforms.
+// The Cosim options of one iteration: c.cosim with back-pressure pattern `seed`.
 CosimOptions cosim_options(const Config& c, uint64_t seed);
 
-// The share of a suite's work done, reported to c.progress: `total` units, added as done.
-class Progress {
+// The share of a suite's work done: `total` units, added as done, reported to c.progress.
+class WorkCounter {
  public:
-  Progress(const Config& c, uint64_t total) : c_(c), total_(total > 0 ? total : 1) {}
+  WorkCounter(const Config& c, uint64_t total) : c_(c), total_(total > 0 ? total : 1) {}
   void add(uint64_t n = 1) {
     done_ += n;
     if (c_.progress) c_.progress(done_ >= total_ ? 1.0 : double(done_) / double(total_));
@@ -68,14 +65,14 @@ bool run_iteration(const char* suite, const Config& c, uint64_t seed, Tally& t,
 void draw_pass(Cosim& cs, const std::string& name, const RopState& st,
                const std::vector<Fragment>& f);
 
-// The suites, one function each.
+// The suites, one function each, each in its own file, suite_<name>.cpp.
 Tally suite_scenes(const Config& c);  // every built-in scene x every pass plan at 96x72
 Tally suite_random(const Config& c);  // constrained-random states and streams
 Tally suite_hazard(const Config& c);  // runs on 1-4 pixels; fragments per clock
 Tally suite_window(const Config& c);  // directed issue-window streams
 Tally suite_tiles(const Config& c);   // fast-clear bookkeeping across passes and tiles
-Tally suite_clears(const Config& c);  // a store's write-back meeting the next clear (suite_clears.cpp)
-Tally suite_accum(const Config& c);   // accumulate mode at same-pixel distances 4..7 (suite_accum.cpp)
+Tally suite_clears(const Config& c);  // a store's write-back meeting the next clear
+Tally suite_accum(const Config& c);   // accumulate mode at same-pixel distances 4..7
 Tally suite_blend(const Config& c);   // the blend unit, exhaustively, through the pipeline
 
 struct Suite {
