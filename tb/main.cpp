@@ -31,7 +31,6 @@ struct Args {
   std::string replay, coverage_out;
   int iterations = 0;
   int64_t fragments = 0;
-  bool waves_as_trace = false;   // --waves given as --trace, its old spelling: errors say --trace
   bool list = false;
   bool quiet = false;
   std::string defect = "blend";  // zblend_tb_bug: the injected defect
@@ -124,19 +123,15 @@ int run_suites(const Config& config, const std::vector<const Suite*>& chosen, bo
   return failed ? 1 : 0;
 }
 
-// The command line with the Verilator-style plusarg and the old spelling expanded: +trace is
-// --waves out/tb_trace.fst (the whole run); --trace FILE, the deprecated spelling of --waves
-// (a trace is a fragment stream: --replay's), is --waves FILE, and sets `as_trace`.
-std::vector<std::string> expand_args(int argc, char** argv, bool& as_trace) {
+// The command line with the Verilator-style plusarg expanded: +trace is --waves
+// out/tb_trace.fst (the whole run).
+std::vector<std::string> expand_args(int argc, char** argv) {
   std::vector<std::string> args;
   for (int i = 0; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "+trace") {
       args.emplace_back("--waves");
       args.emplace_back("out/tb_trace.fst");
-    } else if (i > 0 && (a == "--trace" || a.rfind("--trace=", 0) == 0)) {
-      args.push_back("--waves" + a.substr(7));
-      as_trace = true;
     } else {
       args.push_back(a);
     }
@@ -207,9 +202,8 @@ void check_args(const CLI::App& app, Config& c, const Args& a) {
   if (a.mutant) plusargs.push_back(fmt::format("+zb_mutant={}", a.mutant));
   // The mismatch waveform's directory is made only if a mismatch writes it.
   cli::check_outputs({{"--mismatch-fst", c.cosim.mismatch_fst, ".fst"}});
-  const char* waves = a.waves_as_trace ? "--trace" : "--waves";  // as the user spelt it
   cli::create_output_dirs(
-      {{waves, c.cosim.rtl.trace_path, ".fst"}, {"--coverage-out", a.coverage_out, ".dat"}});
+      {{"--waves", c.cosim.rtl.trace_path, ".fst"}, {"--coverage-out", a.coverage_out, ".dat"}});
 }
 
 // The reproduce command's start (Config::command): argv[0] and every argument but those that
@@ -275,7 +269,7 @@ int run(const Config& config, const Args& a, const std::vector<const Suite*>& ch
 int main(int argc, char** argv) {
   Config c;
   Args a;
-  const std::vector<std::string> args = expand_args(argc, argv, a.waves_as_trace);
+  const std::vector<std::string> args = expand_args(argc, argv);
   std::vector<const char*> cargv;
   for (const std::string& arg : args) cargv.push_back(arg.c_str());
 

@@ -20,9 +20,7 @@ CosimOptions cosim_options(const Config& c, uint64_t seed) {
 static void fail(const char* suite, const Config& c, uint64_t seed) {
   std::printf("FAIL suite %s iteration seed %llu\n", suite, (unsigned long long)seed);
   const std::string fst = fmt::format("out/waves/{}-{}.fst", suite, seed);
-  // --trace: --waves's deprecated spelling, which tests/rtl/test_waves.sh and docs/testbench.md
-  // still expect here; the three change together.
-  std::printf("reproduce with waves: %s --suite %s --seed %llu --iterations 1 --trace %s\n",
+  std::printf("reproduce with waves: %s --suite %s --seed %llu --iterations 1 --waves %s\n",
               c.command.empty() ? "zblend_tb" : c.command.c_str(), suite,
               (unsigned long long)seed, fst.c_str());
 }

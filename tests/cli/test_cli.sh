@@ -160,11 +160,11 @@ expect_zblend_error "lab out-dir is a file" "--out-dir: $tmp/afile is a file" la
 expect_zblend_error "sweep out-dir under a file" "--out-dir: $tmp/afile is a file" sweep depth --out-dir "$tmp/afile/s"
 # The testbench: the same rule, checked before any suite runs.
 tiny=(--suite random --iterations 1 --fragments 6000)
-expect_error "tb trace extension" "^zblend_tb: error: --trace: '.*x.vcd' must end in .fst$" "$tb" "${tiny[@]}" --trace "$tmp/out/x.vcd"
-expect_error "tb trace under a file" "--trace: $tmp/afile is a file, not a directory" "$tb" "${tiny[@]}" --trace "$tmp/afile/x.fst"
-expect_error "tb trace is a directory" "--trace: $tmp/dir.fst is a directory" "$tb" "${tiny[@]}" --trace "$tmp/dir.fst"
+expect_error "tb trace extension" "^zblend_tb: error: --waves: '.*x.vcd' must end in .fst$" "$tb" "${tiny[@]}" --waves "$tmp/out/x.vcd"
+expect_error "tb trace under a file" "--waves: $tmp/afile is a file, not a directory" "$tb" "${tiny[@]}" --waves "$tmp/afile/x.fst"
+expect_error "tb trace is a directory" "--waves: $tmp/dir.fst is a directory" "$tb" "${tiny[@]}" --waves "$tmp/dir.fst"
 expect_error "tb mismatch-fst under a file" "--mismatch-fst: $tmp/afile is a file" "$tb" "${tiny[@]}" --mismatch-fst "$tmp/afile/dir/x.fst"
-if "$tb" -q "${tiny[@]}" --trace "$tmp/new5/sub/x.fst" >/dev/null && [[ -s "$tmp/new5/sub/x.fst" ]]; then ok; else bad "tb --trace: parent directories made"; fi
+if "$tb" -q "${tiny[@]}" --waves "$tmp/new5/sub/x.fst" >/dev/null && [[ -s "$tmp/new5/sub/x.fst" ]]; then ok; else bad "tb --waves: parent directories made"; fi
 
 # ---- options that would do nothing are refused ----------------------------------------------
 expect_zblend_error "backpressure on golden" "--backpressure: needs --backend rtl or both" render --backpressure 0.3 --out "$tmp/out/a.png"

@@ -29,7 +29,7 @@ echo "ok: $(cat check.txt)"
 
 # The reproduce command as printed, from this directory: the same failure, the whole run's waves.
 cmd=$(sed -n 's/^reproduce with waves: //p' out.txt)
-[[ $cmd == "$tb "*" --trace out/waves/random-1.fst" ]] || fail "reproduce command: '$cmd'"
+[[ $cmd == "$tb "*" --waves out/waves/random-1.fst" ]] || fail "reproduce command: '$cmd'"
 eval "$cmd" >again.txt 2>&1
 [[ $? -eq 1 ]] || fail "the reproduce command passed: $cmd"
 edge=$(sed -n 's/^LOCKSTEP MISMATCH.*its rising edge at \([0-9]*\) ns)$/\1/p' out.txt)
