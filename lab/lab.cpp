@@ -310,41 +310,39 @@ MethodSummary one_scene(const std::string& family, const LabRow& r) {
   return s;
 }
 
-// The unweighted mean of `parts` (one method), labelled `family`; scenes add up. RTL cycles
-// only when every part has them.
-MethodSummary mean_of(const std::string& family, const std::vector<MethodSummary>& parts) {
-  MethodSummary s;
-  s.family = family;
+// The unweighted mean of `parts` (one method) in each of `fields`, labelled `label` (the
+// summary's `label_field`: its family or scene); scenes add up. RTL cycles only when every part
+// has them.
+template <class Summary, size_t N>
+Summary mean_of(std::string Summary::*label_field, const std::string& label,
+                const std::vector<Summary>& parts, double Summary::*const (&fields)[N]) {
+  Summary s;
+  s.*label_field = label;
   s.method = parts.front().method;
   double cycles = 0;
   bool all_rtl = true;
-  for (const MethodSummary& p : parts) {
+  for (const Summary& p : parts) {
     s.scenes += p.scenes;
-    s.delta_e_mean += p.delta_e_mean;
-    s.rmse += p.rmse;
-    s.share_over_16 += p.share_over_16;
-    s.fragments += p.fragments;
-    s.bytes += p.bytes;
-    s.host_ms += p.host_ms;
+    for (double Summary::*f : fields) s.*f += p.*f;
     all_rtl = all_rtl && p.rtl_cycles.has_value();
     if (p.rtl_cycles) cycles += *p.rtl_cycles;
   }
   const double n = double(parts.size());
-  s.delta_e_mean /= n;
-  s.rmse /= n;
-  s.share_over_16 /= n;
-  s.fragments /= n;
-  s.bytes /= n;
-  s.host_ms /= n;
+  for (double Summary::*f : fields) s.*f /= n;
   if (all_rtl) s.rtl_cycles = cycles / n;
   return s;
 }
+
+// What a method's summary averages.
+constexpr double MethodSummary::*kMethodMeans[] = {
+    &MethodSummary::delta_e_mean, &MethodSummary::rmse,  &MethodSummary::share_over_16,
+    &MethodSummary::fragments,    &MethodSummary::bytes, &MethodSummary::host_ms};
 
 // Means over one family's rows of one method.
 MethodSummary summarize_group(const std::string& family, const std::vector<const LabRow*>& rows) {
   std::vector<MethodSummary> scenes;
   for (const LabRow* r : rows) scenes.push_back(one_scene(family, *r));
-  return mean_of(family, scenes);
+  return mean_of(&MethodSummary::family, family, scenes, kMethodMeans);
 }
 
 // "all": each family counts once, however many scenes it has (the suite samples some
@@ -352,7 +350,7 @@ MethodSummary summarize_group(const std::string& family, const std::vector<const
 MethodSummary mean_of_families(const std::vector<const MethodSummary*>& fams) {
   std::vector<MethodSummary> parts;
   for (const MethodSummary* f : fams) parts.push_back(*f);
-  return mean_of(kAllFamilies, parts);
+  return mean_of(&MethodSummary::family, kAllFamilies, parts, kMethodMeans);
 }
 
 void mark_pareto(std::vector<MethodSummary>::iterator first,
@@ -420,31 +418,10 @@ std::string summary_csv(const std::vector<MethodSummary>& summaries) {
 
 namespace {
 
-// The mean of `parts` (one method's rows or family means), scenes added up; RTL cycles only
-// when every part has them.
-LineSummary line_mean(const std::string& scene, const std::vector<LineSummary>& parts) {
-  LineSummary mean;
-  mean.scene = scene;
-  mean.method = parts.front().method;
-  double cycles = 0;
-  bool all_rtl = true;
-  for (const LineSummary& s : parts) {
-    mean.scenes += s.scenes;
-    mean.edge_pixels += s.edge_pixels;
-    mean.hidden_drawn += s.hidden_drawn;
-    mean.visible_missing += s.visible_missing;
-    mean.fragments += s.fragments;
-    all_rtl = all_rtl && s.rtl_cycles.has_value();
-    if (s.rtl_cycles) cycles += *s.rtl_cycles;
-  }
-  const double n = double(parts.size());
-  mean.edge_pixels /= n;
-  mean.hidden_drawn /= n;
-  mean.visible_missing /= n;
-  mean.fragments /= n;
-  if (all_rtl) mean.rtl_cycles = cycles / n;
-  return mean;
-}
+// What a hidden-line summary averages (over one method's rows, or its family means).
+constexpr double LineSummary::*kLineMeans[] = {
+    &LineSummary::edge_pixels, &LineSummary::hidden_drawn, &LineSummary::visible_missing,
+    &LineSummary::fragments};
 
 }  // namespace
 
@@ -479,9 +456,10 @@ std::vector<LineSummary> line_summary(const std::vector<LabRow>& rows) {
       std::vector<LineSummary> scenes;
       for (size_t i = 0; i < per_scene; ++i)
         if (out[i].method == m && family_of[i] == f) scenes.push_back(out[i]);
-      if (!scenes.empty()) family_means.push_back(line_mean(f, scenes));
+      if (!scenes.empty())
+        family_means.push_back(mean_of(&LineSummary::scene, f, scenes, kLineMeans));
     }
-    out.push_back(line_mean(kAllFamilies, family_means));
+    out.push_back(mean_of(&LineSummary::scene, kAllFamilies, family_means, kLineMeans));
   }
   return out;
 }

@@ -36,7 +36,7 @@ import sys
 import tempfile
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from zbscript import ROOT
 
 # module: (how, harness module in formal/<harness>.sv, the modules it reads besides, planted
 # difference in the simulation view)

@@ -36,95 +36,13 @@ import time
 
 import regressions
 from mutant_reasons import KINDS, Reasons
+from zbscript import ROOT, Progress, usage_error
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 REPORT_LINE = re.compile(r"^(LOCKSTEP MISMATCH|MISMATCH|suite \S+ +FAIL|suite \S+: error|"
                          r"  X(4|11): rtl wrote|zblend_tb: )")
 
 
-def usage_error(msg):
-    print(f"mutate.py: {msg}", file=sys.stderr)
-    sys.exit(2)
-
-
-def load_groups(first):
-    try:
-        groups = regressions.load()
-    except regressions.RegressionError as err:
-        usage_error(str(err))
-    tests = groups[first] + groups["full"]
-    if any(t["tool"] != "tb" for t in tests):
-        usage_error(f"tb/regressions.json: groups {first} and full may hold zblend_tb tests only")
-    return groups[first], tests
-
-
-def parse_mutants(spec, count):
-    out = []
-    for part in spec.split(","):
-        m = re.fullmatch(r"(\d+)(?:-(\d+))?", part.strip())
-        if not m:
-            usage_error(f"--mutants: '{part}' is not N or N-M")
-        lo, hi = int(m.group(1)), int(m.group(2) or m.group(1))
-        if not 1 <= lo <= hi <= count:
-            usage_error(f"--mutants: {part} is outside 1..{count} (the netlist's mutants)")
-        out.extend(range(lo, hi + 1))
-    return sorted(set(out))
-
-
-class Runner:
-    def __init__(self, tb, limits):
-        self.tb = tb
-        self.limits = limits  # test name -> seconds
-
-    def run_test(self, mutant, test, limit=None):
-        """(passed, seconds, first report line or why)."""
-        cmd = [self.tb, "--mutant", str(mutant), "-q", "--mismatch-fst", "",
-               *test["args"]]
-        t0 = time.monotonic()
-        try:
-            p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                               errors="replace",
-                               timeout=limit or self.limits.get(test["name"]))
-        except subprocess.TimeoutExpired:
-            return False, time.monotonic() - t0, "time limit"
-        sec = time.monotonic() - t0
-        if p.returncode == 0:
-            return True, sec, ""
-        line = next((ln for ln in p.stdout.splitlines() if REPORT_LINE.match(ln)), "")
-        if p.returncode < 0:
-            line = f"signal {-p.returncode}"
-        return False, sec, line.strip() or f"exit {p.returncode}"
-
-    def run_group(self, mutant, tests):
-        """(killed_by test name or '', seconds, report line)."""
-        total = 0.0
-        for t in tests:
-            ok, sec, line = self.run_test(mutant, t)
-            total += sec
-            if not ok:
-                return t["name"], total, line
-        return "", total, ""
-
-
-class Progress:
-    def __init__(self, what, n, settled="killed"):
-        self.what, self.n, self.done, self.t0 = what, n, 0, time.monotonic()
-        self.settled = settled
-        self.last = 0.0
-
-    def step(self, settled):
-        self.done += 1
-        now = time.monotonic()
-        if now - self.last < 5 and self.done != self.n:
-            return
-        self.last = now
-        el = now - self.t0
-        eta = el / self.done * (self.n - self.done)
-        print(f"mutate: {self.what}: {self.done}/{self.n} mutants, {settled} {self.settled}, "
-              f"{el:.0f} s, about {eta:.0f} s left", file=sys.stderr, flush=True)
-
-
-def main():
+def parse_args():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--build", default="build", help="build tree (default build)")
     ap.add_argument("--out", default="out/mutate", help="output directory (default out/mutate)")
@@ -160,212 +78,92 @@ def main():
     a = ap.parse_args()
     if a.jobs < 1:
         usage_error(f"-j {a.jobs}: 1 or more")
-    tb = os.path.join(a.build, "zblend_tb_mut")
-    listing = os.path.join(a.build, "mutation", "mutations.txt")
+    return a
+
+
+# ---- Set-up: the netlist, the written reasons, the mutants to run, the groups ----------------
+
+def read_netlist(build):
+    """The mutant testbench and the netlist's mutants, one description each (Yosys's mutate
+    command, BUILD/mutation/mutations.txt)."""
+    tb = os.path.join(build, "zblend_tb_mut")
+    listing = os.path.join(build, "mutation", "mutations.txt")
     for f in (tb, listing):
         if not os.path.exists(f):
             usage_error(f"{f} is missing: build it first (make build, or cmake --build "
-                        f"{a.build} --target zblend_tb_mut)")
+                        f"{build} --target zblend_tb_mut)")
     with open(listing) as f:
-        descriptions = [ln.strip() for ln in f if ln.strip()]
-    count = len(descriptions)
+        return tb, [ln.strip() for ln in f if ln.strip()]
+
+
+def load_reasons(path, descriptions):
     try:
-        reasons = Reasons(a.reasons)
+        reasons = Reasons(path)
     except (OSError, ValueError) as err:
         usage_error(f"--reasons: {err}")
     reasons.count(descriptions)
+    return reasons
+
+
+def choose_mutants(a, count):
+    """The mutants of --sample (spread evenly), of --mutants, or all."""
     if a.sample is not None and a.mutants:
         usage_error("--sample and --mutants: choose one")
     if a.sample is not None:
         if not 1 <= a.sample <= count:
             usage_error(f"--sample {a.sample}: choose 1 to {count}")
         step = count / a.sample
-        chosen = sorted({int(i * step) + 1 for i in range(a.sample)})
-    elif a.mutants:
-        chosen = parse_mutants(a.mutants, count)
-    else:
-        chosen = list(range(1, count + 1))
-    smoke, full = load_groups(a.group)
-    reason_of = {m: reasons.explain(descriptions[m - 1]) for m in chosen}  # entry or None
-    os.makedirs(a.out, exist_ok=True)
-    # The run's own copy of the testbench, so that a rebuild meanwhile changes nothing; --resume
-    # goes on with the copy its journal came from.
-    own = os.path.join(a.out, "zblend_tb_mut")
-    if not (a.resume and os.path.exists(own)):
+        return sorted({int(i * step) + 1 for i in range(a.sample)})
+    if a.mutants:
+        return parse_mutants(a.mutants, count)
+    return list(range(1, count + 1))
+
+
+def parse_mutants(spec, count):
+    out = []
+    for part in spec.split(","):
+        m = re.fullmatch(r"(\d+)(?:-(\d+))?", part.strip())
+        if not m:
+            usage_error(f"--mutants: '{part}' is not N or N-M")
+        lo, hi = int(m.group(1)), int(m.group(2) or m.group(1))
+        if not 1 <= lo <= hi <= count:
+            usage_error(f"--mutants: {part} is outside 1..{count} (the netlist's mutants)")
+        out.extend(range(lo, hi + 1))
+    return sorted(set(out))
+
+
+def load_groups(first):
+    try:
+        groups = regressions.load()
+    except regressions.RegressionError as err:
+        usage_error(str(err))
+    tests = groups[first] + groups["full"]
+    if any(t["tool"] != "tb" for t in tests):
+        usage_error(f"tb/regressions.json: groups {first} and full may hold zblend_tb tests only")
+    return groups[first], tests
+
+
+def own_testbench(tb, out, resume):
+    """The run's own copy of the testbench, so that a rebuild meanwhile changes nothing;
+    --resume goes on with the copy its journal came from."""
+    own = os.path.join(out, "zblend_tb_mut")
+    if not (resume and os.path.exists(own)):
         shutil.copy2(tb, own)
-    tb = own
+    return own
 
-    journal_path = os.path.join(a.out, "journal.jsonl")
-    done, limits = load_journal(journal_path, descriptions) if a.resume else ({}, {})
-    journal = open(journal_path, "a" if a.resume else "w")
 
-    def record(entry):
-        journal.write(json.dumps(entry) + "\n")
-        journal.flush()
+class Journal:
+    """OUT/journal.jsonl: each verdict and each test's time limit as it comes; with --resume,
+    those of the interrupted run (done: {(mutant, stage): entry}, limits: {test: seconds})."""
 
-    # 1. The unmutated netlist passes everything; its times set the limits.
-    runner = Runner(tb, {})
-    for t in (smoke if a.no_full else full):
-        if t["name"] in limits:
-            continue
-        ok, sec, line = runner.run_test(0, t, limit=3600)
-        print(f"mutate: mutant 0 (none): {t['name']}: {'pass' if ok else 'FAIL'} {sec:.1f} s",
-              file=sys.stderr, flush=True)
-        if not ok:
-            print(f"mutate: FAILED: the unmutated netlist fails {t['name']}: {line}",
-                  file=sys.stderr)
-            return 1
-        limits[t["name"]] = max(20.0, 5 * sec)
-        record({"limit": t["name"], "seconds": limits[t["name"]]})
-    runner.limits = limits
+    def __init__(self, out, descriptions, resume):
+        self.path = os.path.join(out, "journal.jsonl")
+        self.done, self.limits = load_journal(self.path, descriptions) if resume else ({}, {})
+        self.file = open(self.path, "a" if resume else "w")
 
-    rows = {m: {"mutant": m, "description": descriptions[m - 1], "smoke": "", "equiv": "",
-                "full": "", "killed_by": "", "report": "", "seconds": 0.0, "reason": ""}
-            for m in chosen}
-
-    deadline = time.monotonic() + a.time_limit if a.time_limit > 0 else None
-    design = os.path.join(a.build, "mutation", "design.il")
-
-    def run_tests(m, tests):
-        by, sec, line = runner.run_group(m, tests)
-        return ("killed" if by else "survived"), by, sec, line
-
-    def prove(m, _):
-        t0 = time.monotonic()
-        p = subprocess.run([os.path.join(ROOT, "scripts", "mutant_equiv.sh"), "--time-limit",
-                            str(a.equiv_limit), design, str(m)],
-                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-        verdict = {0: "equivalent", 1: "not proven"}.get(p.returncode, "no proof")
-        last = (p.stdout.strip().splitlines() or [""])[-1]
-        return verdict, "", time.monotonic() - t0, last
-
-    def stage(name, work, tests, mutants, column):
-        """Runs work on each mutant (journal verdicts kept); sets rows[m][column]."""
-        def apply(m, verdict, by, sec, line):
-            r = rows[m]
-            r["seconds"] += sec
-            r[column] = verdict
-            if by:
-                r["killed_by"] = by
-            if line and (by or column == "equiv"):
-                r["report"] = line if by else f"equivalence: {line}"
-        for m in mutants:  # verdicts kept from the journal (--resume)
-            if (m, column) in done:
-                e = done[m, column]
-                apply(m, e["verdict"], e["killed_by"], e["seconds"], e["report"])
-        todo = [m for m in mutants if (m, column) not in done]
-        if len(todo) < len(mutants):
-            print(f"mutate: {name}: {len(mutants) - len(todo)} verdicts kept from "
-                  f"{journal_path}", file=sys.stderr)
-        prog = Progress(name, len(todo),
-                        "proven equivalent" if column == "equiv" else "killed")
-        settled = 0
-
-        def before_deadline(m):
-            if deadline is not None and time.monotonic() > deadline:
-                return None
-            return work(m, tests)
-        with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
-            futs = {pool.submit(before_deadline, m): m for m in todo}
-            for fut in concurrent.futures.as_completed(futs):
-                m = futs[fut]
-                if fut.result() is None:  # past --time-limit
-                    rows[m][column] = "not run"
-                    continue
-                verdict, by, sec, line = fut.result()
-                record({"mutant": m, "stage": column, "verdict": verdict, "killed_by": by,
-                        "seconds": sec, "report": line, "description": descriptions[m - 1]})
-                apply(m, verdict, by, sec, line)
-                settled += verdict in ("killed", "equivalent")
-                prog.step(settled)
-        return [m for m in mutants if rows[m][column] in ("survived", "not proven", "no proof")]
-
-    t0 = time.monotonic()
-    # A spread order, so that a time limit leaves out mutants from all over the netlist.
-    order = sorted(chosen, key=lambda m: ((m - 1) * 7919) % count)
-    survivors = stage(a.group, run_tests, smoke, order, "smoke")
-    if not a.no_equiv and survivors:
-        # A survivor whose written reason says it differs (the port contract, a count beyond
-        # any run) is not equivalent: the prover would only spend its time limit on it.
-        differ = [m for m in survivors
-                  if (reason_of[m] or {}).get("kind", "equivalent") != "equivalent"]
-        for m in differ:
-            rows[m]["equiv"] = "not tried"
-        survivors = stage("equivalence", prove, None,
-                          [m for m in survivors if m not in differ], "equiv") + differ
-    if not a.no_full and survivors:
-        # A survivor with a written reason is one no test can kill: it counts as a full-group
-        # survivor without the run (which only lowers the score if the reason is wrong), unless
-        # --full-all. Its smoke run has already checked the reason against the smoke group.
-        reasoned = [] if a.full_all else [m for m in survivors if reason_of[m]]
-        for m in reasoned:
-            rows[m]["full"] = "survived (reason)"
-        survivors = stage("full", run_tests, full[len(smoke):],
-                          [m for m in survivors if m not in reasoned], "full") + reasoned
-    for m in chosen:
-        if not a.no_full and rows[m]["smoke"] == "killed":
-            rows[m]["full"] = "killed"
-    wrong = []  # killed mutants a reason says no test can kill: the reason is wrong
-    for m in chosen:  # a written reason for each survivor that has one
-        r = rows[m]
-        e = reason_of[m]
-        if e and r["killed_by"]:
-            wrong.append(f"{e['id']} (mutant {m}, killed by {r['killed_by']})")
-        elif not r["killed_by"] and r["equiv"] != "equivalent" and r["smoke"] != "not run":
-            r["reason"] = e["id"] if e else ""
-    asked = len(chosen)
-    chosen = [m for m in chosen if rows[m]["smoke"] != "not run"]
-    rows = {m: rows[m] for m in chosen}
-
-    n = len(chosen)
-    smoke_killed = sum(1 for r in rows.values() if r["smoke"] == "killed")
-    full_killed = sum(1 for r in rows.values() if r["full"] == "killed")
-    equivalent = sum(1 for r in rows.values() if r["equiv"] == "equivalent")
-    denom = max(1, n - equivalent)  # the score is over the mutants not proven equivalent
-    left = [r for r in rows.values() if not r["killed_by"] and r["equiv"] != "equivalent"]
-    summary = {
-        "mutants": n, "netlist_mutants": count, "left_out_by_time_limit": asked - n,
-        "proven_equivalent": equivalent, "equivalence_checked": not a.no_equiv,
-        "smoke_killed": smoke_killed, "smoke_score": round(100 * smoke_killed / denom, 2),
-        "seconds": round(time.monotonic() - t0, 1), "jobs": a.jobs,
-        "group": a.group, "smoke_tests": [t["name"] for t in smoke],
-        "survivors": len(left), "survivors_with_reason": sum(1 for r in left if r["reason"]),
-        "reasons_file": os.path.relpath(a.reasons, ROOT), "stale_reasons": reasons.stale(),
-        "wrong_reasons": wrong,
-    }
-    if not a.no_full:
-        summary.update(full_killed=full_killed,
-                       full_score=round(100 * full_killed / denom, 2),
-                       full_tests=[t["name"] for t in full])
-    with open(os.path.join(a.out, "mutants.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(next(iter(rows.values())).keys()))
-        w.writeheader()
-        for m in chosen:
-            r = dict(rows[m])
-            r["seconds"] = round(r["seconds"], 2)
-            w.writerow(r)
-    with open(os.path.join(a.out, "summary.json"), "w") as f:
-        json.dump(summary, f, indent=2)
-    write_report(os.path.join(a.out, "report.md"), summary, rows, chosen, left, reasons)
-
-    line = (f"mutate: {n} mutants, {equivalent} proven equivalent; {a.group} killed "
-            f"{smoke_killed} ({summary['smoke_score']} % of the rest)")
-    if not a.no_full:
-        line += f"; full killed {full_killed} ({summary['full_score']} %)"
-    print(line + f"; {summary['seconds']} s; {a.out}/report.md")
-    print(f"mutate: {summary['survivors']} survivors, {summary['survivors_with_reason']} with a "
-          f"written reason ({summary['reasons_file']})"
-          + (f"; stale reasons (match no mutant): {', '.join(reasons.stale())}"
-             if reasons.stale() else ""))
-    if wrong:
-        print(f"mutate: FAILED: written reasons that a test contradicts ({summary['reasons_file']}): "
-              + "; ".join(wrong), file=sys.stderr)
-    low = summary["smoke_score"] < a.min_smoke or (
-        not a.no_full and summary["full_score"] < a.min_full)
-    if low:
-        print(f"mutate: FAILED: score below --min-smoke {a.min_smoke} / --min-full {a.min_full}",
-              file=sys.stderr)
-    return 1 if low or wrong else 0
+    def record(self, entry):
+        self.file.write(json.dumps(entry) + "\n")
+        self.file.flush()
 
 
 def load_journal(path, descriptions):
@@ -389,6 +187,229 @@ def load_journal(path, descriptions):
             e.setdefault("verdict", "killed" if e["killed_by"] else "survived")
             done[m, e["stage"]] = e
     return done, limits
+
+
+# ---- Running tests and proofs on one mutant --------------------------------------------------
+
+class Runner:
+    def __init__(self, tb, limits):
+        self.tb = tb
+        self.limits = limits  # test name -> seconds
+
+    def run_test(self, mutant, test, limit=None):
+        """(passed, seconds, first report line or why)."""
+        cmd = [self.tb, "--mutant", str(mutant), "-q", "--mismatch-fst", "",
+               *test["args"]]
+        t0 = time.monotonic()
+        try:
+            p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                               errors="replace",
+                               timeout=limit or self.limits.get(test["name"]))
+        except subprocess.TimeoutExpired:
+            return False, time.monotonic() - t0, "time limit"
+        sec = time.monotonic() - t0
+        if p.returncode == 0:
+            return True, sec, ""
+        line = next((ln for ln in p.stdout.splitlines() if REPORT_LINE.match(ln)), "")
+        if p.returncode < 0:
+            line = f"signal {-p.returncode}"
+        return False, sec, line.strip() or f"exit {p.returncode}"
+
+    def run_group(self, mutant, tests):
+        """(killed_by test name or '', seconds, report line)."""
+        total = 0.0
+        for t in tests:
+            ok, sec, line = self.run_test(mutant, t)
+            total += sec
+            if not ok:
+                return t["name"], total, line
+        return "", total, ""
+
+    def verdict(self, mutant, tests):
+        """A test stage's work on one mutant: (verdict, killed by, seconds, report line)."""
+        by, sec, line = self.run_group(mutant, tests)
+        return ("killed" if by else "survived"), by, sec, line
+
+
+def prove_equivalent(design, limit, mutant):
+    """The equivalence stage's work on one mutant (scripts/mutant_equiv.sh): (verdict, '',
+    seconds, the prover's last line)."""
+    t0 = time.monotonic()
+    p = subprocess.run([os.path.join(ROOT, "scripts", "mutant_equiv.sh"), "--time-limit",
+                        str(limit), design, str(mutant)],
+                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    verdict = {0: "equivalent", 1: "not proven"}.get(p.returncode, "no proof")
+    last = (p.stdout.strip().splitlines() or [""])[-1]
+    return verdict, "", time.monotonic() - t0, last
+
+
+def set_time_limits(runner, tests, journal):
+    """Stage 1: mutant 0 (the netlist unmutated) passes every test; five times its time (20 s
+    at least) is each test's limit. False when it fails one."""
+    limits = journal.limits
+    for t in tests:
+        if t["name"] in limits:
+            continue
+        ok, sec, line = runner.run_test(0, t, limit=3600)
+        print(f"mutate: mutant 0 (none): {t['name']}: {'pass' if ok else 'FAIL'} {sec:.1f} s",
+              file=sys.stderr, flush=True)
+        if not ok:
+            print(f"mutate: FAILED: the unmutated netlist fails {t['name']}: {line}",
+                  file=sys.stderr)
+            return False
+        limits[t["name"]] = max(20.0, 5 * sec)
+        journal.record({"limit": t["name"], "seconds": limits[t["name"]]})
+    runner.limits = limits
+    return True
+
+
+# ---- The stages over the chosen mutants ------------------------------------------------------
+
+class Stages:
+    """The chosen mutants' rows, filled in stage by stage: each stage's work runs on -j threads
+    (verdicts the journal already holds kept), and mutants not started by --time-limit are
+    'not run'."""
+
+    def __init__(self, chosen, descriptions, journal, jobs, deadline):
+        self.rows = {m: {"mutant": m, "description": descriptions[m - 1], "smoke": "",
+                         "equiv": "", "full": "", "killed_by": "", "report": "",
+                         "seconds": 0.0, "reason": ""}
+                     for m in chosen}
+        self.descriptions, self.journal = descriptions, journal
+        self.jobs, self.deadline = jobs, deadline
+
+    def apply(self, m, column, verdict, by, sec, line):
+        r = self.rows[m]
+        r["seconds"] += sec
+        r[column] = verdict
+        if by:
+            r["killed_by"] = by
+        if line and (by or column == "equiv"):
+            r["report"] = line if by else f"equivalence: {line}"
+
+    def run(self, name, work, mutants, column):
+        """Runs work(m) on each of mutants; sets rows[m][column]; returns those not settled
+        (survived, not proven, no proof)."""
+        done = self.journal.done
+        for m in mutants:  # verdicts kept from the journal (--resume)
+            if (m, column) in done:
+                e = done[m, column]
+                self.apply(m, column, e["verdict"], e["killed_by"], e["seconds"], e["report"])
+        todo = [m for m in mutants if (m, column) not in done]
+        if len(todo) < len(mutants):
+            print(f"mutate: {name}: {len(mutants) - len(todo)} verdicts kept from "
+                  f"{self.journal.path}", file=sys.stderr)
+        what = "proven equivalent" if column == "equiv" else "killed"
+        prog = Progress("mutate", todo, every=5)
+        settled = 0
+
+        def before_deadline(m):
+            if self.deadline is not None and time.monotonic() > self.deadline:
+                return None
+            return work(m)
+        with concurrent.futures.ThreadPoolExecutor(self.jobs) as pool:
+            futs = {pool.submit(before_deadline, m): m for m in todo}
+            for fut in concurrent.futures.as_completed(futs):
+                m = futs[fut]
+                if fut.result() is None:  # past --time-limit
+                    self.rows[m][column] = "not run"
+                    continue
+                verdict, by, sec, line = fut.result()
+                self.journal.record({"mutant": m, "stage": column, "verdict": verdict,
+                                     "killed_by": by, "seconds": sec, "report": line,
+                                     "description": self.descriptions[m - 1]})
+                self.apply(m, column, verdict, by, sec, line)
+                settled += verdict in ("killed", "equivalent")
+                prog.step(m, lambda p: f"{name}: {p.done}/{p.n} mutants, {settled} {what}, "
+                          f"{p.elapsed:.0f} s, about {p.left:.0f} s left")
+        return [m for m in mutants
+                if self.rows[m][column] in ("survived", "not proven", "no proof")]
+
+
+def run_stages(a, st, runner, chosen, smoke, full, reason_of):
+    """Stages 2 to 4 on the chosen mutants, in an order spread over the netlist (so that a time
+    limit leaves out mutants from all over it): the first group, the equivalence proofs of its
+    survivors, the full group on those not proven equivalent."""
+    count = len(st.descriptions)
+    order = sorted(chosen, key=lambda m: ((m - 1) * 7919) % count)
+    survivors = st.run(a.group, lambda m: runner.verdict(m, smoke), order, "smoke")
+    if not a.no_equiv and survivors:
+        # A survivor whose written reason says it differs (the port contract, a count beyond
+        # any run) is not equivalent: the prover would only spend its time limit on it.
+        differ = [m for m in survivors
+                  if (reason_of[m] or {}).get("kind", "equivalent") != "equivalent"]
+        for m in differ:
+            st.rows[m]["equiv"] = "not tried"
+        design = os.path.join(a.build, "mutation", "design.il")
+        survivors = st.run("equivalence", lambda m: prove_equivalent(design, a.equiv_limit, m),
+                           [m for m in survivors if m not in differ], "equiv") + differ
+    if not a.no_full and survivors:
+        # A survivor with a written reason is one no test can kill: it counts as a full-group
+        # survivor without the run (which only lowers the score if the reason is wrong), unless
+        # --full-all. Its smoke run has already checked the reason against the smoke group.
+        reasoned = [] if a.full_all else [m for m in survivors if reason_of[m]]
+        for m in reasoned:
+            st.rows[m]["full"] = "survived (reason)"
+        st.run("full", lambda m: runner.verdict(m, full[len(smoke):]),
+               [m for m in survivors if m not in reasoned], "full")
+
+
+def settle(rows, chosen, reason_of, no_full):
+    """A mutant the first group killed is killed in the full group too; each survivor gets its
+    written reason. Returns the wrong reasons: those covering a mutant a test killed."""
+    for m in chosen:
+        if not no_full and rows[m]["smoke"] == "killed":
+            rows[m]["full"] = "killed"
+    wrong = []
+    for m in chosen:
+        r = rows[m]
+        e = reason_of[m]
+        if e and r["killed_by"]:
+            wrong.append(f"{e['id']} (mutant {m}, killed by {r['killed_by']})")
+        elif not r["killed_by"] and r["equiv"] != "equivalent" and r["smoke"] != "not run":
+            r["reason"] = e["id"] if e else ""
+    return wrong
+
+
+# ---- The scores and the report ---------------------------------------------------------------
+
+def score(a, rows, asked, count, smoke, full, reasons, wrong, seconds):
+    """summary.json's content, and the survivors (not killed, not proven equivalent)."""
+    n = len(rows)
+    smoke_killed = sum(1 for r in rows.values() if r["smoke"] == "killed")
+    full_killed = sum(1 for r in rows.values() if r["full"] == "killed")
+    equivalent = sum(1 for r in rows.values() if r["equiv"] == "equivalent")
+    denom = max(1, n - equivalent)  # the score is over the mutants not proven equivalent
+    left = [r for r in rows.values() if not r["killed_by"] and r["equiv"] != "equivalent"]
+    summary = {
+        "mutants": n, "netlist_mutants": count, "left_out_by_time_limit": asked - n,
+        "proven_equivalent": equivalent, "equivalence_checked": not a.no_equiv,
+        "smoke_killed": smoke_killed, "smoke_score": round(100 * smoke_killed / denom, 2),
+        "seconds": seconds, "jobs": a.jobs,
+        "group": a.group, "smoke_tests": [t["name"] for t in smoke],
+        "survivors": len(left), "survivors_with_reason": sum(1 for r in left if r["reason"]),
+        "reasons_file": os.path.relpath(a.reasons, ROOT), "stale_reasons": reasons.stale(),
+        "wrong_reasons": wrong,
+    }
+    if not a.no_full:
+        summary.update(full_killed=full_killed,
+                       full_score=round(100 * full_killed / denom, 2),
+                       full_tests=[t["name"] for t in full])
+    return summary, left
+
+
+def write_outputs(out, summary, rows, chosen, left, reasons):
+    """OUT/mutants.csv, OUT/summary.json, OUT/report.md."""
+    with open(os.path.join(out, "mutants.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(next(iter(rows.values())).keys()))
+        w.writeheader()
+        for m in chosen:
+            r = dict(rows[m])
+            r["seconds"] = round(r["seconds"], 2)
+            w.writerow(r)
+    with open(os.path.join(out, "summary.json"), "w") as f:
+        json.dump(summary, f, indent=2)
+    write_report(os.path.join(out, "report.md"), summary, rows, chosen, left, reasons)
 
 
 def write_report(path, s, rows, chosen, left, reasons):
@@ -427,6 +448,53 @@ def write_report(path, s, rows, chosen, left, reasons):
                   + ", ".join(s["stale_reasons"])]
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
+
+
+def conclude(a, s, wrong):
+    """The run's two lines on stdout, the failures on stderr; the exit code."""
+    line = (f"mutate: {s['mutants']} mutants, {s['proven_equivalent']} proven equivalent; "
+            f"{a.group} killed {s['smoke_killed']} ({s['smoke_score']} % of the rest)")
+    if not a.no_full:
+        line += f"; full killed {s['full_killed']} ({s['full_score']} %)"
+    print(line + f"; {s['seconds']} s; {a.out}/report.md")
+    stale = s["stale_reasons"]
+    print(f"mutate: {s['survivors']} survivors, {s['survivors_with_reason']} with a "
+          f"written reason ({s['reasons_file']})"
+          + (f"; stale reasons (match no mutant): {', '.join(stale)}" if stale else ""))
+    if wrong:
+        print(f"mutate: FAILED: written reasons that a test contradicts ({s['reasons_file']}): "
+              + "; ".join(wrong), file=sys.stderr)
+    low = s["smoke_score"] < a.min_smoke or (not a.no_full and s["full_score"] < a.min_full)
+    if low:
+        print(f"mutate: FAILED: score below --min-smoke {a.min_smoke} / --min-full {a.min_full}",
+              file=sys.stderr)
+    return 1 if low or wrong else 0
+
+
+def main():
+    a = parse_args()
+    tb, descriptions = read_netlist(a.build)
+    reasons = load_reasons(a.reasons, descriptions)
+    chosen = choose_mutants(a, len(descriptions))
+    smoke, full = load_groups(a.group)
+    reason_of = {m: reasons.explain(descriptions[m - 1]) for m in chosen}  # entry or None
+    os.makedirs(a.out, exist_ok=True)
+    runner = Runner(own_testbench(tb, a.out, a.resume), {})
+    journal = Journal(a.out, descriptions, a.resume)
+    if not set_time_limits(runner, smoke if a.no_full else full, journal):
+        return 1
+    deadline = time.monotonic() + a.time_limit if a.time_limit > 0 else None
+    st = Stages(chosen, descriptions, journal, a.jobs, deadline)
+    t0 = time.monotonic()
+    run_stages(a, st, runner, chosen, smoke, full, reason_of)
+    wrong = settle(st.rows, chosen, reason_of, a.no_full)
+    ran = [m for m in chosen if st.rows[m]["smoke"] != "not run"]
+    rows = {m: st.rows[m] for m in ran}
+    summary, left = score(a, rows, len(chosen), len(descriptions), smoke, full, reasons, wrong,
+                          round(time.monotonic() - t0, 1))
+    write_outputs(a.out, summary, rows, ran, left, reasons)
+    return conclude(a, summary, wrong)
+
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -26,15 +26,11 @@ import sys
 import time
 import xml.etree.ElementTree as ET
 
-from regressions import DEFAULT, ROOT, RegressionError, load
+from regressions import DEFAULT, RegressionError, load
+from zbscript import ROOT, Progress, usage_error
 
 REPORT_PREFIXES = ("LOCKSTEP MISMATCH", "MISMATCH", "FAIL ", "suite ", "zblend_tb: ", "zblend: ",
                    "replay ")
-
-
-def usage_error(msg):
-    print(f"regress.py: {msg}", file=sys.stderr)
-    sys.exit(2)
 
 
 def tree(test, a):
@@ -129,28 +125,6 @@ def run_one(test, a, waves=False):
         with open(os.path.join(out, "results", name + ".json"), "w") as f:
             json.dump(r, f, indent=1)
     return r
-
-
-class Progress:
-    """A line per finished test: count, verdict, and the time left: the tests not yet done, at
-    their times in the last summary of OUT where it has them (else the mean so far), over the
-    processes."""
-
-    def __init__(self, tests, last):
-        self.n, self.done, self.failed, self.t0 = len(tests), 0, 0, time.monotonic()
-        self.todo = {t["name"] for t in tests}
-        self.last = last  # name -> seconds
-
-    def step(self, r, jobs):
-        self.done += 1
-        self.failed += not r["passed"]
-        self.todo.discard(r["name"])
-        el = time.monotonic() - self.t0
-        mean = el * jobs / self.done
-        left = sum(self.last.get(n, mean) for n in self.todo) / jobs
-        print(f"regress: [{self.done}/{self.n}] {'PASS' if r['passed'] else 'FAIL'} "
-              f"{r['name']} {r['seconds']:.1f} s; {self.failed} failed; {el:.0f} s elapsed, "
-              f"about {left:.0f} s left", file=sys.stderr, flush=True)
 
 
 def gather(group, tests, a, started=None, why=None):
@@ -300,14 +274,19 @@ def cmd_run(group, tests, a):
     ensure_trees(tests, a)
     print(f"regress: {group}: {len(tests)} tests on {a.jobs} processes; {a.out}/",
           file=sys.stderr, flush=True)
-    prog = Progress(tests, last)
-    results = []
+    # A line per finished test: its verdict and the time left, the tests not yet done at their
+    # times in OUT's last summary where it has them.
+    prog = Progress("regress", [t["name"] for t in tests], jobs=a.jobs, known=last)
+    results, n_failed = [], 0
     with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
         futs = [pool.submit(run_one, t, a) for t in tests]
         for fut in concurrent.futures.as_completed(futs):
             r = fut.result()
             results.append(r)
-            prog.step(r, a.jobs)
+            n_failed += not r["passed"]
+            prog.step(r["name"], lambda p: f"[{p.done}/{p.n}] {'PASS' if r['passed'] else 'FAIL'} "
+                      f"{r['name']} {r['seconds']:.1f} s; {n_failed} failed; {p.elapsed:.0f} s "
+                      f"elapsed, about {p.left:.0f} s left")
     failed = [r for r in results if not r["passed"]]
     if failed and a.waves:
         rerun_with_waves(failed, tests, a)

@@ -18,7 +18,8 @@ import json
 import os
 import re
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from zbscript import ROOT
+
 DEFAULT = os.path.join(ROOT, "tb", "regressions.json")
 NAME = re.compile(r"[A-Za-z0-9_.+-]+")
 KEYS = {"name", "args", "suite", "seeds", "backpressure", "render", "group", "rtl"}

@@ -3,9 +3,7 @@
 # stderr, and nothing left behind: no suite, no temporary sibling, no parent made.
 set -u
 zblend=$(realpath "${1:?usage: test_bad_input.sh PATH/TO/zblend}")
-tmp=$(mktemp -d)
-trap 'chmod -R u+w "$tmp"; rm -rf "$tmp"' EXIT
-. "$(dirname "$0")/../cli/cli_lib.sh"
+source "$(dirname "$0")/../lib.sh"
 mkdir -p "$tmp/out"
 o=$tmp/out
 
@@ -25,13 +23,12 @@ if [[ $(id -u) -ne 0 ]]; then  # root writes anywhere
   expect_error "DIR not writable" "directory '$o/locked' is not writable" "$zblend" conformance export "$o/locked/s"
   chmod u+w "$o/locked" && rmdir "$o/locked"
 fi
-[[ $(cat "$o/mine/notes.txt") == keep ]] || bad "a refused export changed a directory"
+[[ $(cat "$o/mine/notes.txt") == keep ]] || fail "a refused export changed a directory"
 
 # A failure while writing (here: the suite's directory made read-only under a non-root user is
 # not portable, so a DIR whose parent is replaced by a file mid-way is not tried): the temporary
 # sibling is removed on every error path of export_suite; none may be left by the refusals above.
 leftover=$(find "$tmp" -name '.*tmp-*' -o -name '.*old-*')
-[[ -z $leftover ]] || bad "left behind: $leftover"
+[[ -z $leftover ]] || fail "left behind: $leftover"
 
-echo "bad input: $pass refused, $fail wrong"
-exit $((fail > 0))
+echo "bad input: $pass refused"

@@ -6,7 +6,8 @@
 # the pixel's history, with an FST that replays it; and the unmutated netlist (mutant 0) must
 # pass the same run.
 set -u
-source "$(dirname "$0")/mutant_lib.sh" "$@"
+source "$(dirname "$0")/../lib.sh"
+mutant_args "$@"
 
 expect_mutant 347 '^mutate -mode inv -module zb_rop -cell $flatten\\u_depth.$gt$rtl/zb_depth.sv:[0-9]*$[0-9]* -port Y -portbit 0 ' \
   "the peel-compare mutant"

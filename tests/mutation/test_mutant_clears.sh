@@ -15,7 +15,8 @@
 # keeps the depth plane's all-fresh flag through loads: only the clears suite's last iteration
 # (one tile loaded, the next fast-cleared, twice with no store between) shows it, in the counts.
 set -u
-source "$(dirname "$0")/mutant_lib.sh" "$@"
+source "$(dirname "$0")/../lib.sh"
+mutant_args "$@"
 
 expect_mutant 703 '-mode inv -module zb_rop -cell $flatten\\u_depth.\\u_depth_plane.$eq$rtl/zb_plane.sv:78' \
   "the write-back epoch-compare mutant"

@@ -5,9 +5,7 @@
 # and names the port; a mutant of a clock gets no proof (the flow would "prove" it wrongly).
 set -u
 root=$(cd "$(dirname "$0")/../.." && pwd)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/../lib.sh"
 cd "$root"
 yosys -q -p "read_verilog -sv rtl/zb_mul8.sv rtl/zb_premul.sv; prep -top zb_premul -flatten;
   rename zb_premul zb_rop; write_rtlil $tmp/design.il; mutate -list 300 -seed 1 -o $tmp/mutations.txt" \

@@ -5,7 +5,8 @@
 # (frag_ready_o ignores all three); the run must stop at the first such cycle, naming it, and
 # the unmutated netlist must pass the same runs.
 set -u
-source "$(dirname "$0")/mutant_lib.sh" "$@"
+source "$(dirname "$0")/../lib.sh"
+mutant_args "$@"
 
 expect_mutant 711 '-mode const0 .* -wire u_input.hold_i -wirebit 0 ' "the hold_i mutant"
 for args in "--suite tiles --seed 1" "--suite random --seed 2 --fragments 20000 --backpressure 0.3"; do

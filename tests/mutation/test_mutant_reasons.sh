@@ -6,9 +6,7 @@
 set -u
 build=${1:?usage: test_mutant_reasons.sh BUILD_DIR}
 root=$(cd "$(dirname "$0")/../.." && pwd)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; [[ -f $tmp/out.txt ]] && { echo "--- output:"; cat "$tmp/out.txt"; }; exit 1; }
+source "$(dirname "$0")/../lib.sh"
 
 python3 -c "
 import sys; sys.path.insert(0, '$root/scripts')

@@ -6,7 +6,8 @@
 # the timing check under back-pressure sees it: the run must stop naming the late fragment,
 # pass with --no-timing-check, and the unmutated netlist must pass with the check.
 set -u
-source "$(dirname "$0")/mutant_lib.sh" "$@"
+source "$(dirname "$0")/../lib.sh"
+mutant_args "$@"
 
 expect_mutant 744 '-mode const1 -module zb_rop -cell $flatten\\u_input.$not$rtl/zb_input.sv:54' \
   "the I-free mutant"

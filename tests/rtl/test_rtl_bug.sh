@@ -14,7 +14,7 @@
 set -u
 tb=${1:?usage: test_rtl_bug.sh PATH/TO/zblend_tb_bug PATH/TO/zblend}
 zblend=${2:?usage: test_rtl_bug.sh PATH/TO/zblend_tb_bug PATH/TO/zblend}
-source "$(dirname "$0")/checker_lib.sh"
+source "$(dirname "$0")/../lib.sh"
 
 lockstep blend X11 --suite random --seed 1 --fragments 300000
 end_of_pass blend --suite random --seed 1 --fragments 300000

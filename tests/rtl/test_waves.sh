@@ -15,7 +15,7 @@ set -u
 tb=$(realpath "${1:?usage: test_waves.sh PATH/TO/zblend_tb_bug}")
 root=$(cd "$(dirname "$0")/../.." && pwd)
 check=(python3 "$root/scripts/check_waves.py")
-source "$(dirname "$0")/checker_lib.sh"
+source "$(dirname "$0")/../lib.sh"
 cd "$tmp"
 
 "$tb" --suite random --seed 1 --fragments 300000 -q --mismatch-fst "$tmp/w/bug.fst" >out.txt 2>&1
