@@ -153,7 +153,7 @@ def unpack_suite(archive, out):
 
 
 def load_suite(suite):
-    """The manifest's configs and tests, after every file of the suite matched its checksum."""
+    """The manifest's configs, tests and version, after every file matched its checksum."""
     path = os.path.join(suite, "manifest.json")
     again = "export it again: zblend conformance export DIR"
     try:
@@ -186,7 +186,7 @@ def load_suite(suite):
             if got != want:
                 usage_error(f"corrupt suite: {fp}: SHA-256 {got[:16]}..., the manifest says "
                             f"{want[:16]}... (truncated or changed; {again})")
-    return configs, tests
+    return configs, tests, v
 
 
 def load_profile(path, features_arg):
@@ -368,9 +368,8 @@ def strip_option(argv, name):
     return out
 
 
-def write_results(a, results, suite_version):
+def write_results(a, results, counts, suite_version):
     """OUT/results.json and OUT/junit.xml: every selected test's verdict, in suite order."""
-    counts = {v: sum(r["verdict"] == v for r in results) for v in VERDICTS}
     doc = {"suite": a.suite, "suite_version": suite_version, "sim": a.sim,
            "profile": a.prof["path"], "dut": a.prof["dut"], "counts": counts, "tests": results}
     with open(os.path.join(a.out, "results.json"), "w") as f:
@@ -477,9 +476,7 @@ def main():
     if os.path.isfile(a.suite):
         os.makedirs(a.out, exist_ok=True)
         a.suite = unpack_suite(a.suite, a.out)
-    configs, all_tests = load_suite(a.suite)
-    with open(os.path.join(a.suite, "manifest.json")) as f:
-        suite_version = json.load(f)["version"]
+    configs, all_tests, suite_version = load_suite(a.suite)
     tests = select(all_tests, [g for g in a.tests.split(",") if g], a.feature)
     unsupported = {t["name"]: missing_features(t, a.prof) for t in tests}
     unsupported = {k: v for k, v in unsupported.items() if v}
@@ -561,8 +558,8 @@ def main():
             else:
                 r.update(verdict="fail", message=why or "the checker gave no verdict")
         results.append(r)
-    write_results(a, results, suite_version)
     counts = {v: sum(r["verdict"] == v for r in results) for v in VERDICTS}
+    write_results(a, results, counts, suite_version)
     if counts["not_supported"]:
         needs = {}
         for r in results:
