@@ -84,16 +84,18 @@ if(ZBLEND_PGO STREQUAL "use")
   endif()
 endif()
 
-# zblend_verilate(TARGET PREFIX P DIRECTORY D [SYSTEMC] [BUG] [FAST] [COVERAGE] [TRACE]
+# zblend_verilate(TARGET PREFIX P DIRECTORY D [SYSTEMC] [BUG] [FAST] [COVERAGE]
+#                 [FUNCTIONAL_COVERAGE] [TRACE]
 #                 [MUTANTS NETLIST]): a static library TARGET holding zb_rop Verilated with the
 # widths above: the assertion build (--assert: SVA and unique-case checks), or with FAST the
 # speed build (no assertion code at all: ZB_NO_SVA, no --assert; docs/rtl.md "Two builds"). BUG adds the deliberate defects the checkers must catch, each switched on by a
 # plusarg (+zb_bug_window, +zb_bug_accum; the blend's without either); SYSTEMC builds it with --sc. MUTANTS builds Yosys's
 # netlist of zb_rop's mutants (mutation/CMakeLists.txt) in its wrapper instead of rtl/: a
 # generated netlist, so no -Wall, and no assertions (Yosys drops them). TRACE adds FST tracing
-# and the waveform probe, model PREFIX_probe.
+# and the waveform probe, model PREFIX_probe. COVERAGE counts lines, toggles and covers,
+# FUNCTIONAL_COVERAGE the covers only; both bind the coverage plan's module (tb/cov/).
 function(zblend_verilate target)
-  cmake_parse_arguments(V "SYSTEMC;BUG;FAST;COVERAGE;TRACE" "PREFIX;DIRECTORY;MUTANTS" "" ${ARGN})
+  cmake_parse_arguments(V "SYSTEMC;BUG;FAST;COVERAGE;FUNCTIONAL_COVERAGE;TRACE" "PREFIX;DIRECTORY;MUTANTS" "" ${ARGN})
   set(args --assert ${ZBLEND_VERILATOR_OPT} -Wall ${ZBLEND_RTL_PARAMS})
   set(sources ${PROJECT_SOURCE_DIR}/rtlmodel/zb_rop_public.vlt ${ZBLEND_RTL_WAIVERS} ${ZBLEND_RTL_SIM})
   if(V_FAST)
@@ -122,6 +124,13 @@ function(zblend_verilate target)
   endif()
   if(V_COVERAGE)
     list(APPEND extra COVERAGE)
+  elseif(V_FUNCTIONAL_COVERAGE)
+    list(APPEND args --coverage-user)
+  endif()
+  if(V_COVERAGE OR V_FUNCTIONAL_COVERAGE)
+    # The functional coverage plan's bins, bound to zb_rop (tb/cov/, docs/coverage.md).
+    list(APPEND sources ${PROJECT_SOURCE_DIR}/tb/cov/zb_rop_cov.sv
+         ${PROJECT_SOURCE_DIR}/tb/cov/zb_rop_cov_bind.sv)
   endif()
   set(opt_fast ${ZBLEND_VERILATOR_OPT_FAST})
   if(V_FAST AND ZBLEND_PGO STREQUAL "generate")
@@ -155,7 +164,7 @@ function(zblend_verilate target)
   target_compile_options(${target} PRIVATE -w -Wno-error)
   set_target_properties(${target} PROPERTIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES
     $<TARGET_PROPERTY:${target},INTERFACE_INCLUDE_DIRECTORIES>)
-  if(V_COVERAGE)
+  if(V_COVERAGE OR V_FUNCTIONAL_COVERAGE)
     target_compile_definitions(${target} INTERFACE VM_COVERAGE=1)
   endif()
   if(ZBLEND_SANITIZE)

@@ -30,6 +30,13 @@ using VProbe = Vzb_rop_bug_probe;
 using VModel = Vzb_rop_fast;
 using VParams = Vzb_rop_fast_zb_rop;
 using VProbe = Vzb_rop_fast_probe;
+#elif defined(ZB_RTL_FCOV)
+#include "Vzb_rop_fcov.h"
+#include "Vzb_rop_fcov_probe.h"
+#include "Vzb_rop_fcov_zb_rop.h"
+using VModel = Vzb_rop_fcov;
+using VParams = Vzb_rop_fcov_zb_rop;
+using VProbe = Vzb_rop_fcov_probe;
 #elif defined(ZB_RTL_MUT)
 #include "Vzb_rop_mut.h"
 #include "Vzb_rop_mut_probe.h"

@@ -124,6 +124,8 @@ const char* RtlRop::build() {
   return "mutant netlist, no assertions";
 #elif defined(ZB_RTL_BUG)
   return "assertion build with injected defects";
+#elif defined(ZB_RTL_FCOV)
+  return "assertion build counting the coverage plan's bins";
 #else
   return "assertion build";
 #endif

@@ -254,7 +254,7 @@ def build(sim, config, a, bdir):
     params = {k: config[v] for k, v in CONFIG_PARAMS.items()}
     params.update(a.prof["params"])
     params.update(a.params)
-    sources = a.dut or a.prof["sources"]
+    sources = (a.dut or a.prof["sources"]) + a.extra_sources
     tb = [os.path.join(SV, "zb_conf_tb.sv")]
     defines = list(a.prof["defines"]) + list(a.define)
     if a.lockstep:
@@ -272,7 +272,7 @@ def build(sim, config, a, bdir):
         cmd += [os.path.join(SV, "zb_golden_pkg.vlt")] if a.lockstep else []
         cmd += [f"-G{k}={v}" for k, v in params.items()]
         cmd += [f"+define+{d}" for d in defines]
-        cmd += sources + tb + list(a.golden_libs)
+        cmd += list(a.verilator_arg) + sources + tb + list(a.golden_libs)
         if a.golden_libs:
             cmd += ["-LDFLAGS", "-lfmt -lpthread"]
         run_cmd = [os.path.join(bdir, "zb_conf_tb")]
@@ -421,6 +421,11 @@ def main():
                     help="cycles without progress before the testbench fails the test (default 10000)")
     ap.add_argument("--dut", nargs="+", default=[],
                     help="the DUT's sources and its adapter, in place of the profile's")
+    ap.add_argument("--extra-sources", nargs="+", default=[], metavar="FILE",
+                    help="sources compiled beside the DUT's (e.g. a coverage bind module; "
+                         "C++ files under Verilator)")
+    ap.add_argument("--verilator-arg", action="append", default=[], metavar="ARG",
+                    help="an argument for Verilator (repeatable), e.g. --verilator-arg=--coverage-user")
     ap.add_argument("--define", action="append", default=[],
                     help="a preprocessor define, e.g. ZB_INJECT_BLEND_BUG")
     ap.add_argument("--plusarg", action="append", default=[], help="given to every run, e.g. +zb_bug_window")
@@ -444,6 +449,8 @@ def main():
         usage_error(f"--gap {a.gap}: choose 0 to 95 (percent)")
     if a.jobs < 1:
         usage_error(f"-j {a.jobs}: at least 1")
+    if a.verilator_arg and a.sim != "verilator":
+        usage_error("--verilator-arg: only with --sim verilator")
     if a.timeout <= 0 or a.watchdog < 1:
         usage_error("--timeout and --watchdog: more than 0")
     a.params = {}
@@ -463,6 +470,10 @@ def main():
                     "\"retire_port\": false")
     if a.lockstep and not a.golden_libs:
         usage_error("--lockstep needs --golden-libs (the C API's static libraries)")
+    a.extra_sources = [os.path.abspath(f) for f in a.extra_sources]
+    for f in a.extra_sources:
+        if not os.path.isfile(f):
+            usage_error(f"--extra-sources: no file {f}")
     a.golden_libs = [os.path.abspath(f) for f in a.golden_libs]
     for f in a.golden_libs:
         if not os.path.isfile(f):

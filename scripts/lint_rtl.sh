@@ -4,6 +4,8 @@
 # Usage: lint_rtl.sh [OPTIONS...]          one parameter set, e.g. -GDEPTH_BITS=16 -GCOV_SAMPLES=4
 #        lint_rtl.sh --sim [OPTIONS...]    the same set with the simulation views (rtl/sim/) in
 #                                          place of their synthesis views, as Verilator builds it
+#        lint_rtl.sh --cov [OPTIONS...]    the same set as the coverage build reads it: the
+#                                          simulation views and the coverage plan's bind module
 #        lint_rtl.sh --icarus [OPTIONS...] the same set elaborated by iverilog -g2012, -Wall
 #        lint_rtl.sh --conformance         the conformance testbench (conformance/sv), plain and
 #                                          with its DPI-C lock-step scoreboard
@@ -25,6 +27,7 @@ done
 
 lint() { verilator --lint-only -Wall "$root/rtl/lint_waivers.vlt" "${rtl[@]}" --top-module zb_rop "$@"; }
 lint_sim() { verilator --lint-only -Wall "$root/rtl/lint_waivers.vlt" "${sim[@]}" --top-module zb_rop "$@"; }
+lint_cov() { lint_sim "$root/tb/cov/zb_rop_cov.sv" "$root/tb/cov/zb_rop_cov_bind.sv" "$@"; }
 
 # Verilator's -GNAME=V and +define+X as iverilog's -Pzb_rop.NAME=V and -DX. Icarus warns only
 # of what docs/rtl.md "Simulators" explains (constant selects in always_* processes, unique
@@ -61,14 +64,16 @@ case ${1:-} in
       read -r -a opts <<<"${BASH_REMATCH[2]}"
       lint "${opts[@]}"
       lint_sim "${opts[@]}"
+      lint_cov "${opts[@]}"
       icarus "${opts[@]}"
-      echo "lint: $name clean (Verilator -Wall, both views; Icarus elaborates)"
+      echo "lint: $name clean (Verilator -Wall, both views, the coverage bind; Icarus elaborates)"
     done <"$root/rtl/lint_sets.txt"
     conformance
     echo "lint: the conformance testbench clean"
     ;;
   --icarus) shift; icarus "$@" ;;
   --sim) shift; lint_sim "$@" ;;
+  --cov) shift; lint_cov "$@" ;;
   --conformance) conformance ;;
   *) lint "$@" ;;
 esac

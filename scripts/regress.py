@@ -19,6 +19,7 @@ import concurrent.futures
 import html
 import json
 import os
+import re
 import shlex
 import shutil
 import subprocess
@@ -38,17 +39,36 @@ def tree(test, a):
     return a.build if test["rtl"] == "default" else f"{a.build.rstrip('/')}-{test['rtl']}"
 
 
+def code_coverage_tree(build):
+    """Whether BUILD counts lines and toggles (-DZBLEND_RTL_COVERAGE=ON)."""
+    try:
+        with open(os.path.join(ROOT, build, "CMakeCache.txt")) as f:
+            return any(re.match(r"ZBLEND_RTL_COVERAGE:BOOL=(ON|TRUE|1)$", ln.strip())
+                       for ln in f)
+    except OSError:
+        return False
+
+
+def tb_program(a):
+    """The testbench program of every tree: with --coverage on a tree that does not count
+    lines and toggles, the one counting the coverage plan's bins."""
+    return "zblend_tb_fcov" if a.coverage and not code_coverage_tree(a.build) else "zblend_tb"
+
+
 def ensure_trees(tests, a):
     """Configures and builds the tree of every RTL parameter set the tests use beyond the
-    default (what each needs: zblend_tb, zblend), with the set's options."""
+    default (what each needs: the testbench, zblend), with the set's options (and line and
+    toggle coverage when BUILD counts them)."""
     need = {}
     for t in tests:
         if t["rtl"] != "default":
             need.setdefault(t["rtl"], (t["rtl_cache"], set()))[1].add(
-                "zblend" if t["tool"] == "render" else "zblend_tb")
+                "zblend" if t["tool"] == "render" else tb_program(a))
     for name, (cache, targets) in sorted(need.items()):
         d = os.path.join(ROOT, tree({"rtl": name}, a))
         opts = [f"-D{k}={v}" for k, v in sorted(cache.items())]
+        if code_coverage_tree(a.build):
+            opts.append("-DZBLEND_RTL_COVERAGE=ON")  # a coverage run measures every set
         print(f"regress: RTL parameter set {name} ({' '.join(opts)}): building {d}",
               file=sys.stderr, flush=True)
         for cmd in (["cmake", "-S", ROOT, "-B", d, "-DCMAKE_BUILD_TYPE=Release", *opts],
@@ -68,7 +88,7 @@ def command(test, a, extra=()):
     if test["tool"] == "render":
         return [os.path.join(build, "zblend"), "render", *test["args"], "-q",
                 "--out-dir", os.path.join(os.path.abspath(a.out), "render", test["name"]), *extra]
-    tb = a.tb or os.path.join(build, "zblend_tb")
+    tb = a.tb or os.path.join(build, tb_program(a))
     return [tb, *shlex.split(a.tb_args), *test["args"], *extra]
 
 
@@ -115,7 +135,7 @@ def run_one(test, a, waves=False):
     r = {"name": name, "passed": rc == 0, "exit": rc, "seconds": round(sec, 2),
          "command": shlex.join(cmd), "log": os.path.relpath(log, out),
          "report": "" if rc == 0 else (first_report_line(text) or f"exit {rc}"),
-         "host": os.uname().nodename}
+         "host": os.uname().nodename, "rtl": test["rtl"]}
     if waves:
         fst = os.path.join(out, "waves", name + ".fst")
         r["waves"] = os.path.relpath(fst, out) if os.path.exists(fst) else ""
@@ -302,8 +322,9 @@ def merge_coverage(a):
     runs = sorted(os.path.join(cov, f) for f in os.listdir(cov) if f.endswith(".dat")) \
         if os.path.isdir(cov) else []
     if not runs:
-        print("regress: --coverage: no test wrote coverage: is BUILD a coverage build "
-              "(-DZBLEND_RTL_COVERAGE=ON)?", file=sys.stderr)
+        print("regress: --coverage: no test wrote coverage: does the group run suites, and "
+              "is the testbench built (zblend_tb_fcov, or zblend_tb in a code coverage tree)?",
+              file=sys.stderr)
         return False
     merged = os.path.join(a.out, "merged.dat")
     subprocess.run(["verilator_coverage", "--write", merged, *runs], check=True)
@@ -436,8 +457,10 @@ def main():
     ap.add_argument("--waves", type=int, default=3, metavar="K",
                     help="run at most K failing tests again with waves (default 3)")
     ap.add_argument("--coverage", action="store_true",
-                    help="run: BUILD is a coverage build (-DZBLEND_RTL_COVERAGE=ON); each suite "
-                    "test writes its RTL coverage to OUT/coverage/, merged into OUT/merged.dat")
+                    help="each suite test writes its RTL coverage to OUT/coverage/ (run: merged "
+                    "into OUT/merged.dat): the coverage plan's bins through zblend_tb_fcov, or on "
+                    "a code coverage tree (-DZBLEND_RTL_COVERAGE=ON) lines, toggles and the bins "
+                    "through zblend_tb")
     ap.add_argument("--timeout", type=float, default=0, help="seconds per test (default none)")
     ap.add_argument("--sshloginfile", help="parallel: GNU parallel's list of hosts")
     ap.add_argument("--resume-failed", action="store_true",

@@ -12,6 +12,7 @@
 
 #include "rop/backend.h"
 #include "rop/rop.h"
+#include "rtl_params.h"
 #include "rtl_rop.h"
 #include "scoreboard.h"
 
@@ -43,6 +44,10 @@ class Cosim final : public Backend {
   explicit Cosim(CosimOptions options = {});
   const char* name() const override { return "both"; }
   using Backend::begin_frame;
+  // The suites' frames: at the RTL's coverage sample count (a parameter set may change it).
+  void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color) {
+    begin_frame(width, height, depth_bits, clear_color, kRtlCoverageSamples, WboitFormat{});
+  }
   void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
                    int coverage_samples, const WboitFormat& wboit) override;
   void begin_pass(const RopState& state) override;

@@ -180,10 +180,10 @@ void add_options(CLI::App& app, Config& c, Args& a) {
       ->check(CLI::Range(0, 2047))
       ->capture_default_str();
 #endif
-#if defined(VM_COVERAGE) && VM_COVERAGE  // only the coverage build (ZBLEND_RTL_COVERAGE)
+#if defined(VM_COVERAGE) && VM_COVERAGE  // zblend_tb_fcov, and the ZBLEND_RTL_COVERAGE tree's
   app.add_option("--coverage-out", a.coverage_out,
-                 "write the RTL line and toggle coverage of the run here at exit "
-                 "(verilator_coverage format, .dat)");
+                 "write the run's RTL coverage here at exit (verilator_coverage format, .dat): "
+                 "the coverage plan's bins, and lines and toggles in a code coverage build");
 #endif
 }
 

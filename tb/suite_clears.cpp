@@ -6,7 +6,8 @@
 // A word left current with an older clear value, or a plane whose clears flip the epoch back,
 // changes the probe's results. The tiles suite re-reads every store, which puts cycles between
 // a store and the next clear: this suite never does. A last iteration loads one tile's stored
-// depth and fast-clears the next, in two passes that store nothing (two_tiles).
+// depth and fast-clears the next, in two passes that store nothing, then the same with the peel
+// plane (two_tiles).
 #include <algorithm>
 
 #include "rop/fixed.h"
@@ -55,7 +56,8 @@ std::vector<Fragment> fragments(Rng& r, int w, int h, bool all, const std::vecto
 // Tile 0 holds stored depth, tile 1 only its clear; then two passes over both that read depth
 // and write nothing, so each loads tile 0 and fast-clears tile 1 with no store between. A depth
 // plane whose all-fresh flag a load leaves set keeps tile 1's epoch in the second pass and reads
-// tile 0's words there: only the pass counts show it, as nothing is written.
+// tile 0's words there: only the pass counts show it, as nothing is written. Then the peel plane
+// the same way, a copy of that depth.
 void two_tiles(Cosim& cs, Rng& r, uint32_t zmax) {
   const int w = 2 * kRtlTileW, h = kRtlTileH;
   cs.begin_frame(w, h, 24, Rgba8{5, 6, 7, 8});
@@ -67,6 +69,13 @@ void two_tiles(Cosim& cs, Rng& r, uint32_t zmax) {
   for (int k = 0; k < 2; ++k)
     draw_pass(cs, "clears-two-silent", depth_reader(r, false, false),
               fragments(r, w, h, true, values, zmax));
+  // The same for the peel plane: tile 0's a copy of stored depth, tile 1's of its clear.
+  cs.frame_op({FrameOpKind::kCopyDepthToPeel, {}, 0, false});
+  for (int k = 0; k < 2; ++k) {
+    RopState peel = depth_reader(r, false, false);
+    peel.peel_test = true;
+    draw_pass(cs, "clears-two-silent-peel", peel, fragments(r, w, h, true, values, zmax));
+  }
 }
 
 }  // namespace

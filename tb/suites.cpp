@@ -87,6 +87,10 @@ const std::vector<Suite>& suites() {
        "alpha and additive over all 2^24 (s, a, d), 2^16 (a, d) on A; coverage over all "
        "(k, s, d)",
        suite_blend},
+      {"states",
+       "every pass state: depth test off or each function x depth write x blend x colour mask "
+       "x peel test, a short pass each",
+       suite_states},
   };
   return kSuites;
 }

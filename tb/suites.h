@@ -74,6 +74,7 @@ Tally suite_tiles(const Config& c);   // fast-clear bookkeeping across passes an
 Tally suite_clears(const Config& c);  // a store's write-back meeting the next clear
 Tally suite_accum(const Config& c);   // accumulate mode at same-pixel distances 4..7
 Tally suite_blend(const Config& c);   // the blend unit, exhaustively, through the pipeline
+Tally suite_states(const Config& c);  // every pass state of the coverage plan's cross
 
 struct Suite {
   const char* name;
