@@ -3,8 +3,10 @@
 # out for Debian's yosys 0.23, yosys-smtbmc and z3. Per job:
 #   1. yosys: read_verilog -formal -sv -DSYNTHESIS -Iformal rtl/zb_pkg.sv rtl/*.sv formal/<harness>.sv
 #      (the RTL's concurrent SVA is beyond yosys 0.23's reader: the harnesses restate it); chparam;
-#      hierarchy; flatten; the harness's taps (`// formal-tap: <wire> <path>` lines become
-#      `connect -nounset -set`, so a harness reads DUT internals after flattening) and, for a defect run,
+#      hierarchy; flatten; the harness's taps (`// formal-tap: <wire> <path>` lines, in the harness
+#      or a formal/ header it includes, become `connect -nounset -set`, so a harness reads DUT
+#      internals after flattening; a path ending in [*] is a memory's words, connected after
+#      memory_map, sat only) and, for a defect run,
 #      a forced signal; proc; prep; memory_nordff; async2sync; chformal -assume -early; opt -full
 #      (z3 4.8.12 spends minutes on some models' transition function without it); setundef
 #      -anyseq; dffunmap; write_smt2 -wires.
@@ -75,17 +77,18 @@ jobs=(
   "blend_c3|induction|4|4|no|zb_blend_check|CHAN=3|smtbmc"
   "blend_acc|induction|4|4|yes|zb_blend_check|ACC=1 CHAN=0|smtbmc"
   "skid|induction|2|2|yes|zb_skid_check||sat"
-  "stream|bmc|16|20|yes|zb_stream_check|$RopSmall WINDOW=2|sat"
-  "raw|bmc|22|26|yes|zb_raw_check|$RopSmall WINDOW=2|sat"
+  "stream|induction|4|4|yes|zb_stream_check|$RopSmall WINDOW=2|sat"
+  "raw|induction|4|4|yes|zb_raw_check|$RopSmall WINDOW=2|sat"
   "window|induction|4|4|yes|zb_window_check|WINDOW=2|sat"
   "covers|cover|20|20|yes|zb_paths_cover|$RopSmall WINDOW=2|sat"
   "window_w4|induction|4|4|no|zb_window_check|WINDOW=4|sat"
-  "stream_w4|bmc|16|16|no|zb_stream_check|$RopSmall WINDOW=4|sat"
-  "raw_w4|bmc|18|18|no|zb_raw_check|$RopSmall WINDOW=4|sat"
+  "stream_w4|induction|4|4|no|zb_stream_check|$RopSmall WINDOW=4|sat"
+  "raw_w4|induction|4|4|no|zb_raw_check|$RopSmall WINDOW=4|sat"
 )
 
 # The defects: name | job it must fail | how (define NAME: a harness define; force PATH=VALUE:
-# a DUT signal tied after flattening, its drivers cut) | the assertion expected to fail.
+# a DUT signal tied after flattening, its drivers cut) | the assertion expected to fail |
+# for a sat induction job, the depth of the BMC from reset (default: its depth + 4).
 defects=(
   "mul8_contract|mul8|define ZB_FORMAL_DEFECT_MUL8|ProductIsKTimesV"
   "premul_rounding|premul_c0|define ZB_FORMAL_DEFECT_PREMUL|PremulIsM"
@@ -94,10 +97,10 @@ defects=(
   "skid_drops|skid|force dut.s_valid_d=1'b0|"
   "stream_skid_drops|stream|force dut.u_input.s_valid_d=1'b0|"
   "window_hits_lost|window|force dut.hit_q=6'b0|"
-  "raw_depth_forward_off|raw|force dut.u_depth.dfwd_hit_q=1'b0|"
-  "raw_color_bypass_off|raw|force dut.u_color.u_forward.byp_hit_q=1'b0|"
-  "raw_accum_bypass_off|raw|force dut.u_accum.u_forward.byp_hit_q=1'b0|"
-  "raw_interlock_off|raw|force dut.u_window.hit_q=6'b0|"
+  "raw_depth_forward_off|raw|force dut.u_depth.dfwd_hit_q=1'b0||18"
+  "raw_color_bypass_off|raw|force dut.u_color.u_forward.byp_hit_q=1'b0||18"
+  "raw_accum_bypass_off|raw|force dut.u_accum.u_forward.byp_hit_q=1'b0||18"
+  "raw_interlock_off|raw|force dut.u_window.hit_q=6'b0||18"
 )
 
 field() { cut -d'|' -f$(( $2 + 1 )) <<<"$1"; }
@@ -119,7 +122,7 @@ if (( defect )); then
     dname=$(field "$d" 0)
     selected "$dname" || continue
     j=$(find_job "$(field "$d" 1)") || { echo "formal.sh: defect $dname names no job" >&2; exit 2; }
-    runs+=("$j|$dname|$(field "$d" 2)|$(field "$d" 3)")
+    runs+=("$j|$dname|$(field "$d" 2)|$(field "$d" 3)|$(field "$d" 4)")
   done
 else
   for j in "${jobs[@]}"; do
@@ -136,7 +139,8 @@ if (( list )); then
   for r in "${runs[@]}"; do
     printf '%-16s %-10s depth %-3s %-16s %-22s %s\n' "$(field "$r" 0)" "$(field "$r" 1)" \
       "$(field "$r" $(( ci ? 2 : 3 )))" "$(field "$r" 5)" "$(field "$r" 6)" \
-      "$(field "$r" 7) $(field "$r" 8)$( [[ -n $(field "$r" 8) ]] && echo ": $(field "$r" 9)")"
+      "$(field "$r" 7) $(field "$r" 8)$( [[ -n $(field "$r" 8) ]] && echo ": $(field "$r" 9)")$(
+        [[ -n $(field "$r" 11) ]] && echo " (bmc $(field "$r" 11))")"
   done
   exit 0
 fi
@@ -199,11 +203,31 @@ sat_run() {
   fi
 }
 
+# The second yosys pass of a job with memory taps: each tap wire takes the memory's words
+# (as many as mapped.il holds, word 0 at the low end), then the sat backend's remaining steps.
+memtap_pass() {
+  [[ -n $memtaps ]] || return 0
+  local wire path words w i conn=""
+  while read -r wire path; do
+    # The words' widths, in word order: lines `wire width W \<path>[i]`.
+    words=$(P="\\$path[" awk '$1 == "wire" && $2 == "width" && index($4, ENVIRON["P"]) == 1 &&
+        substr($4, length(ENVIRON["P"]) + 1) ~ /^[0-9]+\]$/ { n++ } END { print n + 0 }' "$dir/mapped.il")
+    w=$(P="\\$path[0]" awk '$1 == "wire" && $2 == "width" && $4 == ENVIRON["P"] { print $3; exit }' "$dir/mapped.il")
+    (( words > 0 )) || { echo "formal: $job: no memory $path in the model" >&2; return 1; }
+    for (( i = 0; i < words; i++ )); do
+      conn+="connect -nounset -set $wire[$(( (i + 1) * w - 1 )):$(( i * w ))] $path[$i]; "
+    done
+  done <<<"$memtaps"
+  yosys -q -l "$dir/yosys_memtaps.log" -p "read_rtlil $dir/mapped.il; $conn
+      opt -keepdc -fast; async2sync; chformal -cover -remove; chformal -assume -early;
+      opt_clean; setundef -anyseq; opt -keepdc -fast; check; write_rtlil $model" >/dev/null 2>&1
+}
+
 for r in "${runs[@]}"; do
   name=$(field "$r" 0); method=$(field "$r" 1); top=$(field "$r" 5); params=$(field "$r" 6)
   engine=$(field "$r" 7)
   depth=$(field "$r" $(( ci ? 2 : 3 )))
-  dname=$(field "$r" 8); dhow=$(field "$r" 9); dexpect=$(field "$r" 10)
+  dname=$(field "$r" 8); dhow=$(field "$r" 9); dexpect=$(field "$r" 10); ddepth=$(field "$r" 11)
   job=$name; [[ -n $dname ]] && job="defect_$dname"
   dir="$out/$job"
   rm -rf "$dir"; mkdir -p "$dir"
@@ -215,7 +239,15 @@ for r in "${runs[@]}"; do
     define\ *) defines="-D${dhow#define }" ;;
     force\ *) lhs=${dhow#force }; force="connect -set ${lhs%%=*} ${lhs#*=};" ;;
   esac
-  taps=$(sed -n 's|^ *// formal-tap: *\([A-Za-z0-9_]*\) *\([A-Za-z0-9_.]*\) *$|connect -nounset -set \1 \2;|p' "$harness")
+  # Taps sit in the harness or in the formal/ headers it includes. A path ending in [*] is a
+  # memory: its words, word 0 lowest, taken after memory_map (sat only).
+  srcs="$harness"
+  for f in $(sed -n 's|^ *`include "\([A-Za-z0-9_.]*\)".*|formal/\1|p' "$harness"); do
+    [[ -f $f ]] && srcs+=" $f"
+  done
+  taps=$(sed -n 's|^ *// formal-tap: *\([A-Za-z0-9_]*\) *\([][A-Za-z0-9_.]*\) *$|connect -nounset -set \1 \2;|p' $srcs)
+  memtaps=$(sed -n 's|^ *// formal-tap: *\([A-Za-z0-9_]*\) *\([][A-Za-z0-9_.]*\)\[\*\] *$|\1 \2|p' $srcs)
+  [[ -z $memtaps || $engine == sat ]] || { echo "formal.sh: $job: memory taps need the sat engine" >&2; exit 1; }
   # `// formal-cover: <wire> [length]` lines: the wires a cover job must reach (each within
   # its own length, at most the job's depth).
   covers=$(sed -n 's|^ *// formal-cover: *\([A-Za-z0-9_]*\) *\([0-9]*\) *$|\1:\2|p' "$harness")
@@ -223,6 +255,8 @@ for r in "${runs[@]}"; do
     model="$dir/model.il"
     backend="memory_map; opt -keepdc -fast; async2sync; chformal -cover -remove; chformal -assume -early;
       opt_clean; setundef -anyseq; opt -keepdc -fast; check; write_rtlil $model"
+    # With memory taps: stop after memory_map (mapped.il), connect the words, then the rest.
+    [[ -n $memtaps ]] && backend="memory_map; write_rtlil $dir/mapped.il"
   else
     model="$dir/model.smt2"
     backend="memory_nordff; async2sync; chformal -assume -early; opt_clean;
@@ -230,7 +264,7 @@ for r in "${runs[@]}"; do
       dffunmap; write_smt2 -wires $model"
   fi
 
-  step "$job: $method ($engine), depth $depth${params:+, $params}${dname:+, defect: $dhow}"
+  step "$job: $method ($engine), depth $depth${params:+, $params}${dname:+, defect: $dhow}${ddepth:+ (bmc $ddepth)}"
   start=$SECONDS
   note=""
   if ! yosys -q -l "$dir/yosys.log" -p "
@@ -238,14 +272,15 @@ for r in "${runs[@]}"; do
       chparam $(chparams "$params") $top;
       hierarchy -check -top $top; proc; flatten; rename -top $top;
       $force $taps
-      prep -top $top; $backend" >/dev/null 2>&1; then
+      prep -top $top; $backend" >/dev/null 2>&1 || ! memtap_pass; then
     status=FAILED
-    note="yosys failed: $dir/yosys.log"
+    note="yosys failed: $dir/yosys*.log"
     echo "formal: $job: $note" >&2
-  elif grep -q 'is used but has no driver' "$dir/yosys.log"; then
+  elif ylog="$dir/$( [[ -n $memtaps ]] && echo yosys_memtaps || echo yosys).log" &&
+       grep -q 'is used but has no driver' "$ylog"; then
     # setundef -anyseq would make such a wire a free input: the model is not the design.
     status=FAILED
-    note="undriven wires in the model: $dir/yosys.log"
+    note="undriven wires in the model: $ylog"
     echo "formal: $job: $note" >&2
   elif dead=$(awk '/cell \$assert /{a=$3} /connect \EN 1.0/{if (a) print a} /end/{a=""}' "$dir/model.il") &&
        [[ -n $dead ]]; then
@@ -256,8 +291,9 @@ for r in "${runs[@]}"; do
     case $method in
       induction)
         if (( defect )); then
-          # A counterexample from reset: BMC past the induction depth (a few fragments deep).
-          depth=$((depth + 4))
+          # A counterexample from reset: BMC past the induction depth (a few fragments deep),
+          # or as deep as the defect needs (two fragments to a pixel, the second at its check).
+          depth=${ddepth:-$((depth + 4))}
           s=$(sat_run "$dir/bmc.log" "$dir/bmc.vcd" -seq "$depth" -prove-asserts -set-assumes)
           [[ $s == PASSED ]] && status=bounded || { status=FAILED; note="$s: $dir/bmc.vcd"; }
         else
