@@ -92,8 +92,8 @@ endif()
 # plusarg (+zb_bug_window, +zb_bug_accum; the blend's without either); SYSTEMC builds it with --sc. MUTANTS builds Yosys's
 # netlist of zb_rop's mutants (mutation/CMakeLists.txt) in its wrapper instead of rtl/: a
 # generated netlist, so no -Wall, and no assertions (Yosys drops them). TRACE adds FST tracing
-# and the waveform probe, model PREFIX_probe. COVERAGE counts lines, toggles and covers,
-# FUNCTIONAL_COVERAGE the covers only; both bind the coverage plan's module (tb/cov/).
+# and the waveform probe, model PREFIX_probe. COVERAGE counts lines, toggles and the RTL's
+# covers; FUNCTIONAL_COVERAGE the covers only, with the coverage plan's module bound in.
 function(zblend_verilate target)
   cmake_parse_arguments(V "SYSTEMC;BUG;FAST;COVERAGE;FUNCTIONAL_COVERAGE;TRACE" "PREFIX;DIRECTORY;MUTANTS" "" ${ARGN})
   set(args --assert ${ZBLEND_VERILATOR_OPT} -Wall ${ZBLEND_RTL_PARAMS})
@@ -125,10 +125,9 @@ function(zblend_verilate target)
   if(V_COVERAGE)
     list(APPEND extra COVERAGE)
   elseif(V_FUNCTIONAL_COVERAGE)
+    # The functional coverage plan's bins, bound to zb_rop (tb/cov/, docs/coverage.md); not in
+    # the code coverage build, whose lines and toggles are zb_rop's alone.
     list(APPEND args --coverage-user)
-  endif()
-  if(V_COVERAGE OR V_FUNCTIONAL_COVERAGE)
-    # The functional coverage plan's bins, bound to zb_rop (tb/cov/, docs/coverage.md).
     list(APPEND sources ${PROJECT_SOURCE_DIR}/tb/cov/zb_rop_cov.sv
          ${PROJECT_SOURCE_DIR}/tb/cov/zb_rop_cov_bind.sv)
   endif()

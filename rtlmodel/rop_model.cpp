@@ -120,9 +120,11 @@ void Sim::add_coverage() noexcept {
 #if defined(VM_COVERAGE) && VM_COVERAGE
   if (!coverage) return;
   try {
+#ifdef ZB_RTL_FCOV
     // Per instance: Verilator otherwise sums a generate loop's covers (the coverage plan's
-    // crosses, tb/cov/) into one point; line and toggle points are kept per instance too.
+    // crosses, tb/cov/) into one point.
     ctx->coveragep()->forcePerInstance(true);
+#endif
     ctx->coveragep()->write(coverage->scratch_path().c_str());
     coverage->add_file(coverage->scratch_path());
   } catch (const std::exception& e) {

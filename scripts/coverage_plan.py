@@ -1,10 +1,9 @@
 """The functional coverage plan (tb/cov/coverage_plan.json, docs/coverage.md) and Verilator's
 coverage files: the plan's bins, and which of them a .dat file's cover points hit."""
-import json
 import os
 import re
 
-from zbscript import ROOT
+from zbscript import ROOT, load_json
 
 DEFAULT = os.path.join(ROOT, "tb", "cov", "coverage_plan.json")
 ENTRY_KEYS = {"id", "about", "cover", "dims", "bins", "sets", "tests", "unreachable"}
@@ -28,13 +27,7 @@ def _pattern(glob):
 
 
 def load(path=DEFAULT):
-    try:
-        with open(path) as f:
-            doc = json.load(f)
-    except OSError as e:
-        raise PlanError(f"{path}: {e.strerror}")
-    except json.JSONDecodeError as e:
-        raise PlanError(f"{path}:{e.lineno}:{e.colno}: not JSON: {e.msg}")
+    doc = load_json(path, PlanError)
     entries = doc.get("entries") if isinstance(doc, dict) else None
     if not isinstance(entries, list) or not entries:
         raise PlanError(f"{path}: no \"entries\" list")

@@ -42,20 +42,31 @@ grep -oE '^ *wire .*output [0-9]+ \\\S+' "$design" | awk '{print $NF}' | sort -u
 # see (a bit nothing reads, say) is then "not proven"; the next round leaves those signals
 # unpaired, so the gate keeps its own values there and only the rest must be equal. Sound: a
 # proof still covers every output and every paired signal in every cycle.
-rounds=5
+# A pair left unproven only where zb_rop's value is x (a don't-care the RTL wrote, such as a
+# write address in cycles that write nothing) is proven again with x modelled (-undef): the
+# mutant then only picks a value for the don't-care.
+# Last, when leaving signals unpaired changes nothing and a pair equiv_struct made is left:
+# without equiv_struct, whose merging of alike cells can pair their inputs where only the
+# outputs agree (a mux whose select the mutant ties, on an x arm), and with x modelled. Slower
+# (minutes), so only then.
+rounds=6
+undef=""
+struct="equiv_struct -icells;"
 for round in $(seq $rounds); do
   left=$((limit - SECONDS))
   [[ $left -gt 0 ]] || { echo "mutant_equiv.sh: time limit ($limit s) before round $round"; exit 3; }
   timeout "$left" yosys -q -l "$work/log" -p "read_rtlil $design; rename zb_rop gold;
     copy gold gate; $mutation; async2sync; equiv_make -blacklist $work/blacklist gold gate equiv;
-    hierarchy -top equiv; equiv_struct -icells; equiv_simple -seq 4; equiv_induct -seq 4;
+    hierarchy -top equiv; $struct equiv_simple $undef -seq 4; equiv_induct $undef -seq 4;
     equiv_status" >/dev/null 2>&1
   rc=$?
   if [[ $rc -eq 124 ]]; then echo "mutant_equiv.sh: time limit ($limit s) in round $round"; exit 3; fi
   if grep -q "Equivalence successfully proven" "$work/log"; then
     n=$(wc -l < "$work/blacklist")
-    if [[ $n -gt 0 ]]; then echo "proven equivalent ($n internal signals unpaired)"
-    else echo "proven equivalent"; fi
+    how=${undef:+, x modelled}
+    [[ -n $struct ]] || how+=", cells unmerged"
+    if [[ $n -gt 0 ]]; then echo "proven equivalent ($n internal signals unpaired$how)"
+    else echo "proven equivalent${how:+ (${how#, })}"; fi
     exit 0
   fi
   grep -qE "Found a total of [0-9]+ unproven" "$work/log" ||
@@ -65,9 +76,19 @@ for round in $(seq $rounds); do
     sed 's/_gold$//' | sort -u > "$work/unproven"
   at_port=$(comm -12 "$work/unproven" "$work/ports" | head -3 | tr '\n' ' ')
   if [[ -n $at_port ]]; then echo "not proven: differs at output ${at_port% }"; exit 1; fi
-  [[ -s $work/unproven ]] || { echo "not proven: only constants left unproven"; exit 1; }
+  if [[ ! -s $work/unproven ]]; then
+    if [[ -z $undef ]] && grep -qE 'Unproven \$equiv \S+ [0-9]+.x+ ' "$work/log"; then
+      undef=-undef
+      continue
+    fi
+    echo "not proven: only constants left unproven"; exit 1
+  fi
   # Leaving them unpaired changed nothing (equiv_struct pairs alike cells' outputs again).
-  if [[ -f $work/unproven.last ]] && cmp -s "$work/unproven" "$work/unproven.last"; then break; fi
+  if [[ -f $work/unproven.last ]] && cmp -s "$work/unproven" "$work/unproven.last"; then
+    [[ -n $struct ]] && grep -q 'Unproven \$equiv \$auto\$equiv_struct' "$work/log" || break
+    struct="" undef=-undef
+    continue
+  fi
   cp "$work/unproven" "$work/unproven.last"
   cat "$work/unproven" >> "$work/blacklist"
 done

@@ -150,6 +150,9 @@ def run_one(test, a, waves=False):
 def gather(group, tests, a, started=None, why=None):
     """Reads OUT/results; writes junit.xml, summary.json, summary.html. Returns the exit code.
     why: what is known of a test that left no result, by name (parallel: its joblog line)."""
+    # Every way of running ends here: the coverage of each job merged (run, parallel, Slurm).
+    if a.coverage and not merge_coverage(a):
+        return 1
     out = a.out
     results = []
     for t in tests:
@@ -310,8 +313,6 @@ def cmd_run(group, tests, a):
     failed = [r for r in results if not r["passed"]]
     if failed and a.waves:
         rerun_with_waves(failed, tests, a)
-    if a.coverage and not merge_coverage(a):
-        return 1
     return gather(group, tests, a, started)
 
 
@@ -347,6 +348,8 @@ def one_command(group, a, index):
         cmd += ["--tb-args", a.tb_args]
     if a.timeout:
         cmd += ["--timeout", str(a.timeout)]
+    if a.coverage:
+        cmd.append("--coverage")
     return cmd
 
 
@@ -360,6 +363,7 @@ def cmd_parallel(group, tests, a):
     started = time.monotonic()
     if not a.resume_failed:  # else a job that dies (a host down) would show an earlier result
         shutil.rmtree(os.path.join(a.out, "results"), ignore_errors=True)
+        shutil.rmtree(os.path.join(a.out, "coverage"), ignore_errors=True)
     os.makedirs(a.out, exist_ok=True)
     joblog = os.path.join(a.out, "joblog")
     cmd = ["parallel", "--will-cite", "--joblog", joblog, "--halt", "never", "--line-buffer", "-j",
@@ -431,6 +435,7 @@ def cmd_slurm(group, tests, a):
         usage_error("sbatch is missing: install Slurm's client (Debian: slurm-client) or drop --submit")
     started = time.monotonic()
     shutil.rmtree(os.path.join(out, "results"), ignore_errors=True)
+    shutil.rmtree(os.path.join(out, "coverage"), ignore_errors=True)
     p = subprocess.run(["sbatch", "--wait", "--parsable", script], cwd=ROOT,
                        stdout=subprocess.PIPE, text=True)
     print(f"regress: sbatch job {p.stdout.strip()} ended (exit {p.returncode})", file=sys.stderr)

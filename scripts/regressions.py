@@ -14,11 +14,10 @@ entry's "rtl": [..] runs it on each named RTL parameter set of the file's "rtl_p
 being the build given; the name grows -SET. A group may also list {"group": G}: G's tests, in
 order.
 """
-import json
 import os
 import re
 
-from zbscript import ROOT
+from zbscript import ROOT, load_json
 
 DEFAULT = os.path.join(ROOT, "tb", "regressions.json")
 NAME = re.compile(r"[A-Za-z0-9_.+-]+")
@@ -93,13 +92,7 @@ def _expand(entry, where, rtl_params):
 
 def load(path=DEFAULT):
     """{group: [test]} with every entry expanded; each test {name, tool, args}."""
-    try:
-        with open(path) as f:
-            doc = json.load(f)
-    except OSError as e:
-        raise RegressionError(f"{path}: {e.strerror}")
-    except json.JSONDecodeError as e:
-        raise RegressionError(f"{path}:{e.lineno}:{e.colno}: not JSON: {e.msg}")
+    doc = load_json(path, RegressionError)
     groups = doc.get("groups") if isinstance(doc, dict) else None
     if not isinstance(groups, dict) or not groups:
         raise RegressionError(f"{path}: no \"groups\" object")

@@ -7,16 +7,30 @@ module beside it (Python puts the script's folder first on sys.path).
   usage_error(what)  bad usage: `<script>: error: <what>` on stderr, exit 2 (argparse's format
                      for its own errors, and the zblend programs')
   Progress           a progress line on stderr per finished item, with the time left
+  load_json(path, error)  a JSON file, or error(what, where) raised: unreadable, not JSON
 
 scripts/conformance.py keeps its own ROOT, usage_error and progress line: it ships alone in
 the conformance kit's archive (make kit, scripts/kit.sh), without this module, and stays one
 self-contained file.
 """
+import json
 import os
 import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def load_json(path, error):
+    """The JSON document in `path`; raises error (an exception class) with "path: why" or
+    "path:line:column: not JSON: why"."""
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except OSError as e:
+        raise error(f"{path}: {e.strerror}")
+    except json.JSONDecodeError as e:
+        raise error(f"{path}:{e.lineno}:{e.colno}: not JSON: {e.msg}")
 
 
 def usage_error(what):
