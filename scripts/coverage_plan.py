@@ -122,7 +122,7 @@ def bins(entry, paths):
     out = []
     for glob in covers:
         pat = _pattern(glob)
-        hits = sorted((p for p in paths if pat.match(p)), key=_natural)
+        hits = sorted((p for p in paths if pat.match(p)), key=natural_key)
         if not hits:
             raise PlanError(f"plan entry {eid}: no cover matches {glob} in the model")
         if len(covers) > 1:
@@ -154,5 +154,6 @@ def bins(entry, paths):
     return out
 
 
-def _natural(s):
+def natural_key(s):
+    """A sort key that orders the numbers in a name by value (slot[10] after slot[9])."""
     return [int(t) if t.isdigit() else t for t in re.split(r"(\d+)", s)]

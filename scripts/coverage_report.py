@@ -285,7 +285,7 @@ def main():
     except (OSError, ValueError, KeyError) as e:
         usage_error(f"{a.run}: unreadable run: {e}")
     rows = sorted(table.values(), key=lambda r: (bool(r["hits"] or r["why"]), r["set"],
-                                                 coverage_plan._natural(r["bin"])))
+                                                 coverage_plan.natural_key(r["bin"])))
     seconds = {n: s for n, _, s, _ in runs}
     hits = test_bins(table, runs)
     ranking = rank(hits, seconds)
