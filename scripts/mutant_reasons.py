@@ -10,8 +10,8 @@ import json
 import re
 
 KINDS = {
-    "equivalent": "equivalent to zb_rop on every reachable state (the prover's induction does "
-                  "not close)",
+    "equivalent": "equivalent to zb_rop on every reachable state, argued in writing (the prover "
+                  "did not close it)",
     "contract": "differs only for inputs the port contract rules out (docs/rtl.md)",
     "unobservable": "differs only after more events than a run has, or in a count no driver reads",
     "unchecked": "differs only in a behaviour the checker does not check (the reason says which): a "
