@@ -27,6 +27,7 @@ struct ExportOptions {
   std::string dir;
   bool quick = false;
   bool list = false;
+  uint64_t seed = 0;
 };
 
 struct CheckOptions {
@@ -39,13 +40,15 @@ void print_list(const std::vector<cf::TestSpec>& tests) {
   for (const cf::TestSpec& t : tests)
     fmt::print("{:<30} {:<8} {:<7} {:>6}  {}\n", t.name, t.config.name, cf::to_string(t.kind),
                fmt::format("{}x{}", t.width, t.height),
-               t.kind == cf::TestKind::kScene ? fmt::format("scene {}, method {}", t.scene, t.method)
-                                              : fmt::format("seed {}", t.seed));
+               t.kind == cf::TestKind::kScene       ? fmt::format("scene {}, method {}", t.scene, t.method)
+               : t.kind == cf::TestKind::kGenerated ? fmt::format("generated: {}", cf::to_string(t.family))
+                                                    : fmt::format("seed {}", t.seed));
   fmt::print("{} tests\n", tests.size());
 }
 
 void run_export(const ExportOptions& o) {
-  const std::vector<cf::TestSpec> tests = cf::suite_tests(o.quick);
+  if (o.seed && o.quick) throw UsageError("--seed and --quick: choose one tier");
+  const std::vector<cf::TestSpec> tests = o.seed ? cf::seeded_tests(o.seed) : cf::suite_tests(o.quick);
   if (o.list) {
     if (!o.dir.empty())
       throw UsageError(fmt::format("DIR: --list writes nothing; leave out '{}'", o.dir));
@@ -132,6 +135,10 @@ void add_conformance_commands(CLI::App& parent) {
   exp->add_option("DIR", e->dir, "Directory to write (new, empty, or an earlier suite)");
   exp->add_flag("--quick", e->quick, "Only the CI-sized subset (the same tests, names and files)");
   exp->add_flag("--list", e->list, "List the tests instead of writing them");
+  exp->add_option("--seed", e->seed,
+                  "The seeded random tier instead: new random streams for every seed N >= 1, "
+                  "each reproducible from it (for overnight runs)")
+      ->check(CLI::Range(uint64_t{1}, uint64_t{1} << 62));
   exp->callback([e] { run_export(*e); });
 
   auto c = std::make_shared<CheckOptions>();
@@ -145,6 +152,7 @@ void add_conformance_commands(CLI::App& parent) {
                 "The DUT has no accumulation plane: skip the tests that need it (reported as "
                 "skip, not pass) and read no got.accum.hex");
   chk->callback([chk, c] { run_check(*chk, *c); });
+  add_reach_command(*cmd);
 }
 
 }  // namespace zb::app

@@ -14,5 +14,6 @@ void add_sweep_command(CLI::App& app);
 void add_conformance_command(CLI::App& app);  // conformance export, conformance check
 // `export` and `check` themselves, on `parent`: zblend's conformance, or zblend-conformance.
 void add_conformance_commands(CLI::App& parent);
+void add_reach_command(CLI::App& parent);  // conformance reach
 
 }  // namespace zb::app

@@ -117,9 +117,12 @@ nlohmann::json manifest_entry(const TestSpec& t, const TestVectors& v) {
   nlohmann::json& files = e["files"] = {{"stream.hex", v.stream_sha256}};
   for (size_t p = 0; p < std::size(kPlanes); ++p)
     files[fmt::format("expect.{}.hex", to_string(kPlanes[p]))] = v.expect_sha256[p];
+  e["tier"] = t.seeded ? "random" : t.quick ? "quick" : "full";
   if (t.kind == TestKind::kScene) {
     e["scene"] = t.scene;
     e["method"] = t.method;
+  } else if (t.kind == TestKind::kGenerated) {
+    e["family"] = to_string(t.family);
   } else {
     e["seed"] = t.seed;
   }

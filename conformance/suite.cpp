@@ -6,6 +6,7 @@
 #include "pipeline/render.h"
 #include "rtl_params.h"
 #include "scene/builtin_scenes.h"
+#include "generate.h"
 #include "streams.h"
 
 namespace zb::conformance {
@@ -33,12 +34,16 @@ constexpr int kRandomWidth = 48, kRandomHeight = 40;
 constexpr int kRandomPasses = 24;
 constexpr size_t kRandomFragments = 150;  // per pass: many passes, many states
 
-// The CI-sized subset: one scene with four methods (a depth peel and coverage-aa among them),
-// one hazard, one random, one other depth width, one wboit scene and the random stream with
-// resolves (accumulation and resolve).
-const char* const kQuick[] = {"cad-three-pass", "cad-coverage-aa", "cad-depth-peel-2",
-                              "cad-hidden-line", "hazard", "random", "cad-three-pass-d16",
-                              "glass-torus-wboit", "random-wboit"};
+// The quick tier: the greedy ranking of the reach (`zblend conformance reach --rank`, at zb_rop's
+// 64 x 64 tile): the fewest tests that keep every bin the whole suite reaches. CTest
+// conformance_quick_tier holds this list to the ranking.
+const char* const kQuick[] = {
+    "states-alpha", "states-replace", "states-additive", "states-alpha-peel",
+    "states-replace-peel", "states-additive-peel", "states-under", "states-coverage-peel",
+    "states-under-peel", "states-accumulate-peel", "states-coverage", "states-accumulate",
+    "values-replace", "random-c4", "depth-bits-d32", "depth-bits", "depth-bits-d16", "tiles",
+    "cad-coverage-aa", "cad-depth-peel-2", "particles-facing-additive", "random", "hazard",
+    "values-accumulate", "sphere-torus-wboit", "values-additive"};
 
 // A plan that came with suite version 3 (its accumulate passes and resolve read and write the
 // accumulation plane): its tests follow the base config's earlier ones, so no name moves.
@@ -92,6 +97,47 @@ TestSpec random_test(const Config& c, RandomMix mix = RandomMix::kAll) {
   return t;
 }
 
+TestSpec generated_test(const Config& c, Family family, BlendMode blend = BlendMode::kReplace,
+                        bool peel = false) {
+  TestSpec t;
+  t.config = c;
+  t.kind = TestKind::kGenerated;
+  t.family = family;
+  t.blend = blend;
+  t.peel = peel;
+  std::string what = to_string(family);
+  if (family == Family::kStates || family == Family::kValues || family == Family::kSamePixel)
+    what += std::string("-") + to_string(blend);
+  if (peel) what += "-peel";
+  t.name = named(what, c);
+  const Trace tr = test_trace(t);  // the frame is the family's
+  t.width = tr.width;
+  t.height = tr.height;
+  return t;
+}
+
+// Version 6's generated tests of a config, at the end of its group.
+void add_generated(std::vector<TestSpec>& all, const Config& c) {
+  if (&c == &kBase) {
+    for (unsigned b = 0; b < kBlendModes; ++b)
+      for (bool peel : {false, true})
+        all.push_back(generated_test(c, Family::kStates, BlendMode(b), peel));
+    all.push_back(generated_test(c, Family::kDepthBits));
+    for (BlendMode b : {BlendMode::kReplace, BlendMode::kAlpha, BlendMode::kAdditive, BlendMode::kUnder})
+      all.push_back(generated_test(c, Family::kValues, b));
+    all.push_back(generated_test(c, Family::kCoverageValues));
+    all.push_back(generated_test(c, Family::kAccumValues));
+    all.push_back(generated_test(c, Family::kTiles));
+    for (BlendMode b : {BlendMode::kAlpha, BlendMode::kAdditive, BlendMode::kCoverage,
+                        BlendMode::kUnder, BlendMode::kAccumulate})
+      all.push_back(generated_test(c, Family::kSamePixel, b));
+  } else if (&c == &kCoverage4) {
+    all.push_back(generated_test(c, Family::kCoverageValues));
+  } else {
+    all.push_back(generated_test(c, Family::kDepthBits));
+  }
+}
+
 }  // namespace
 
 const char* to_string(TestKind k) {
@@ -99,6 +145,20 @@ const char* to_string(TestKind k) {
     case TestKind::kScene: return "scene";
     case TestKind::kHazard: return "hazard";
     case TestKind::kRandom: return "random";
+    case TestKind::kGenerated: return "generated";
+  }
+  return "?";
+}
+
+const char* to_string(Family f) {
+  switch (f) {
+    case Family::kStates: return "states";
+    case Family::kDepthBits: return "depth-bits";
+    case Family::kValues: return "values";
+    case Family::kCoverageValues: return "values-coverage";
+    case Family::kAccumValues: return "values-accumulate";
+    case Family::kTiles: return "tiles";
+    case Family::kSamePixel: return "same-pixel";
   }
   return "?";
 }
@@ -115,18 +175,39 @@ std::vector<TestSpec> suite_tests(bool quick) {
       if (uses_accumulation(p)) all.push_back(scene_test(kBase, s.name, p.name));
   all.push_back(random_test(kBase, RandomMix::kWboit));  // version 4
   all.push_back(random_test(kBase, RandomMix::kCore));   // version 5
+  add_generated(all, kBase);                             // version 6
   all.push_back(hazard_test(kCoverage4));
   all.push_back(random_test(kCoverage4));
+  add_generated(all, kCoverage4);
   for (const Config* c : {&kDepth16, &kDepth32}) {
     for (const char* scene : kWidthScenes)
       for (const char* method : kWidthMethods) all.push_back(scene_test(*c, scene, method));
     all.push_back(random_test(*c, RandomMix::kCore));  // version 5
+    add_generated(all, *c);
   }
   for (TestSpec& t : all)
     t.quick = std::find(std::begin(kQuick), std::end(kQuick), t.name) != std::end(kQuick);
   if (quick)
     all.erase(std::remove_if(all.begin(), all.end(), [](const TestSpec& t) { return !t.quick; }),
               all.end());
+  return all;
+}
+
+std::vector<TestSpec> seeded_tests(uint64_t seed) {
+  std::vector<TestSpec> all;
+  auto add = [&](const Config& c, RandomMix mix) {
+    TestSpec t = random_test(c, mix);
+    t.seed = seed;
+    t.seeded = true;
+    t.name += "-s" + std::to_string(seed);
+    all.push_back(t);
+  };
+  add(kBase, RandomMix::kAll);
+  add(kBase, RandomMix::kWboit);
+  add(kBase, RandomMix::kCore);
+  add(kCoverage4, RandomMix::kAll);
+  add(kDepth16, RandomMix::kCore);
+  add(kDepth32, RandomMix::kCore);
   return all;
 }
 
@@ -160,6 +241,19 @@ Trace test_trace(const TestSpec& t) {
       trace = random_trace(t.seed, t.width, t.height, c.depth_bits, c.coverage_samples,
                            kRandomPasses, kRandomFragments, t.mix);
       break;
+    case TestKind::kGenerated: {
+      const int b = c.depth_bits, n = c.coverage_samples;
+      switch (t.family) {
+        case Family::kStates: trace = states_trace(t.blend, t.peel, b, n); break;
+        case Family::kDepthBits: trace = depth_bits_trace(b, n); break;
+        case Family::kValues: trace = values_trace(t.blend, b, n); break;
+        case Family::kCoverageValues: trace = coverage_values_trace(b, n); break;
+        case Family::kAccumValues: trace = accumulate_values_trace(b, n); break;
+        case Family::kTiles: trace = tiles_trace(b, n); break;
+        case Family::kSamePixel: trace = same_pixel_trace(t.blend, b, n); break;
+      }
+      break;
+    }
   }
   trace.wboit = c.wboit;
   // The stream carries a clear depth as the DUT gets it: clamped to the far depth, as

@@ -21,7 +21,11 @@ constexpr const char* kSuiteName = "zblend-conformance";
 // Version 5: each test's "features" and the SHA-256 of each of its files; random-core (and -d16,
 // -d32) at the end of their configs' groups, the random stream in the replace and alpha blends
 // only, for subset DUTs (the other tests' bytes as in version 4).
-constexpr int kSuiteVersion = 5;
+// Version 6: the generated tests (generate.h), each aimed at goals of the reach (reach.h), at the
+// end of their configs' groups; the tiers (quick chosen by the reach's ranking, full, and the
+// seeded random tier); the manifest's "tier" and, for a generated test, "family" (the other
+// tests' bytes as in version 5).
+constexpr int kSuiteVersion = 6;
 
 // Bad input to the kit (a malformed suite, a path it cannot use, an unknown test): one line.
 struct ConformanceError : std::runtime_error {
@@ -36,8 +40,12 @@ struct Config {
   WboitFormat wboit;  // the accumulation planes' widths: the defaults in every config
 };
 
-enum class TestKind { kScene, kHazard, kRandom };
-const char* to_string(TestKind k);  // "scene", "hazard", "random": the manifest's kind
+enum class TestKind { kScene, kHazard, kRandom, kGenerated };
+const char* to_string(TestKind k);  // "scene", "hazard", "random", "generated": the manifest's kind
+
+// A generated test's family (generate.h).
+enum class Family { kStates, kDepthBits, kValues, kCoverageValues, kAccumValues, kTiles, kSamePixel };
+const char* to_string(Family f);  // "states", "depth-bits", ...: the manifest's family
 
 struct TestSpec {
   std::string name;  // the test's directory
@@ -46,13 +54,21 @@ struct TestSpec {
   std::string scene, method;  // kScene: a built-in scene and a pass plan
   uint64_t seed = 0;          // kHazard, kRandom
   RandomMix mix = RandomMix::kAll;  // kRandom: which states and frame operations (random_trace)
+  Family family = Family::kStates;  // kGenerated: the family, its blend mode and peel setting
+  BlendMode blend = BlendMode::kReplace;
+  bool peel = false;
   int width = 0, height = 0;
   bool quick = false;         // in the CI-sized subset (export --quick)
+  bool seeded = false;        // in the seeded random tier (export --seed N)
 };
 
 // Every test, grouped by config (the base config d24-c16 first), in a fixed order; with
 // `quick`, the CI-sized subset, the same tests under the same names.
 std::vector<TestSpec> suite_tests(bool quick);
+
+// The seeded random tier (export --seed N): new random streams every seed, each reproducible
+// from it, in every config, named <stream>-s<N> ("random-s7", "random-core-d16-s7").
+std::vector<TestSpec> seeded_tests(uint64_t seed);
 
 // "" in a default build. Otherwise a warning: the hazard tests follow this build's RTL tile and
 // sample count (tb::HazardStimulus draws for them), so they differ from a default build's.

@@ -4,7 +4,9 @@
   conformance.py --suite DIR --sim verilator|icarus --out DIR [--profile FILE]
                  [--features GLOBS] [--tests GLOBS] [--feature GLOB ...] [--list] [-j N]
                  [--timeout S] [--watchdog N] [--dut FILE ...] [--define NAME ...]
-                 [--plusarg ARG ...] [--param N=V ...] [--gap P] [--lockstep --golden-libs LIB ...]
+                 [--plusarg ARG ...] [--param N=V ...] [--gap P] [--seed N] [--quick]
+                 [--timing tight|loose|random] [--schedule resident|pass]
+                 [--lockstep --golden-libs LIB ...]
 
 The DUT declares what it supports in a profile (--profile; zb_rop's, the full one, by default):
 features, testbench parameters, its sources, whether it has a retire port. A test whose manifest
@@ -18,8 +20,18 @@ against the manifest's SHA-256 first: a corrupt suite is bad input, never a DUT 
 Results: this text, OUT/results.json and OUT/junit.xml. Exit 0 when every test that ran
 passed, 1 on a failure, a timeout or when no test was supported, 2 on bad usage or a bad suite.
 
-Suite versions: 5 (features and per-file checksums in the manifest). Earlier suites lack the
-features a profile is matched against: export the suite again with this zblend.
+The testbench drives the port contract's tightest legal timing by default (--timing tight: each
+event at the first edge allowed), or a cycle more before each wait (loose), or 0 to 3 cycles drawn
+from --seed (random). A DUT whose profile says "resident_tile" runs the passes between frame
+operations on resident tiles (one load, each pass's state and fragments, one store), as a tiled
+GPU runs a multi-pass method; --schedule pass runs it tile by tile and pass by pass instead.
+
+Tiers: --quick runs the manifest's quick tier (the fewest tests keeping the most of the reach);
+the whole suite is the full tier; `zblend conformance export --seed N` writes the seeded random
+tier, a suite of its own.
+
+Suite versions: 6 (generated tests, tiers). Earlier suites lack what this script selects by:
+export the suite again with this zblend.
 """
 import argparse
 import concurrent.futures
@@ -38,10 +50,13 @@ import time
 import xml.etree.ElementTree as ET
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SUITE_VERSIONS = (5,)  # the versions this script runs (conformance/suite.h kSuiteVersion)
+SUITE_VERSIONS = (6,)  # the versions this script runs (conformance/suite.h kSuiteVersion)
 # Why each earlier version is refused.
 REFUSED = {v: "it has no per-test features or file checksums (version 5 added them)"
            for v in range(1, 5)}
+REFUSED[5] = ("it has no tiers and none of the tests generated from the coverage plan "
+              "(version 6 added them)")
+TIMINGS = {"tight": 0, "loose": 1, "random": 2}  # zb_conf_tb's +timing
 PLANES = ("color", "depth", "coverage", "peel", "accum")
 # The testbench's parameters that each test's configuration sets (manifest "configs").
 CONFIG_PARAMS = {"DEPTH_BITS": "depth_bits", "COV_SAMPLES": "coverage_samples",
@@ -64,7 +79,7 @@ FEATURES = (["blend." + b for b in ("replace", "alpha", "additive", "coverage", 
             + ["depth_write", "color_mask", "peel_test", "accum_plane"]
             + [f"depth_bits.{b}" for b in range(8, 33)] + [f"coverage_samples.{n}" for n in
                                                              (1, 2, 4, 8, 16)])
-PROFILE_KEYS = {"dut", "features", "params", "retire_port", "sources", "defines"}
+PROFILE_KEYS = {"dut", "features", "params", "retire_port", "resident_tile", "sources", "defines"}
 
 
 # The waves' save file: the testbench's signals by role (zb_conf_tb.sv), hex for buses.
@@ -191,8 +206,8 @@ def load_suite(suite):
 
 def load_profile(path, features_arg):
     """The DUT's profile: {features, params, retire_port, sources, defines, dut, path}."""
-    prof = {"features": [], "params": {}, "retire_port": False, "sources": [], "defines": [],
-            "dut": "", "path": path}
+    prof = {"features": [], "params": {}, "retire_port": False, "resident_tile": False,
+            "sources": [], "defines": [], "dut": "", "path": path}
     try:
         with open(path) as f:
             j = json.load(f)
@@ -220,6 +235,9 @@ def load_profile(path, features_arg):
             usage_error(f"feature {pattern!r} (in {'--features' if features_arg else path}) names "
                         f"no feature; they are: {', '.join(FEATURES[:18])}, depth_bits.N, "
                         "coverage_samples.N (globs allowed)")
+    for k in ("retire_port", "resident_tile"):
+        if not isinstance(prof[k], bool):
+            usage_error(f"--profile {path}: {k}: {prof[k]!r} is not true or false")
     for k, v in prof["params"].items():
         if not k.isidentifier() or not isinstance(v, int):
             usage_error(f"--profile {path}: params: {k!r}: {v!r} is not NAME: integer")
@@ -313,7 +331,8 @@ def run_test(test, run_cmd, a):
     first_wrong = mismatch_cycle(os.path.join(d, "sim.log"))
     cmd = run_cmd + [f"+stream={os.path.join(a.suite, test['name'], 'stream.hex')}",
                      f"+out={d}", f"+gap={a.gap}", f"+seed={a.seed}",
-                     f"+watchdog={a.watchdog}"] + list(a.plusarg)
+                     f"+watchdog={a.watchdog}", f"+timing={TIMINGS[a.timing]}",
+                     f"+resident={1 if a.schedule == 'resident' else 0}"] + list(a.plusarg)
     if a.waves:
         cmd.append(f"+dump={os.path.join(d, 'waves.fst')}")
         if first_wrong is not None:
@@ -371,6 +390,7 @@ def strip_option(argv, name):
 def write_results(a, results, counts, suite_version):
     """OUT/results.json and OUT/junit.xml: every selected test's verdict, in suite order."""
     doc = {"suite": a.suite, "suite_version": suite_version, "sim": a.sim,
+           "timing": a.timing, "schedule": a.schedule, "seed": a.seed,
            "profile": a.prof["path"], "dut": a.prof["dut"], "counts": counts, "tests": results}
     with open(os.path.join(a.out, "results.json"), "w") as f:
         json.dump(doc, f, indent=2)
@@ -432,7 +452,18 @@ def main():
     ap.add_argument("--param", action="append", default=[], metavar="NAME=VALUE",
                     help="a parameter of zb_conf_tb, e.g. TILE_W=32 (the DUT's tile, given to the adapter)")
     ap.add_argument("--gap", type=int, default=0, help="percent of cycles with no fragment offered")
-    ap.add_argument("--seed", type=int, default=1, help="the gaps' pattern")
+    ap.add_argument("--seed", type=int, default=1,
+                    help="the gaps' and the random timing's pattern (default 1)")
+    ap.add_argument("--timing", choices=list(TIMINGS), default="tight",
+                    help="tight: each event at the first edge the port contract allows "
+                         "(default); loose: a cycle more before each wait; random: 0 to 3 "
+                         "cycles drawn from --seed")
+    ap.add_argument("--schedule", choices=["resident", "pass"], default=None,
+                    help="resident: the passes between frame operations on resident tiles (the "
+                         "default when the profile has resident_tile); pass: tile by tile, "
+                         "pass by pass")
+    ap.add_argument("--quick", action="store_true",
+                    help="only the suite's quick tier (the manifest's \"tier\": \"quick\")")
     ap.add_argument("--lockstep", action="store_true",
                     help="the golden model as a DPI-C scoreboard beside the DUT (verilator; a retire port)")
     ap.add_argument("--golden-libs", nargs="+", default=[],
@@ -465,6 +496,11 @@ def main():
     a.ours = not a.dut and os.path.abspath(a.profile) == DEFAULT_PROFILE
     if not a.dut and not a.prof["sources"]:
         usage_error(f"--profile {a.profile} lists no sources: give them there or with --dut")
+    if a.schedule is None:
+        a.schedule = "resident" if a.prof["resident_tile"] else "pass"
+    elif a.schedule == "resident" and not a.prof["resident_tile"]:
+        usage_error(f"--schedule resident: the profile {a.profile} does not say "
+                    "\"resident_tile\": true")
     if a.lockstep and not a.prof["retire_port"]:
         usage_error(f"--lockstep needs a retire port; the profile {a.profile} says "
                     "\"retire_port\": false")
@@ -488,6 +524,8 @@ def main():
         os.makedirs(a.out, exist_ok=True)
         a.suite = unpack_suite(a.suite, a.out)
     configs, all_tests, suite_version = load_suite(a.suite)
+    if a.quick:
+        all_tests = [t for t in all_tests if t.get("tier") == "quick"]
     tests = select(all_tests, [g for g in a.tests.split(",") if g], a.feature)
     unsupported = {t["name"]: missing_features(t, a.prof) for t in tests}
     unsupported = {k: v for k, v in unsupported.items() if v}

@@ -10,10 +10,14 @@ within its time budget.
 
 With --conformance the run is a conformance run (scripts/conformance.py with the plan's
 covers: OUT/results.json and OUT/<test>/coverage.dat): the report measures the suite's reach on
-the default parameter set's bins, reach.html and reach.json, and is not a gate.
+the default parameter set's bins, reach.html and reach.json. With --kit-bins
+(conformance/kit_bins.json) the bins a DUT cannot reach through the kit are set apart with their
+reasons and the reach is measured on the others; with --reach (`zblend conformance reach
+--json`) the golden model's reach is held to zb_rop's covers, test by test (reach_check.py).
 
-Exit status: 0 closure (every bin hit or reasoned; with --conformance, any reach); 1 holes, a
-reason a test contradicts, or a cover the plan does not name; 2 bad input.
+Exit status: 0 closure (every bin hit or reasoned; with --conformance, the reach at least
+--min-reach percent and the golden reach agreeing); 1 holes, a reason a test contradicts, or a
+cover the plan does not name; 2 bad input.
 """
 import argparse
 import html
@@ -22,6 +26,7 @@ import os
 import sys
 
 import coverage_plan
+import reach_check
 import regressions
 from zbscript import ROOT, usage_error
 
@@ -251,6 +256,12 @@ def main():
                     help="the group whose time budget the chosen smoke set keeps (default smoke)")
     ap.add_argument("--conformance", action="store_true",
                     help="RUN is a conformance run: measure the suite's reach")
+    ap.add_argument("--kit-bins", help="with --conformance: the kit-unreachable bins "
+                    "(conformance/kit_bins.json)")
+    ap.add_argument("--reach", help="with --conformance: the golden reach (zblend conformance "
+                    "reach --json) to cross-check")
+    ap.add_argument("--min-reach", type=float, default=0.0,
+                    help="with --kit-bins: fail below this percent of kit-reachable bins hit")
     ap.add_argument("--plan", default=coverage_plan.DEFAULT, help="the coverage plan")
     ap.add_argument("--tests-file", default=regressions.DEFAULT, help="the regression file")
     ap.add_argument("--out", help="where the report goes (default: the run's directory)")
@@ -280,7 +291,15 @@ def main():
                     if not any(n == t or n.startswith(t + "-") for n in names):
                         problems.append(f"plan entry {e['id']}: test {t} is not in group "
                                         f"{a.group}")
-    except (coverage_plan.PlanError, regressions.RegressionError) as e:
+        kit_rows = None
+        if a.conformance and a.kit_bins:
+            kit_rows = reach_check.mark(table, reach_check.load_kit_bins(a.kit_bins))
+        if a.conformance and a.reach:
+            if kit_rows is None:
+                usage_error("--reach needs --kit-bins (which bins the golden reach counts)")
+            problems += reach_check.cross_check(reach_check.load_reach(a.reach), kit_rows,
+                                                test_bins(table, runs))
+    except (coverage_plan.PlanError, regressions.RegressionError, reach_check.ReachError) as e:
         usage_error(str(e))
     except (OSError, ValueError, KeyError) as e:
         usage_error(f"{a.run}: unreadable run: {e}")
@@ -328,6 +347,23 @@ def main():
               f"{' '.join(smoke['after'])}")
     print(f"coverage: report {os.path.join(out, name + '.html')}; holes in "
           f"{os.path.join(out, 'holes.txt')}")
+    if a.conformance and kit_rows is not None:
+        got = sum(1 for r in kit_rows if r["hits"])
+        pct = 100.0 * got / max(len(kit_rows), 1)
+        print(f"coverage: conformance reach on the kit-reachable bins: {got} of {len(kit_rows)} "
+              f"({pct:.2f} %); {len(table) - len(kit_rows)} bins out of the kit's reach, each "
+              f"with its reason ({a.kit_bins})")
+        for r in kit_rows:
+            if not r["hits"]:
+                print(f"coverage: not reached: {r['bin']}")
+        with open(os.path.join(out, "reach.json")) as f:
+            doc = json.load(f)
+        doc["summary"]["kit"] = {"reachable": len(kit_rows), "hit": got, "pct": pct}
+        with open(os.path.join(out, "reach.json"), "w") as f:
+            json.dump(doc, f, indent=1)
+        if pct < a.min_reach:
+            print(f"coverage: the reach {pct:.2f} % is below --min-reach {a.min_reach}")
+            return 1
     if a.conformance:
         return 1 if problems else 0
     return 0 if summary["holes"] == 0 and not problems else 1

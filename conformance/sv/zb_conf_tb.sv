@@ -12,7 +12,10 @@
 // with no fragment offered, default 0) +seed=N (the gaps' pattern) +dump=FILE (waves of the
 // run: Verilator built with --trace-fst, or Icarus's vvp run with -fst) +dump_from=C (the waves
 // start at cycle C: GTKWave opens a file at its first time) +watchdog=N (cycles without progress
-// before the test fails, default 10000).
+// before the test fails, default 10000) +timing=N (0 tight, the default: each event at the first
+// edge the port contract allows; 1 loose: a cycle more before each wait; 2 random: 0 to 3 cycles
+// drawn from +seed) +resident=1 (passes between frame operations run on resident tiles: one
+// load, each pass's state and fragments, one store; for a DUT whose profile has resident_tile).
 // The DUT's ports are checked as the run goes: an output that is X or Z, planes_o changing, a
 // store pixel offered outside a store, idle_o high inside one: each a "zb_conf: PROTOCOL:" line
 // naming the port, the rule and the cycle. A DUT that stops making progress (no fragment, load
@@ -30,7 +33,8 @@ module zb_conf_tb #(
   parameter int REV_BITS    = 8,
   parameter int WEIGHT_BITS = 4,
   parameter int MAX_WORDS   = 1 << 18,  // the longest command stream
-  parameter int MAX_PIXELS  = 1 << 16   // the largest frame
+  parameter int MAX_PIXELS  = 1 << 16,  // the largest frame
+  parameter int MAX_GROUP   = 1024      // the most passes run on a resident tile at once
 );
 
   localparam int Words = TILE_W * TILE_H;
@@ -215,6 +219,10 @@ module zb_conf_tb #(
   int unsigned  width, height, count;
   string        stream_path, out_dir;
   int           gap_pct, seed;
+  int           timing;    // 0 tight (every event at the first edge the contract allows), 1 loose
+                           // (a cycle more before each wait), 2 seeded random (0 to 3 cycles more)
+  bit           resident;  // several passes on one resident tile: one load, their states and
+                           // fragments, one store (a profile's resident_tile)
   int unsigned  n_passes, n_frags, n_tiles;
   int unsigned  frag_index;  // the fragment offered: its index in the pass (the waves' marker)
 
@@ -323,6 +331,14 @@ module zb_conf_tb #(
     return int'(rng % 32'd100);
   endfunction
 
+  // The cycles a host waits before its next event: none when tight, one when loose, 0 to 3
+  // drawn from the gaps' generator when random.
+  task automatic slack();
+    int unsigned k;
+    k = timing == 0 ? 0 : timing == 1 ? 1 : 32'(chance_pct()) % 4;
+    repeat (k) @(negedge clk);
+  endtask
+
   function automatic bit in_tile(input logic [127:0] w, input int unsigned x0,
                                  input int unsigned y0);
     int unsigned x, y;
@@ -430,38 +446,53 @@ module zb_conf_tb #(
     progress();
   endtask
 
+  // Waits for idle_o; tight, it is read at this very falling edge (the last fragment taken at
+  // the edge before), so the next event goes at the first edge that allows it.
   task automatic wait_idle;
     phase = $sformatf("pass %0d, tile (%0d, %0d): the tile's fragments sent, waiting for idle_o",
                       n_passes, tile_x0, tile_y0);
-    @(negedge clk);
+    slack();
     while (!idle) @(negedge clk);
     progress();
   endtask
+
+  // A pass state write: a one-cycle pulse while idle_o.
+  task automatic write_state(input logic [12:0] pass_state);
+    slack();
+    phase = "before a pass state write: waiting for idle_o";
+    while (!idle) @(negedge clk);
+    state    = pass_state;
+    state_we = 1'b1;
+    @(negedge clk);
+    state_we = 1'b0;
+  endtask
+
+  function automatic bit pass_touches(input int unsigned first, input int unsigned last,
+                                      input int unsigned x0, input int unsigned y0);
+    for (int unsigned k = first; k < last; k++)
+      if (in_tile(words[k], x0, y0)) return 1'b1;
+    return 1'b0;
+  endfunction
 
   // One pass: the fragments are words[first .. last - 1]; every tile with one of them is
   // loaded, streamed and stored.
   task automatic run_pass(input logic [12:0] pass_state, input int unsigned first,
                           input int unsigned last);
-    bit touched;
 `ifdef ZB_CONF_LOCKSTEP
     u_sb.begin_pass(pass_state);
 `endif
     for (int unsigned y0 = 0; y0 < height; y0 += TILE_H) begin
       for (int unsigned x0 = 0; x0 < width; x0 += TILE_W) begin
-        touched = 1'b0;
-        for (int unsigned k = first; k < last && !touched; k++) touched = in_tile(words[k], x0, y0);
-        if (touched) begin
+        if (pass_touches(first, last, x0, y0)) begin
           n_tiles++;
-          tile_x0  = 16'(x0);
-          tile_y0  = 16'(y0);
-          state    = pass_state;
-          state_we = 1'b1;
-          @(negedge clk);
-          state_we = 1'b0;
+          tile_x0 = 16'(x0);
+          tile_y0 = 16'(y0);
+          write_state(pass_state);
 `ifdef ZB_CONF_LOCKSTEP
           u_sb.begin_tile(x0, y0);
 `endif
           load_tile(x0, y0);
+          slack();
           stream_tile(first, last, x0, y0);
           wait_idle();
 `ifdef ZB_CONF_LOCKSTEP
@@ -474,6 +505,46 @@ module zb_conf_tb #(
 `ifdef ZB_CONF_LOCKSTEP
     u_sb.end_pass();
 `endif
+  endtask
+
+  // Passes with no frame operation between them, on resident tiles (a tiled GPU's schedule):
+  // for each tile any of them touches, one load, then each pass's state write and its fragments
+  // for the tile, the state written at the first edge after the last pass drained, one store.
+  // Per pixel the fragments keep the stream's order, so the planes are the pass-major run's.
+  int unsigned group_state [MAX_GROUP];
+  int unsigned group_first [MAX_GROUP];
+  int unsigned group_last  [MAX_GROUP];
+  task automatic run_resident(input int unsigned passes);
+    bit touched;
+    for (int unsigned y0 = 0; y0 < height; y0 += TILE_H) begin
+      for (int unsigned x0 = 0; x0 < width; x0 += TILE_W) begin
+        touched = 1'b0;
+        for (int unsigned g = 0; g < passes && !touched; g++)
+          touched = pass_touches(group_first[g], group_last[g], x0, y0);
+        if (touched) begin
+          n_tiles++;
+          tile_x0 = 16'(x0);
+          tile_y0 = 16'(y0);
+          write_state(13'(group_state[0]));
+          load_tile(x0, y0);
+          for (int unsigned g = 0; g < passes; g++) begin
+            if (!pass_touches(group_first[g], group_last[g], x0, y0)) continue;
+            if (g > 0) write_state(13'(group_state[g]));
+`ifdef ZB_CONF_LOCKSTEP
+            u_sb.begin_pass(13'(group_state[g]));
+            u_sb.begin_tile(x0, y0);
+`endif
+            stream_tile(group_first[g], group_last[g], x0, y0);
+            wait_idle();
+`ifdef ZB_CONF_LOCKSTEP
+            u_sb.end_tile();
+            u_sb.end_pass();
+`endif
+          end
+          store_tile(x0, y0);
+        end
+      end
+    end
   endtask
 
   // One plane's signature: plane 0 colour, 1 depth, 2 coverage (2 hex digits), 3 peel, 4 the
@@ -508,7 +579,7 @@ module zb_conf_tb #(
 
   initial begin : run
     logic [127:0] w;
-    int unsigned  pc, first;
+    int unsigned  pc, first, group;
     bit           needs_accum;
     if (!$value$plusargs("stream=%s", stream_path))
       $fatal(1, "zb_conf: no +stream=FILE: name a test's stream.hex (docs/conformance.md)");
@@ -516,6 +587,9 @@ module zb_conf_tb #(
     if (!$value$plusargs("gap=%d", gap_pct)) gap_pct = 0;
     if (!$value$plusargs("seed=%d", seed)) seed = 1;
     if (!$value$plusargs("watchdog=%d", watchdog_cycles)) watchdog_cycles = 10000;
+    if (!$value$plusargs("timing=%d", timing)) timing = 0;
+    if (!$value$plusargs("resident=%d", resident)) resident = 1'b0;
+    if (timing < 0 || timing > 2) fail($sformatf("+timing=%0d: 0 tight, 1 loose, 2 random", timing));
     rng = 32'(seed) ^ 32'h9e37_79b9;
     if (rng == 0) rng = 32'h1;
     for (int unsigned k = 0; k <= MAX_WORDS; k++) words[k] = '0;
@@ -579,6 +653,21 @@ module zb_conf_tb #(
       if (opcode(w) == OpFrameOp) begin
         frame_op(w);
         pc++;
+      end else if (opcode(w) == OpPass && resident) begin
+        // The passes up to the next frame operation or END, run tile by tile.
+        group = 0;
+        while (opcode(words[pc]) == OpPass && group < MAX_GROUP) begin
+          group_state[group] = 32'(words[pc][12:0]);
+          group_first[group] = pc + 1;
+          pc++;
+          while (pc <= count && opcode(words[pc]) == OpFrag) pc++;
+          if (opcode(words[pc]) != OpEndPass) fail($sformatf("word %0d: a pass not ended by END_PASS", pc));
+          group_last[group] = pc;
+          group++;
+          pc++;
+        end
+        run_resident(group);
+        n_passes += group;
       end else if (opcode(w) == OpPass) begin
         first = pc + 1;
         pc = first;

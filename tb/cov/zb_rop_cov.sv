@@ -211,12 +211,14 @@ module zb_rop_cov #(
     SamePixelCalm: cover property (@(posedge clk_i) disable iff (!rst_ni)
         take && nearest[k] && !hist_gap[k] && !hist_stall[k] && !hist_full[k] &&
         !ev_gap && !ev_stall && !ev_full);
+    // An event in the take's own cycle counts too: the window takes from the input stage, so
+    // the port may already be idle (the stream's last fragment) when the pair is taken.
     SamePixelGap: cover property (@(posedge clk_i) disable iff (!rst_ni)
-        take && nearest[k] && hist_gap[k]);
+        take && nearest[k] && (hist_gap[k] || ev_gap));
     SamePixelStall: cover property (@(posedge clk_i) disable iff (!rst_ni)
-        take && nearest[k] && hist_stall[k]);
+        take && nearest[k] && (hist_stall[k] || ev_stall));
     SamePixelFull: cover property (@(posedge clk_i) disable iff (!rst_ni)
-        take && nearest[k] && hist_full[k]);
+        take && nearest[k] && (hist_full[k] || ev_full));
   end
 
   // Every window slot: taken, waiting for its pixel (the pipeline or an older slot has it),

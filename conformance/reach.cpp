@@ -1,0 +1,396 @@
+#include "reach.h"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <set>
+
+#include <fmt/core.h>
+
+#include "parallel/parallel.h"
+#include "rop/blend.h"
+#include "rop/rop.h"
+#include "suite.h"
+
+namespace zb::conformance {
+namespace {
+
+const char* const kRelations[] = {"less", "equal", "greater"};
+const char* const kChannels[] = {"r", "g", "b", "a"};
+const char* const kBands[] = {"top", "inside", "bottom"};
+const char* const kColBands[] = {"left", "inside", "right"};
+const char* const kPlaneNames[] = {"colour", "depth", "coverage", "peel", "accum"};
+const char* const kOrigins[] = {"first", "row", "column", "inner"};
+constexpr uint8_t kChannelCorners[] = {0, 1, 127, 128, 254, 255};
+constexpr int kGoalTiles[] = {16, 32, 64};
+constexpr int kGoalDepthBits[] = {16, 24, 32};
+constexpr int kGoalSamples[] = {4, 16};
+constexpr int kRunDistances = 16;  // same-pixel runs under read-modify-write blends
+const BlendMode kRmwBlends[] = {BlendMode::kAlpha, BlendMode::kAdditive, BlendMode::kCoverage,
+                                BlendMode::kUnder, BlendMode::kAccumulate};
+
+int relation(uint32_t z, uint32_t stored) { return z < stored ? 0 : z == stored ? 1 : 2; }
+
+uint8_t channel(Rgba8 c, int k) { return k == 0 ? c.r : k == 1 ? c.g : k == 2 ? c.b : c.a; }
+
+// 0 at the first row or column, 2 at the last, 1 between (the plan's bands).
+int band(int local, int size) { return local == 0 ? 0 : local == size - 1 ? 2 : 1; }
+
+int origin_kind(int x0, int y0) { return x0 == 0 ? (y0 == 0 ? 0 : 2) : (y0 == 0 ? 1 : 3); }
+
+std::string state_dims(const RopState& s) {
+  return fmt::format("depth={},write={},blend={},mask={:x},peel={}",
+                     s.depth_test ? to_string(s.depth_func) : "off", s.depth_write ? 1 : 0,
+                     to_string(s.blend), s.color_mask & 15, s.peel_test ? 1 : 0);
+}
+
+std::string corner_name(uint32_t z, uint32_t zmax) {
+  return z == 0 ? "zero" : z == 1 ? "one" : z == zmax ? "max" : "max_minus_1";
+}
+
+bool is_rmw(BlendMode b) {
+  return std::find(std::begin(kRmwBlends), std::end(kRmwBlends), b) != std::end(kRmwBlends);
+}
+
+// The testbench's fragment order (zb_conf_tb): pass by pass, each tile a pass touches in raster
+// order, its fragments in stream order; with the resident schedule, the passes up to the next
+// frame operation tile by tile instead, each pass's fragments for the tile in turn. Calls
+// visit(pass, fragment index, tile x0, y0, first of its pass on the tile).
+template <class Visit>
+void tb_order(const Trace& t, const DutShape& shape, Visit visit) {
+  auto touches = [&](size_t p, int x0, int y0) {
+    for (const Fragment& f : t.passes[p].fragments)
+      if (f.x >= x0 && f.x < x0 + shape.tile_w && f.y >= y0 && f.y < y0 + shape.tile_h) return true;
+    return false;
+  };
+  auto run = [&](size_t p, int x0, int y0) {
+    bool first = true;
+    const std::vector<Fragment>& frags = t.passes[p].fragments;
+    for (size_t i = 0; i < frags.size(); ++i) {
+      const Fragment& f = frags[i];
+      if (f.x < x0 || f.x >= x0 + shape.tile_w || f.y < y0 || f.y >= y0 + shape.tile_h) continue;
+      visit(p, i, x0, y0, first);
+      first = false;
+    }
+  };
+  for (size_t begin = 0; begin < t.passes.size();) {
+    size_t end = begin + 1;
+    if (shape.resident)
+      while (end < t.passes.size() && t.passes[end].frame_ops.empty()) ++end;
+    for (int y0 = 0; y0 < t.height; y0 += shape.tile_h)
+      for (int x0 = 0; x0 < t.width; x0 += shape.tile_w)
+        for (size_t p = begin; p < end; ++p)
+          if (touches(p, x0, y0)) run(p, x0, y0);
+    begin = end;
+  }
+}
+
+}  // namespace
+
+std::string pass_state_bin(const RopState& s) { return "pass_state[" + state_dims(s) + "]"; }
+
+bool visible(const RopState& state, const Fragment& f, const StoredPixel& p, int depth_bits,
+             int samples, const WboitFormat& wboit) {
+  switch (state.blend) {
+    case BlendMode::kAccumulate: {
+      const WboitPixel w = accumulate_wboit(f.z, f.color, p.acc, p.reveal, depth_bits, wboit);
+      for (int c = 0; c < 4; ++c)
+        if (w.acc[size_t(c)] == p.acc[size_t(c)]) return false;
+      return w.reveal != p.reveal;
+    }
+    case BlendMode::kCoverage: {
+      const CoveragePixel c = composite_coverage(f.z, f.color, f.coverage, p.depth, p.color,
+                                                 p.coverage, samples);
+      for (int k = 0; k < 4; ++k)
+        if (channel(c.color, k) == channel(p.color, k)) return false;
+      return true;
+    }
+    default: {
+      const Rgba8 b = blend(state.blend, f.color, p.color);
+      bool differs_from_source = state.blend == BlendMode::kReplace;
+      for (int k = 0; k < 4; ++k) {
+        if (channel(b, k) == channel(p.color, k)) return false;
+        differs_from_source |= channel(b, k) != channel(f.color, k);
+      }
+      return differs_from_source;
+    }
+  }
+}
+
+BinCounts trace_reach(const Trace& t, const DutShape& shape) {
+  BinCounts bins;
+  const uint32_t zmax = depth_max(t.depth_bits);
+  const int n = t.coverage_samples;
+
+  // The golden model's decisions, fragment by fragment in stream order (per pixel the
+  // testbench's order too): the stored pixel before each, and what it wrote.
+  GoldenRop golden;
+  golden.begin_frame(t.width, t.height, t.depth_bits, t.clear_color, n, t.wboit);
+  const Framebuffer& fb = golden.framebuffer();
+  for (const TracePass& pass : t.passes) {
+    for (const FrameOp& op : pass.frame_ops) golden.frame_op(op);
+    const RopState& s = pass.state;
+    golden.begin_pass(s);
+    const bool cov_mode = s.blend == BlendMode::kCoverage;
+    const std::string dims = state_dims(s);
+    for (const Fragment& f : pass.fragments) {
+      const size_t i = fb.index(f.x, f.y);
+      const StoredPixel before{fb.depth[i], fb.color[i], fb.coverage[i], fb.accum_at(i),
+                               fb.reveal_at(i)};
+      const uint32_t peel = fb.peel[i];
+      const int rel = relation(f.z, before.depth);
+      const PixelWrites w = golden.process(f);
+
+      ++bins["pass_state[" + dims + "]"];
+      if (s.depth_test && !cov_mode)
+        ++bins[fmt::format("depth_compare[func={},relation={}]", to_string(s.depth_func),
+                           kRelations[rel])];
+      if (s.peel_test && !cov_mode) ++bins[f.z > peel ? "peel_compare.behind" : "peel_compare.not_behind"];
+      if (cov_mode)
+        ++bins[fmt::format("coverage_composite[relation={},sum={}]", kRelations[rel],
+                           f.coverage + before.coverage <= n ? "Fits" : "Overflows")];
+      if (w.color) {
+        for (int k = 0; k < 4; ++k) {
+          if (!(s.color_mask >> k & 1)) continue;
+          const uint8_t v = channel(w.rgba, k);
+          if (v == 0) ++bins[fmt::format("blend_result[blend={},value=Zero]", to_string(s.blend))];
+          if (v == 255) ++bins[fmt::format("blend_result[blend={},value=Full]", to_string(s.blend))];
+        }
+      }
+      if (f.z == 0) ++bins["frag_depth.zero"];
+      if (f.z == zmax) ++bins["frag_depth.max"];
+      if (f.color.a == 0) ++bins["frag_alpha.zero"];
+      if (f.color.a == 255) ++bins["frag_alpha.full"];
+      if (f.coverage == 0) ++bins["frag_coverage.zero"];
+      if (f.coverage == 1) ++bins["frag_coverage.one"];
+      if (f.coverage == n) ++bins["frag_coverage.full"];
+      if (w.accum) {
+        const uint32_t weight = f.color.a * wboit_depth_weight(f.z, t.depth_bits, t.wboit.weight_bits);
+        const int shift = wboit_term_shift(t.wboit);
+        const uint8_t pm[4] = {mul_unorm8(f.color.r, f.color.a), mul_unorm8(f.color.g, f.color.a),
+                               mul_unorm8(f.color.b, f.color.a), f.color.a};
+        for (int c = 0; c < 4; ++c)
+          if ((uint64_t(before.acc[size_t(c)]) + wboit_term(pm[c], weight, shift)) >>
+              t.wboit.acc_bits)
+            ++bins[fmt::format("accum_saturation[channel={}]", kChannels[c])];
+      }
+
+      // The suite's goals.
+      const bool peel_shows = !s.peel_test || cov_mode || (rel == 1 ? f.z <= peel : f.z > peel);
+      if (peel_shows && visible(s, f, before, t.depth_bits, n, t.wboit))
+        ++bins[fmt::format("goal.state_relation[{},relation={}]", dims, kRelations[rel])];
+      const bool ordering = s.depth_test && !cov_mode && s.depth_func != DepthFunc::kNever &&
+                            s.depth_func != DepthFunc::kAlways;
+      const bool observable = s.depth_write || (s.color_mask != 0 && s.blend != BlendMode::kAccumulate);
+      const uint32_t diff = f.z ^ before.depth;
+      if (ordering && observable && diff != 0 && (diff & (diff - 1)) == 0) {
+        int bit = 0;
+        while ((diff >> bit) != 1) ++bit;
+        ++bins[fmt::format("goal.depth_bit[bits={},bit={},order={}]", t.depth_bits, bit,
+                           rel == 0 ? "below" : "above")];
+      }
+      if (s.depth_test && (f.z <= 1 || f.z >= zmax - 1))
+        ++bins[fmt::format("goal.depth_value[bits={},value={}]", t.depth_bits, corner_name(f.z, zmax))];
+      const bool passes = (!s.depth_test || depth_test(s.depth_func, f.z, before.depth)) &&
+                          (!s.peel_test || f.z > peel);
+      if (!cov_mode && s.blend != BlendMode::kAccumulate && passes &&
+          visible(s, f, before, t.depth_bits, n, t.wboit))
+        for (int k = 0; k < 4; ++k)
+          for (uint8_t v : kChannelCorners)
+            if (channel(f.color, k) == v)
+              ++bins[fmt::format("goal.channel_value[channel={},value={},mask={:x}]", kChannels[k],
+                                 v, s.color_mask & 15)];
+      if (cov_mode) {
+        auto corner = [&](int c) {
+          return c == 0 ? "0" : c == 1 ? "1" : c == n - 1 ? "n_minus_1" : c == n ? "n" : nullptr;
+        };
+        const char* kc = corner(f.coverage);
+        const char* sc = corner(before.coverage);
+        if (kc && sc)
+          ++bins[fmt::format("goal.coverage_value[samples={},frag={},stored={}]", n, kc, sc)];
+      }
+      for (int tile : kGoalTiles) {
+        ++bins[fmt::format("goal.tile_position[tile={},row={},col={}]", tile,
+                           kBands[band(f.y % tile, tile)], kColBands[band(f.x % tile, tile)])];
+        ++bins[fmt::format("goal.tile_origin[tile={},origin={}]", tile,
+                           kOrigins[origin_kind(f.x / tile, f.y / tile)])];
+      }
+    }
+    golden.end_pass();
+  }
+
+  for (int tile : kGoalTiles)
+    if (t.width % tile == 0 && t.height % tile == 0 && t.width >= 2 * tile && t.height >= 2 * tile)
+      ++bins[fmt::format("goal.frame_fills[tile={}]", tile)];
+
+  // The testbench's order at the DUT's tile: positions, origins, loads, stores, state writes,
+  // and the same-pixel distances in fragments taken, tile-local as a DUT's addresses are.
+  // Every cycle between tiles offers no fragment (the load and store, the wait for idle_o):
+  // a gap, so the plan's "Calm" distances are those inside one tile's stream.
+  const int window_dist = shape.window + 1;
+  // zb_conf_tb's gap generator: xorshift32 from seed ^ 0x9e3779b9, one draw for each cycle the
+  // testbench weighs offering a fragment (tight timing draws nothing else).
+  uint32_t rng = shape.seed ^ 0x9e3779b9u;
+  if (rng == 0) rng = 1;
+  auto chance = [&] {
+    rng ^= rng << 13;
+    rng ^= rng >> 17;
+    rng ^= rng << 5;
+    return int(rng % 100u);
+  };
+  std::vector<int> hist;                   // tile-local addresses, newest last
+  std::vector<bool> hist_gap;              // a gap since that entry was taken
+  std::vector<BlendMode> hist_blend;
+  tb_order(t, shape, [&](size_t p, size_t i, int x0, int y0, bool first) {
+    const Fragment& f = t.passes[p].fragments[i];
+    const RopState& s = t.passes[p].state;
+    if (first) {
+      ++bins["frame_ops.state_write"];
+      ++bins["store.first_beat"];
+      ++bins["store.last_beat"];
+      for (const char* plane : kPlaneNames) {
+        ++bins[fmt::format("plane_ops[plane={},op=LoadFirstBeat]", plane)];
+        ++bins[fmt::format("plane_ops[plane={},op=LoadLastBeat]", plane)];
+      }
+      hist_gap.assign(hist_gap.size(), true);
+    }
+    bool gap = false;
+    while (shape.gap_pct > 0 && chance() < shape.gap_pct) gap = true;
+    if (gap) hist_gap.assign(hist_gap.size(), true);
+    const int lx = f.x - x0, ly = f.y - y0;
+    const int addr = ly * shape.tile_w + lx;
+    ++bins[fmt::format("frag_in_tile[row={},col={}]", kBands[band(ly, shape.tile_h)],
+                       kColBands[band(lx, shape.tile_w)])];
+    ++bins[fmt::format("tile_origin.{}", kOrigins[origin_kind(x0, y0)])];
+    for (size_t back = 1; back <= hist.size(); ++back) {
+      const size_t k = hist.size() - back;
+      if (hist[k] != addr) continue;
+      if (int(back) <= window_dist)
+        ++bins[fmt::format("same_pixel[distance={},between={}]", back, hist_gap[k] ? "Gap" : "Calm")];
+      if (int(back) <= kRunDistances && is_rmw(s.blend) && hist_blend[k] == s.blend && !hist_gap[k])
+        ++bins[fmt::format("goal.same_pixel_rmw[blend={},distance={}]", to_string(s.blend), back)];
+      break;
+    }
+    hist.push_back(addr);
+    hist_gap.push_back(false);
+    hist_blend.push_back(s.blend);
+    if (hist.size() > size_t(std::max(window_dist, kRunDistances))) {
+      hist.erase(hist.begin());
+      hist_gap.erase(hist_gap.begin());
+      hist_blend.erase(hist_blend.begin());
+    }
+  });
+  return bins;
+}
+
+BinList reach_bins(const DutShape& shape) {
+  BinList out;
+  std::vector<std::string>& plan = out.plan;
+  const char* const depths[] = {"off", "never", "less", "equal", "lequal", "greater", "notequal",
+                                "gequal", "always"};
+  std::vector<std::string> states;
+  for (const char* d : depths)
+    for (int w = 0; w < 2; ++w)
+      for (unsigned b = 0; b < kBlendModes; ++b)
+        for (int m = 0; m < 16; ++m)
+          for (int p = 0; p < 2; ++p)
+            states.push_back(fmt::format("depth={},write={},blend={},mask={:x},peel={}", d, w,
+                                         to_string(BlendMode(b)), m, p));
+  for (const std::string& s : states) plan.push_back("pass_state[" + s + "]");
+  for (int f = 0; f < 8; ++f)
+    for (const char* r : kRelations)
+      plan.push_back(fmt::format("depth_compare[func={},relation={}]", to_string(DepthFunc(f)), r));
+  plan.push_back("peel_compare.behind");
+  plan.push_back("peel_compare.not_behind");
+  for (const char* r : kRelations)
+    for (const char* sum : {"Fits", "Overflows"})
+      plan.push_back(fmt::format("coverage_composite[relation={},sum={}]", r, sum));
+  for (unsigned b = 0; b < 5; ++b)
+    for (const char* v : {"Zero", "Full"})
+      plan.push_back(fmt::format("blend_result[blend={},value={}]", to_string(BlendMode(b)), v));
+  for (const char* b : {"frag_depth.zero", "frag_depth.max", "frag_alpha.zero", "frag_alpha.full",
+                        "frag_coverage.zero", "frag_coverage.one", "frag_coverage.full"})
+    plan.push_back(b);
+  for (const char* r : kBands)
+    for (const char* c : kColBands) plan.push_back(fmt::format("frag_in_tile[row={},col={}]", r, c));
+  for (const char* c : kChannels) plan.push_back(fmt::format("accum_saturation[channel={}]", c));
+  for (int d = 1; d <= shape.window + 1; ++d)
+    for (const char* between : {"Calm", "Gap"})
+      plan.push_back(fmt::format("same_pixel[distance={},between={}]", d, between));
+  for (const char* o : kOrigins) plan.push_back(fmt::format("tile_origin.{}", o));
+  plan.push_back("store.first_beat");
+  plan.push_back("store.last_beat");
+  for (const char* p : kPlaneNames)
+    for (const char* op : {"LoadFirstBeat", "LoadLastBeat"})
+      plan.push_back(fmt::format("plane_ops[plane={},op={}]", p, op));
+  plan.push_back("frame_ops.state_write");
+
+  std::vector<std::string>& goals = out.goals;
+  for (const std::string& s : states)
+    for (const char* r : kRelations)
+      goals.push_back(fmt::format("goal.state_relation[{},relation={}]", s, r));
+  for (int bits : kGoalDepthBits)
+    for (int bit = 0; bit < bits; ++bit)
+      for (const char* o : {"below", "above"})
+        goals.push_back(fmt::format("goal.depth_bit[bits={},bit={},order={}]", bits, bit, o));
+  for (int bits : kGoalDepthBits)
+    for (const char* v : {"zero", "one", "max_minus_1", "max"})
+      goals.push_back(fmt::format("goal.depth_value[bits={},value={}]", bits, v));
+  for (const char* c : kChannels)
+    for (uint8_t v : kChannelCorners)
+      for (int m = 0; m < 16; ++m)
+        goals.push_back(fmt::format("goal.channel_value[channel={},value={},mask={:x}]", c, v, m));
+  for (int n : kGoalSamples)
+    for (const char* k : {"0", "1", "n_minus_1", "n"})
+      for (const char* c : {"0", "1", "n_minus_1", "n"})
+        goals.push_back(fmt::format("goal.coverage_value[samples={},frag={},stored={}]", n, k, c));
+  for (int tile : kGoalTiles) {
+    for (const char* r : kBands)
+      for (const char* c : kColBands)
+        goals.push_back(fmt::format("goal.tile_position[tile={},row={},col={}]", tile, r, c));
+    for (const char* o : kOrigins) goals.push_back(fmt::format("goal.tile_origin[tile={},origin={}]", tile, o));
+    goals.push_back(fmt::format("goal.frame_fills[tile={}]", tile));
+  }
+  for (BlendMode b : kRmwBlends)
+    for (int d = 1; d <= kRunDistances; ++d)
+      goals.push_back(fmt::format("goal.same_pixel_rmw[blend={},distance={}]", to_string(b), d));
+  return out;
+}
+
+}  // namespace zb::conformance
+
+namespace zb::conformance {
+
+std::vector<BinCounts> tests_reach(const std::vector<TestSpec>& tests, const DutShape& shape) {
+  std::vector<BinCounts> out(tests.size());
+  const int workers = std::min<int>(resolve_threads(0), int(tests.size()));
+  std::atomic<size_t> next{0};
+  run_workers(workers, [&](int) {
+    for (size_t i = next++; i < tests.size(); i = next++) out[i] = trace_reach(test_trace(tests[i]), shape);
+  });
+  return out;
+}
+
+std::vector<std::pair<size_t, size_t>> rank_tests(const std::vector<BinCounts>& reach,
+                                                  const std::vector<std::string>& bins) {
+  const std::set<std::string> wanted(bins.begin(), bins.end());
+  std::set<std::string> hit;
+  std::vector<std::pair<size_t, size_t>> order;
+  std::vector<bool> taken(reach.size(), false);
+  for (;;) {
+    size_t best = reach.size(), best_new = 0;
+    for (size_t i = 0; i < reach.size(); ++i) {
+      if (taken[i]) continue;
+      size_t fresh = 0;
+      for (const auto& [bin, count] : reach[i]) fresh += wanted.count(bin) && !hit.count(bin);
+      if (fresh > best_new) best = i, best_new = fresh;
+    }
+    if (best == reach.size()) return order;
+    taken[best] = true;
+    for (const auto& [bin, count] : reach[best])
+      if (wanted.count(bin)) hit.insert(bin);
+    order.emplace_back(best, best_new);
+  }
+}
+
+}  // namespace zb::conformance
