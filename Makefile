@@ -7,7 +7,7 @@ ZBLEND     := $(BUILD)/zblend
 RUN_SIZE   ?= --width 640 --height 480
 
 .DEFAULT_GOAL := build
-.PHONY: help setup full-tree build run test test-release test-asan test-tsan regress conformance kit kit-install mutate bench pgo bench-verilator profile-rtl synth formal systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
+.PHONY: help setup full-tree build run test test-release test-asan test-tsan regress conformance conformance-mutate kit kit-install mutate bench pgo bench-verilator profile-rtl synth formal systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
 
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | awk -F'\t' '{printf "%-16s %s\n", $$1, $$2}'
@@ -118,14 +118,20 @@ mutate: build ## Mutation score: zb_rop's 1200 Yosys mutants, smoke group, equiv
 # Verilator and Icarus Verilog, then under Verilator with the golden model in lock-step through
 # DPI-C. make test runs a CI-sized part of it (ctest -L conformance).
 CONF_DIR ?= out/conformance
+CONF_SEED ?= 1
 CONF_COVER = tb/cov/zb_rop_cov.sv tb/cov/zb_rop_cov_bind.sv tb/cov/zb_conf_cov_writer.sv \
              tb/cov/zb_conf_cov_writer.cpp
 CONF_LIBS = $(BUILD)/conformance/libzbgolden_dpi.a $(BUILD)/conformance/libzbgolden_c.a \
             $(BUILD)/cmodel/libzbmodel.a
 
-conformance: build ## The conformance suite on zb_rop under Verilator, Icarus and DPI-C lock-step, and its reach on the coverage plan: out/conformance/
+conformance: build ## The conformance suite on zb_rop under Verilator, Icarus and DPI-C lock-step, its reach (golden and zb_rop's covers, cross-checked), the second DUT and its defect catalogue: out/conformance/
 	$(ZBLEND) conformance export $(CONF_DIR)/suite
+	@# The reach on the golden model, as the coverage run below drives the suite (gaps 20 %,
+	@# zb_rop's resident tiles): printed, and written per test for the cross-check.
+	$(ZBLEND) conformance reach --gap 20 --schedule resident --json $(CONF_DIR)/reach.json
 	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim verilator --out $(CONF_DIR)/verilator -j $(JOBS)
+	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim verilator --out $(CONF_DIR)/verilator-pass \
+	  -j $(JOBS) --schedule pass --timing random --seed 2
 	@# Icarus runs about 7000 cycles a second: zb_rop with a 32x32 tile (its HX8K size) there,
 	@# so that a pass's tile load and store cost a quarter of the default's.
 	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim icarus --out $(CONF_DIR)/icarus -j $(JOBS) \
@@ -133,10 +139,35 @@ conformance: build ## The conformance suite on zb_rop under Verilator, Icarus an
 	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim verilator --out $(CONF_DIR)/lockstep \
 	  -j $(JOBS) --gap 20 --lockstep --golden-libs $(CONF_LIBS)
 	@# The suite's reach on the functional coverage plan (docs/coverage.md): zb_rop with the
-	@# plan's covers bound in, each test's counts written at its end: reach.html.
+	@# plan's covers bound in, each test's counts written at its end: reach.html; at least 99 %
+	@# of the kit-reachable bins, and the golden reach equal to the covers' test by test.
 	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim verilator --out $(CONF_DIR)/coverage \
-	  -j $(JOBS) --verilator-arg=--coverage-user --extra-sources $(CONF_COVER)
-	python3 scripts/coverage_report.py $(CONF_DIR)/coverage --conformance
+	  -j $(JOBS) --gap 20 --verilator-arg=--coverage-user --extra-sources $(CONF_COVER)
+	python3 scripts/coverage_report.py $(CONF_DIR)/coverage --conformance \
+	  --kit-bins conformance/kit_bins.json --reach $(CONF_DIR)/reach.json --min-reach 99
+	@# The second DUT, full and pipelined, on both simulators; the seeded random tier on both DUTs.
+	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim verilator --out $(CONF_DIR)/ref-full \
+	  -j $(JOBS) --profile conformance/ref/profile_full.json
+	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim icarus --out $(CONF_DIR)/ref-full-icarus \
+	  -j $(JOBS) --profile conformance/ref/profile_full.json
+	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim verilator --out $(CONF_DIR)/ref-pipe \
+	  -j $(JOBS) --profile conformance/ref/profile_pipe.json
+	$(ZBLEND) conformance export --seed $(CONF_SEED) $(CONF_DIR)/seed
+	python3 scripts/conformance.py --suite $(CONF_DIR)/seed --sim verilator --out $(CONF_DIR)/seed-rop \
+	  -j $(JOBS) --timing random --seed $(CONF_SEED)
+	python3 scripts/conformance.py --suite $(CONF_DIR)/seed --sim icarus --out $(CONF_DIR)/seed-ref \
+	  -j $(JOBS) --profile conformance/ref/profile_full.json --timing random --seed $(CONF_SEED)
+	@# The defect catalogue, each defect against the whole suite: the tests that catch it.
+	tests/conformance/test_ref_defects.sh $(CONF_DIR)/suite $(CONF_DIR)/defects $(ZBLEND) -j $(JOBS)
+
+# The suite's strength on zb_rop's mutants (docs/conformance.md "The suite's strength"): the
+# mutation tool's 1200 mutants, each against the suite's d24-c16 tests until one kills it (about an
+# hour on 2 cores). CONF_MUTATE_ARGS passes options (--resume, --mutants every:10).
+CONF_MUTATE_ARGS ?=
+conformance-mutate: build ## The conformance suite as a test group on zb_rop's mutants: out/conformance/mutate/
+	$(ZBLEND) conformance export $(CONF_DIR)/suite
+	python3 scripts/conformance_mutate.py --build $(BUILD) --suite $(CONF_DIR)/suite \
+	  --out $(CONF_DIR)/mutate -j $(JOBS) $(CONF_MUTATE_ARGS)
 
 # The conformance kit alone, as an outside team installs it (docs/conformance.md "The kit"): its
 # own tree without Verilator (ZBLEND_KIT_ONLY; fails if anything Verilated is built), laid out

@@ -55,7 +55,7 @@ bool is_rmw(BlendMode b) {
 // The testbench's fragment order (zb_conf_tb): pass by pass, each tile a pass touches in raster
 // order, its fragments in stream order; with the resident schedule, the passes up to the next
 // frame operation tile by tile instead, each pass's fragments for the tile in turn. Calls
-// visit(pass, fragment index, tile x0, y0, first of its pass on the tile).
+// visit(pass, fragment index, tile x0, y0, first of its pass on the tile, first since the load).
 template <class Visit>
 void tb_order(const Trace& t, const DutShape& shape, Visit visit) {
   auto touches = [&](size_t p, int x0, int y0) {
@@ -63,14 +63,15 @@ void tb_order(const Trace& t, const DutShape& shape, Visit visit) {
       if (f.x >= x0 && f.x < x0 + shape.tile_w && f.y >= y0 && f.y < y0 + shape.tile_h) return true;
     return false;
   };
-  auto run = [&](size_t p, int x0, int y0) {
+  auto run = [&](size_t p, int x0, int y0, bool& loaded) {
     bool first = true;
     const std::vector<Fragment>& frags = t.passes[p].fragments;
     for (size_t i = 0; i < frags.size(); ++i) {
       const Fragment& f = frags[i];
       if (f.x < x0 || f.x >= x0 + shape.tile_w || f.y < y0 || f.y >= y0 + shape.tile_h) continue;
-      visit(p, i, x0, y0, first);
+      visit(p, i, x0, y0, first, !loaded);
       first = false;
+      loaded = true;
     }
   };
   for (size_t begin = 0; begin < t.passes.size();) {
@@ -78,9 +79,11 @@ void tb_order(const Trace& t, const DutShape& shape, Visit visit) {
     if (shape.resident)
       while (end < t.passes.size() && t.passes[end].frame_ops.empty()) ++end;
     for (int y0 = 0; y0 < t.height; y0 += shape.tile_h)
-      for (int x0 = 0; x0 < t.width; x0 += shape.tile_w)
+      for (int x0 = 0; x0 < t.width; x0 += shape.tile_w) {
+        bool loaded = false;
         for (size_t p = begin; p < end; ++p)
-          if (touches(p, x0, y0)) run(p, x0, y0);
+          if (touches(p, x0, y0)) run(p, x0, y0, loaded);
+      }
     begin = end;
   }
 }
@@ -207,7 +210,8 @@ BinCounts trace_reach(const Trace& t, const DutShape& shape) {
         const char* kc = corner(f.coverage);
         const char* sc = corner(before.coverage);
         if (kc && sc)
-          ++bins[fmt::format("goal.coverage_value[samples={},frag={},stored={}]", n, kc, sc)];
+          ++bins[fmt::format("goal.coverage_value[samples={},frag={},stored={},relation={}]", n, kc,
+                             sc, kRelations[rel])];
       }
       for (int tile : kGoalTiles) {
         ++bins[fmt::format("goal.tile_position[tile={},row={},col={}]", tile,
@@ -241,18 +245,20 @@ BinCounts trace_reach(const Trace& t, const DutShape& shape) {
   std::vector<int> hist;                   // tile-local addresses, newest last
   std::vector<bool> hist_gap;              // a gap since that entry was taken
   std::vector<BlendMode> hist_blend;
-  tb_order(t, shape, [&](size_t p, size_t i, int x0, int y0, bool first) {
+  tb_order(t, shape, [&](size_t p, size_t i, int x0, int y0, bool first, bool load) {
     const Fragment& f = t.passes[p].fragments[i];
     const RopState& s = t.passes[p].state;
     if (first) {
       ++bins["frame_ops.state_write"];
+      hist_gap.assign(hist_gap.size(), true);  // the wait for idle_o, the state write
+    }
+    if (load) {
       ++bins["store.first_beat"];
       ++bins["store.last_beat"];
       for (const char* plane : kPlaneNames) {
         ++bins[fmt::format("plane_ops[plane={},op=LoadFirstBeat]", plane)];
         ++bins[fmt::format("plane_ops[plane={},op=LoadLastBeat]", plane)];
       }
-      hist_gap.assign(hist_gap.size(), true);
     }
     bool gap = false;
     while (shape.gap_pct > 0 && chance() < shape.gap_pct) gap = true;
@@ -343,7 +349,9 @@ BinList reach_bins(const DutShape& shape) {
   for (int n : kGoalSamples)
     for (const char* k : {"0", "1", "n_minus_1", "n"})
       for (const char* c : {"0", "1", "n_minus_1", "n"})
-        goals.push_back(fmt::format("goal.coverage_value[samples={},frag={},stored={}]", n, k, c));
+        for (const char* r : kRelations)
+          goals.push_back(fmt::format("goal.coverage_value[samples={},frag={},stored={},relation={}]",
+                                      n, k, c, r));
   for (int tile : kGoalTiles) {
     for (const char* r : kBands)
       for (const char* c : kColBands)

@@ -6,7 +6,8 @@
 //    conformance/kit_bins.json lists with the plan's other bins and why those stay out of reach;
 //  - the suite's own goals ("goal.*"): each pass state meeting each depth relation where the
 //    blend, the mask and the depth write show in the planes, depth pairs differing in one bit at
-//    each width, colour and alpha corners under each mask, coverage corners, tile positions at
+//    each width, colour and alpha corners under each mask, coverage corners at each depth relation (the
+//    coverage blend's cases), tile positions at
 //    each tile size, same-pixel runs at distances 1 to 16 under every read-modify-write blend.
 #pragma once
 

@@ -35,15 +35,17 @@ constexpr int kRandomPasses = 24;
 constexpr size_t kRandomFragments = 150;  // per pass: many passes, many states
 
 // The quick tier: the greedy ranking of the reach (`zblend conformance reach --rank`, at zb_rop's
-// 64 x 64 tile): the fewest tests that keep every bin the whole suite reaches. CTest
-// conformance_quick_tier holds this list to the ranking.
+// 64 x 64 tile): the fewest tests that keep every bin the whole suite reaches, there and at 16 x 16
+// (CTest conformance_export_reproducible holds both).
 const char* const kQuick[] = {
     "states-alpha", "states-replace", "states-additive", "states-alpha-peel",
-    "states-replace-peel", "states-additive-peel", "states-under", "states-coverage-peel",
+    "states-replace-peel", "states-additive-peel", "states-coverage-peel", "states-under",
     "states-under-peel", "states-accumulate-peel", "states-coverage", "states-accumulate",
-    "values-replace", "random-c4", "depth-bits-d32", "depth-bits", "depth-bits-d16", "tiles",
-    "cad-coverage-aa", "cad-depth-peel-2", "particles-facing-additive", "random", "hazard",
-    "values-accumulate", "sphere-torus-wboit", "values-additive"};
+    "values-replace", "random-c4", "depth-bits-d32", "depth-bits", "values-coverage",
+    "depth-bits-d16", "tiles", "values-coverage-c4", "cad-coverage-aa", "cad-depth-peel-2",
+    "particles-facing-additive", "hazard", "glass-torus-back-front", "values-accumulate",
+    "glass-torus-facing-additive", "particles-back-front", "sphere-torus-wboit",
+    "values-additive"};
 
 // A plan that came with suite version 3 (its accumulate passes and resolve read and write the
 // accumulation plane): its tests follow the base config's earlier ones, so no name moves.

@@ -398,7 +398,8 @@ def write_results(a, results, counts, suite_version):
     root = ET.Element("testsuites")
     suite = ET.SubElement(root, "testsuite", name=f"zblend-conformance-{a.sim}",
                           tests=str(len(results)), failures=str(counts["fail"]),
-                          errors=str(counts["timeout"]), skipped=str(counts["not_supported"]),
+                          errors=str(counts["timeout"]),
+                          skipped=str(counts["not_supported"] + counts["not_run"]),
                           time=f"{sum(r['seconds'] for r in results):.3f}")
     for r in results:
         case = ET.SubElement(suite, "testcase", classname=f"conformance.{r['config']}",
@@ -409,11 +410,35 @@ def write_results(a, results, counts, suite_version):
             ET.SubElement(case, "error", message=r["message"]).text = r["message"]
         elif r["verdict"] == "not_supported":
             ET.SubElement(case, "skipped", message="NOT SUPPORTED: " + r["message"])
+        elif r["verdict"] == "not_run":
+            ET.SubElement(case, "skipped", message=r["message"])
     ET.ElementTree(root).write(os.path.join(a.out, "junit.xml"), encoding="utf-8",
                                xml_declaration=True)
 
 
-VERDICTS = ("pass", "fail", "not_supported", "timeout")
+VERDICTS = ("pass", "fail", "not_supported", "timeout", "not_run")
+
+
+def check_tests(a, names, no_accum):
+    """zblend conformance check on the named tests: {name: (pass | FAIL | skip, why)}."""
+    if not names:
+        return {}
+    sub = ["check"] if os.path.basename(a.zblend).startswith("zblend-conformance") else \
+        ["conformance", "check"]
+    check = [a.zblend] + sub + [a.suite, a.out, "--tests", ",".join(names)]
+    if no_accum:
+        check.append("--no-accum")
+    p = subprocess.run(check, stdout=subprocess.PIPE, text=True)
+    sys.stdout.write(p.stdout)
+    if p.returncode == 2:
+        sys.exit(2)
+    out = {}
+    for ln in p.stdout.splitlines():
+        word, _, rest = ln.partition(" ")
+        if word in ("pass", "FAIL", "skip"):
+            name, _, why = rest.strip().partition(":")
+            out[name] = (word, why.strip())
+    return out
 
 
 def main():
@@ -462,6 +487,9 @@ def main():
                     help="resident: the passes between frame operations on resident tiles (the "
                          "default when the profile has resident_tile); pass: tile by tile, "
                          "pass by pass")
+    ap.add_argument("--first-fail", action="store_true",
+                    help="run the tests one at a time in suite order and stop at the first that "
+                         "fails (a defect hunt; the rest are reported not_run)")
     ap.add_argument("--quick", action="store_true",
                     help="only the suite's quick tier (the manifest's \"tier\": \"quick\")")
     ap.add_argument("--lockstep", action="store_true",
@@ -549,40 +577,41 @@ def main():
         run_cmd = build(a.sim, configs[name], a, os.path.join(a.out, "build", kind))
         runs += [(t, run_cmd) for t in group]
 
-    sims = {}
+    sims, checked = {}, {}
     no_accum = False
     t0 = time.time()
-    with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as pool:
-        futures = [pool.submit(run_test, t, c, a) for t, c in runs]
-        for i, f in enumerate(concurrent.futures.as_completed(futures), 1):
-            name, finished, secs, first, hint, lacks_accum = f.result()
-            no_accum |= lacks_accum
-            sims[name] = (finished, secs, first, hint)
-            verdict = ("skipped (no accumulation plane)" if hint == "not_supported" else
-                       "ok" if finished else "TIMEOUT" if hint == "timeout" else "FAILED")
-            print(f"conformance: [{i}/{len(runs)}] {verdict} {name} {secs:.1f} s"
-                  + (f": {first}" if first else ""), file=sys.stderr, flush=True)
+
+    def report(i, result):
+        nonlocal no_accum
+        name, finished, secs, first, hint, lacks_accum = result
+        no_accum |= lacks_accum
+        sims[name] = (finished, secs, first, hint)
+        verdict = ("skipped (no accumulation plane)" if hint == "not_supported" else
+                   "ok" if finished else "TIMEOUT" if hint == "timeout" else "FAILED")
+        print(f"conformance: [{i}/{len(runs)}] {verdict} {name} {secs:.1f} s"
+              + (f": {first}" if first else ""), file=sys.stderr, flush=True)
+        return finished, name
+
+    if a.first_fail:
+        # In suite order, one at a time, each checked as it ends: the first failure stops the run.
+        for i, (t, c) in enumerate(runs, 1):
+            finished, name = report(i, run_test(t, c, a))
+            if finished:
+                checked.update(check_tests(a, [name], no_accum))
+            if not finished or checked.get(name, ("",))[0] == "FAIL":
+                break
+    else:
+        with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as pool:
+            futures = [pool.submit(run_test, t, c, a) for t, c in runs]
+            for i, f in enumerate(concurrent.futures.as_completed(futures), 1):
+                report(i, f.result())
     unfinished = sorted(n for n, (done, *_rest) in sims.items() if not done)
-    print(f"conformance: {len(runs)} simulations on {a.sim} in {time.time() - t0:.0f} s, "
+    print(f"conformance: {len(sims)} simulations on {a.sim} in {time.time() - t0:.0f} s, "
           f"{len(unfinished)} failed to finish", file=sys.stderr)
 
-    checked = {}
-    finished = [t["name"] for t in to_run if sims[t["name"]][0]]
-    if finished:
-        sub = ["check"] if os.path.basename(a.zblend).startswith("zblend-conformance") else \
-            ["conformance", "check"]
-        check = [a.zblend] + sub + [a.suite, a.out, "--tests", ",".join(finished)]
-        if no_accum:
-            check.append("--no-accum")
-        p = subprocess.run(check, stdout=subprocess.PIPE, text=True)
-        sys.stdout.write(p.stdout)
-        if p.returncode == 2:
-            sys.exit(2)
-        for ln in p.stdout.splitlines():
-            word, _, rest = ln.partition(" ")
-            if word in ("pass", "FAIL", "skip"):
-                name, _, why = rest.strip().partition(":")
-                checked[name] = (word, why.strip())
+    finished = [t["name"] for t in to_run if sims.get(t["name"], (False,))[0]]
+    if not a.first_fail:
+        checked.update(check_tests(a, finished, no_accum))
 
     results = []
     for t in tests:
@@ -591,6 +620,8 @@ def main():
         if name in unsupported:
             r.update(verdict="not_supported",
                      message=f"needs {', '.join(unsupported[name])}, not in the profile")
+        elif name not in sims:
+            r.update(verdict="not_run", message="--first-fail: an earlier test failed")
         else:
             done, secs, first, hint = sims[name]
             r["seconds"] = round(secs, 3)
@@ -618,7 +649,9 @@ def main():
             f"{k} ({v} tests)" for k, v in sorted(needs.items(), key=lambda kv: -kv[1])),
             file=sys.stderr)
     print(f"conformance: {counts['pass']} pass, {counts['fail']} fail, {counts['not_supported']} "
-          f"not supported, {counts['timeout']} timeout, of {len(results)} tests "
+          f"not supported, {counts['timeout']} timeout, "
+          + (f"{counts['not_run']} not run (--first-fail), " if counts["not_run"] else "")
+          + f"of {len(results)} tests "
           f"(results: {os.path.join(a.out, 'results.json')}, junit.xml)", file=sys.stderr)
     bad = [r["name"] for r in results if r["verdict"] in ("fail", "timeout")]
     if bad and not a.waves:

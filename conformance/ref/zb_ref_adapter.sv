@@ -1,8 +1,8 @@
 // zb_conf_adapter around zb_ref_rop (conformance/ref/README.md): the conformance testbench's DUT
 // interface (docs/conformance.md "The adapter") on the reference DUT. zb_ref_rop already speaks
 // pixels a clock, so the adapter only narrows and widens: depth and peel to DEPTH_BITS, the
-// coverage count to its width. It has no accumulation plane (planes_o = 5'b01111) and no
-// retire port (the valids tied low).
+// coverage count to its width. Without ZB_REF_FULL it has no accumulation plane
+// (planes_o = 5'b01111); with it, all five. No retire port (the valids tied low).
 // The testbench instantiates the adapter as zb_conf_adapter whatever its file is called.
 /* verilator lint_off DECLFILENAME */
 module zb_conf_adapter #(
@@ -10,13 +10,13 @@ module zb_conf_adapter #(
   parameter int COV_SAMPLES = 16,
   parameter int TILE_W      = 16,
   parameter int TILE_H      = 16,
-  // The testbench passes every adapter these: BEAT is zb_rop's tile-port width (this DUT takes
-  // a pixel a clock), WEIGHT_BITS the accumulate blend's (not in the profile).
+  // The testbench passes every adapter BEAT, zb_rop's tile-port width (this DUT takes a pixel
+  // a clock).
   /* verilator lint_off UNUSEDPARAM */
   parameter int BEAT        = 8,
-  parameter int WEIGHT_BITS = 4,
   /* verilator lint_on UNUSEDPARAM */
-  parameter int ACC_BITS    = 16,  // the accumulation word's widths: only its ports' widths
+  parameter int WEIGHT_BITS = 4,   // the accumulate blend's widths (used with ZB_REF_FULL)
+  parameter int ACC_BITS    = 16,
   parameter int REV_BITS    = 8
 ) (
   input  logic        clk_i,
@@ -72,7 +72,10 @@ module zb_conf_adapter #(
     .DEPTH_BITS (DEPTH_BITS),
     .COV_SAMPLES(COV_SAMPLES),
     .TILE_W     (TILE_W),
-    .TILE_H     (TILE_H)
+    .TILE_H     (TILE_H),
+    .ACC_BITS   (ACC_BITS),
+    .REV_BITS   (REV_BITS),
+    .WEIGHT_BITS(WEIGHT_BITS)
   ) u_ref (
     .clk_i,
     .rst_ni,
@@ -86,26 +89,32 @@ module zb_conf_adapter #(
     .ld_depth_i  (ld_depth_i[D-1:0]),
     .ld_cov_i    (ld_cov_i[CovW-1:0]),
     .ld_peel_i   (ld_peel_i[D-1:0]),
+    .ld_acc_i,
     .frag_valid_i,
     .frag_ready_o,
     .frag_x_i,
     .frag_y_i,
     .frag_z_i    (frag_z_i[D-1:0]),
     .frag_rgba_i,
+    .frag_cov_i  (frag_cov_i[CovW-1:0]),
     .idle_o,
     .st_start_i,
     .st_valid_o,
     .st_color_o,
     .st_depth_o  (st_depth),
     .st_cov_o    (st_cov),
-    .st_peel_o   (st_peel)
+    .st_peel_o   (st_peel),
+    .st_acc_o
   );
 
   assign st_depth_o = 32'(st_depth);
   assign st_peel_o  = 32'(st_peel);
   assign st_cov_o   = 8'(st_cov);
-  assign st_acc_o   = '0;
+`ifdef ZB_REF_FULL
+  assign planes_o   = 5'b11111;  // colour, depth, coverage, peel, accumulation
+`else
   assign planes_o   = 5'b01111;  // colour, depth, coverage, peel: no accumulation plane
+`endif
 
   // No retire port: the testbench runs it without --lockstep.
   assign ret_d_valid_o = 1'b0;
@@ -121,10 +130,9 @@ module zb_conf_adapter #(
   assign ret_awe_o     = 1'b0;
   assign ret_wacc_o    = '0;
 
-  // Inputs the subset never reads (the accumulation word, the fragment's coverage: no
-  // accumulate or coverage blend) and the ports' bits above DEPTH_BITS and the coverage width.
-  // Lint leaves signals named unused* alone (Verilator's default -unused-regexp).
+  // The ports' bits above DEPTH_BITS and the coverage width. Lint leaves signals named unused*
+  // alone (Verilator's default -unused-regexp).
   logic unused_inputs;
-  assign unused_inputs = ^{ld_acc_i, frag_cov_i, ld_depth_i, ld_peel_i, ld_cov_i, frag_z_i};
+  assign unused_inputs = ^{frag_cov_i, ld_depth_i, ld_peel_i, ld_cov_i, frag_z_i};
 
 endmodule

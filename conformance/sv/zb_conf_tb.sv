@@ -333,7 +333,7 @@ module zb_conf_tb #(
 
   // The cycles a host waits before its next event: none when tight, one when loose, 0 to 3
   // drawn from the gaps' generator when random.
-  task automatic slack();
+  task automatic slack;
     int unsigned k;
     k = timing == 0 ? 0 : timing == 1 ? 1 : 32'(chance_pct()) % 4;
     repeat (k) @(negedge clk);
@@ -515,7 +515,7 @@ module zb_conf_tb #(
   int unsigned group_first [MAX_GROUP];
   int unsigned group_last  [MAX_GROUP];
   task automatic run_resident(input int unsigned passes);
-    bit touched;
+    bit touched, loaded;
     for (int unsigned y0 = 0; y0 < height; y0 += TILE_H) begin
       for (int unsigned x0 = 0; x0 < width; x0 += TILE_W) begin
         touched = 1'b0;
@@ -525,21 +525,23 @@ module zb_conf_tb #(
           n_tiles++;
           tile_x0 = 16'(x0);
           tile_y0 = 16'(y0);
-          write_state(13'(group_state[0]));
-          load_tile(x0, y0);
+          loaded = 1'b0;
           for (int unsigned g = 0; g < passes; g++) begin
-            if (!pass_touches(group_first[g], group_last[g], x0, y0)) continue;
-            if (g > 0) write_state(13'(group_state[g]));
+            if (pass_touches(group_first[g], group_last[g], x0, y0)) begin
+              write_state(13'(group_state[g]));
+              if (!loaded) load_tile(x0, y0);
+              loaded = 1'b1;
 `ifdef ZB_CONF_LOCKSTEP
-            u_sb.begin_pass(13'(group_state[g]));
-            u_sb.begin_tile(x0, y0);
+              u_sb.begin_pass(13'(group_state[g]));
+              u_sb.begin_tile(x0, y0);
 `endif
-            stream_tile(group_first[g], group_last[g], x0, y0);
-            wait_idle();
+              stream_tile(group_first[g], group_last[g], x0, y0);
+              wait_idle();
 `ifdef ZB_CONF_LOCKSTEP
-            u_sb.end_tile();
-            u_sb.end_pass();
+              u_sb.end_tile();
+              u_sb.end_pass();
 `endif
+            end
           end
           store_tile(x0, y0);
         end

@@ -12,32 +12,63 @@
 # blend mode); random-core (and -d16, -d32), the random stream kept to replace and alpha without
 # the peel test, is. So d24-c16: 10 scenes x 6 methods + random-core = 61 of 124; d24-c4
 # (hazard-c4, random-c4): 0 of 2; d16-c16 and d32-c16: 3 scenes x {three-pass, hidden-line} +
-# random-core = 7 of 13 each. The suite: 75 supported, 77 NOT SUPPORTED; its cad-* tests: 6 + 2 +
-# 2 = 10 of 20, and random-core.
+# random-core = 7 of 13 each. Suite version 6's generated tests add, for this profile, the
+# replace and alpha blends' states (states-replace, states-alpha; the -peel ones need the peel
+# test), depth-bits at the three widths, values-replace and values-alpha, tiles and
+# same-pixel-alpha (its second pass replaces under lequal): 9 of the 28 generated. The suite: 84
+# supported, 96 NOT SUPPORTED; its cad-* tests: 6 + 2 + 2 = 10 of 20, and random-core.
 if(NOT ZBLEND_SANITIZE)
   set(ref ${CMAKE_CURRENT_SOURCE_DIR}/test_ref_dut.sh)
   set(zb $<TARGET_FILE:zblend>)
   set(w ${CMAKE_CURRENT_BINARY_DIR})
+  # Lint: both variants (zb_ref_rop with and without ZB_REF_FULL, zb_ref_pipe), with no defect,
+  # with every defect of conformance/ref/defects.json at once and with each alone (about 13 s).
   add_test(NAME conformance_ref_lint COMMAND ${ref} lint)
-  # The whole suite: Verilator builds three configurations (3 to 5 s each) and runs the 75 tests
+  # The whole suite: Verilator builds three configurations (3 to 5 s each) and runs the 84 tests
   # in a few seconds.
   add_test(NAME conformance_ref_verilator
-           COMMAND ${ref} pass verilator ${suite} ${w}/ref-verilator ${zb} "" 75 77)
+           COMMAND ${ref} pass verilator ${suite} ${w}/ref-verilator ${zb} "" 84 96)
   # Icarus: every cad test, at the three depth widths the supported tests come in, and the
   # random stream of every depth function.
   add_test(NAME conformance_ref_icarus
            COMMAND ${ref} pass icarus ${suite} ${w}/ref-icarus ${zb} "cad-*,random-core" 11 10)
   # Another stall seed, most cycles stalled (160 of 256) and gaps in the fragment stream.
   add_test(NAME conformance_ref_random_stalls
-           COMMAND ${ref} stalls verilator ${suite} ${w}/ref-stalls ${zb} "" 75 77 7 160 25
+           COMMAND ${ref} stalls verilator ${suite} ${w}/ref-stalls ${zb} "" 84 96 7 160 25
                    cad-three-pass)
   add_test(NAME conformance_ref_bug
            COMMAND ${ref} bug verilator ${suite} ${w}/ref-bug ${zb} cad-opaque,cad-three-pass
                    cad-three-pass)
   add_test(NAME conformance_ref_hang
            COMMAND ${ref} hang icarus ${suite} ${w}/ref-hang ${zb} cad-opaque)
+  # The full datapath (ZB_REF_FULL) and the pipelined variant, clean: the quick tier on Icarus
+  # (every test: 30), the whole suite on Verilator for the pipeline (its 97 of 180: replace,
+  # alpha, additive, every depth function, depth write, colour mask).
+  set(refdir ${PROJECT_SOURCE_DIR}/conformance/ref)
+  add_test(NAME conformance_ref_full
+           COMMAND ${ref} pass icarus ${suite} ${w}/ref-full ${zb} "" 30 0 --quick
+                   --profile ${refdir}/profile_full.json)
+  add_test(NAME conformance_ref_pipe
+           COMMAND ${ref} pass verilator ${suite} ${w}/ref-pipe ${zb} "" 97 83
+                   --profile ${refdir}/profile_pipe.json)
+  # The defect catalogue (conformance/ref/defects.json): each defect against the quick tier on
+  # Icarus, stopping at the first failing test, which the line names; the quick tier, chosen by the
+  # reach alone, catches all of them. make conformance runs each against the whole suite.
+  file(READ ${refdir}/defects.json catalogue)
+  string(JSON ndefects LENGTH ${catalogue})
+  math(EXPR last "${ndefects} - 1")
+  set(defect_tests)
+  foreach(i RANGE ${last})
+    string(JSON name GET ${catalogue} ${i} name)
+    add_test(NAME conformance_defect_${name}
+             COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test_ref_defects.sh ${suite} ${w}/defects ${zb}
+                     --sim icarus --quick --first-fail -j 1 -- ${name})
+    list(APPEND defect_tests conformance_defect_${name})
+  endforeach()
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${refdir}/defects.json)
   set_tests_properties(conformance_ref_verilator conformance_ref_icarus
                        conformance_ref_random_stalls conformance_ref_bug conformance_ref_hang
+                       conformance_ref_full conformance_ref_pipe ${defect_tests}
                        PROPERTIES LABELS conformance FIXTURES_REQUIRED conformance_suite)
   set_tests_properties(conformance_ref_lint PROPERTIES LABELS conformance)
   set_tests_properties(conformance_ref_hang PROPERTIES TIMEOUT 120)

@@ -3,7 +3,9 @@
 # signature_sha256 as sha256sum computes it over its five expect files, each file's own hash, each
 # test's features as its stream's PASS words say (decoded here apart), each stream's count line
 # and manifest counts as the files hold them, --quick a subset of the full suite, file for file,
-# and an export over an earlier suite replacing it with nothing left beside it.
+# whose reach is the full suite's (`conformance reach`), each test's tier, the seeded random tier
+# (the same bytes for a seed, other streams for another), and an export over an earlier suite
+# replacing it with nothing left beside it.
 set -u
 zblend=$(realpath "${1:?usage: test_export.sh PATH/TO/zblend}")
 tmp=$(mktemp -d)
@@ -20,7 +22,7 @@ cat "$tmp/a.log"
 python3 - "$tmp/a/manifest.json" >"$tmp/tests" <<'PY' || bad "manifest unreadable"
 import hashlib, json, os, sys
 m = json.load(open(sys.argv[1]))
-assert m["suite"] == "zblend-conformance" and m["version"] == 5
+assert m["suite"] == "zblend-conformance" and m["version"] == 6
 configs = {c["name"] for c in m["configs"]}
 BLEND = ["replace", "alpha", "additive", "coverage", "under", "accumulate"]
 FUNC = ["never", "less", "equal", "lequal", "greater", "notequal", "gequal", "always"]
@@ -56,8 +58,12 @@ suite = os.path.dirname(sys.argv[1])
 assert all((c["acc_bits"], c["rev_bits"], c["weight_bits"]) == (16, 8, 4) for c in m["configs"])
 for t in m["tests"]:
     assert t["config"] in configs, t["name"]
-    # Only a resolve wboit needs the accumulation plane: the wboit scene tests and random-wboit.
-    assert t["needs_accum"] == (t.get("method") == "wboit" or t["name"] == "random-wboit"), t["name"]
+    # Only a resolve wboit needs the accumulation plane: the wboit scene tests, random-wboit and
+    # the generated accumulation tests (which end with one).
+    assert t["needs_accum"] == (t.get("method") == "wboit" or t["name"] in (
+        "random-wboit", "values-accumulate", "same-pixel-accumulate")), t["name"]
+    assert t["tier"] in ("quick", "full"), t["name"]
+    assert (t["kind"] == "generated") == ("family" in t), t["name"]
     d = os.path.join(suite, t["name"])
     assert sorted(t["files"]) == sorted(os.listdir(d)), t["name"]
     for name, sha in t["files"].items():
@@ -100,7 +106,25 @@ for d in "$tmp/q"/*/; do
   quick=$((quick + 1))
   diff -r "$d" "$tmp/a/$name" >/dev/null || bad "quick test $name differs from the full suite's"
 done
-[[ $quick -ge 5 && $quick -le 10 ]] || bad "--quick has $quick tests, want a handful"
+[[ $quick -ge 10 && $quick -le 40 ]] || bad "--quick has $quick tests, want 10 to 40"
+[[ $quick -eq $(grep -c '"tier": "quick"' "$tmp/a/manifest.json") ]] ||
+  bad "--quick's $quick tests are not the manifest's quick tier"
+# The quick tier keeps every bin the whole suite reaches, at zb_rop's tile and at 16 x 16.
+for tile in 64x64 16x16; do
+  full=$("$zblend" conformance reach --tile $tile | grep -E '^(plan bins|suite goals)')
+  fast=$("$zblend" conformance reach --tile $tile --quick | grep -E '^(plan bins|suite goals)')
+  [[ -n $full && $full == "$fast" ]] || bad "tile $tile: the quick tier reaches [$fast], the suite [$full]"
+done
+
+# The seeded random tier: a seed's bytes again for the same seed, other streams for another.
+"$zblend" conformance export --seed 7 "$tmp/s7" >/dev/null || bad "export --seed 7"
+"$zblend" conformance export --seed 7 "$tmp/s7b" >/dev/null || bad "export --seed 7 again"
+"$zblend" conformance export --seed 8 "$tmp/s8" >/dev/null || bad "export --seed 8"
+diff -r "$tmp/s7" "$tmp/s7b" >/dev/null || bad "two exports of seed 7 differ"
+[[ -f $tmp/s7/random-s7/stream.hex && -f $tmp/s8/random-s8/stream.hex ]] || bad "no random-s7 or random-s8"
+cmp -s "$tmp/s7/random-s7/stream.hex" "$tmp/s8/random-s8/stream.hex" && bad "seeds 7 and 8 wrote the same stream"
+grep -q '"tier": "random"' "$tmp/s7/manifest.json" || bad "the seeded tests are not tier random"
+rm -rf "$tmp/s7" "$tmp/s7b" "$tmp/s8"
 
 # Over an earlier suite: replaced, the same bytes, no temporary sibling left.
 echo stale >"$tmp/b/hazard/stale.txt"

@@ -34,8 +34,15 @@ s=$out/suite
 truncate -s -40 "$s/hazard/stream.hex"
 bad_input "corrupt suite: .*hazard/stream.hex: SHA-256" --suite "$s" --out "$out/run"
 cp "$suite/hazard/stream.hex" "$s/hazard/stream.hex"
+sed -i 's/"version": 6/"version": 5/' "$s/manifest.json"
+bad_input "suite version 5 is refused: it has no tiers and none of the tests generated" --suite "$s" --out "$out/run"
 sed -i 's/"version": 5/"version": 4/' "$s/manifest.json"
 bad_input "suite version 4 is refused: it has no per-test features" --suite "$s" --out "$out/run"
+echo '{"features": ["*"], "sources": ["x.sv"], "resident_tile": "yes"}' >"$out/resident.json"
+touch "$out/x.sv"
+bad_input "resident_tile: 'yes' is not true or false" --suite "$suite" --out "$out/run" --profile "$out/resident.json"
+echo '{"features": ["*"], "sources": ["x.sv"]}' >"$out/flat.json"
+bad_input "--schedule resident: the profile .* does not say" --suite "$suite" --out "$out/run" --profile "$out/flat.json" --schedule resident
 bad_input "feature 'blend.alfa' .* names no feature" --suite "$suite" --out "$out/run" --features blend.alfa
 echo '{"features": ["*"], "source": []}' >"$out/typo.json"
 bad_input "unknown key 'source'" --suite "$suite" --out "$out/run" --profile "$out/typo.json"

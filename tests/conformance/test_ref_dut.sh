@@ -4,7 +4,9 @@
 # through scripts/conformance.py with its profile, on a suite exported by the conformance_export
 # fixture. Verdicts are read from OUT/results.json.
 #   test_ref_dut.sh lint
-#       Verilator -Wall lint and Icarus elaboration of the DUT and its adapter, clean
+#       Verilator -Wall lint and Icarus elaboration of both variants (zb_ref_rop, with and without
+#       ZB_REF_FULL, and zb_ref_pipe) and their adapters, clean, with no defect, with every defect
+#       of conformance/ref/defects.json at once and with each alone
 #   test_ref_dut.sh pass SIM SUITE OUT ZBLEND TESTS NPASS NNOT [ARGS...]
 #       exit 0; NPASS tests pass, NNOT are NOT SUPPORTED (not run), none fails or times out
 #   test_ref_dut.sh stalls SIM SUITE OUT ZBLEND TESTS NPASS NNOT SEED RATE GAP TEST
@@ -29,20 +31,43 @@ if [[ $mode == lint ]]; then
   # The build's configurations and the corners: 8 and 32 bits, one sample, a tile of 15 pixels.
   sets=("" "-GDEPTH_BITS=16 -GCOV_SAMPLES=4" "-GDEPTH_BITS=32 -GTILE_W=32 -GTILE_H=8"
         "-GDEPTH_BITS=8 -GCOV_SAMPLES=1 -GTILE_W=3 -GTILE_H=5")
-  for defs in "" "ZB_REF_INJECT_BLEND_BUG ZB_REF_INJECT_HANG"; do
-    for set in "${sets[@]}"; do
-      vdefs=() idefs=() iparams=()
-      for d in $defs; do vdefs+=("+define+$d"); idefs+=("-D$d"); done
-      for p in $set; do iparams+=("-Pzb_conf_adapter.${p#-G}"); done
-      # shellcheck disable=SC2086  # $set: one option a word
-      verilator --lint-only -Wall --top-module zb_conf_adapter $set "${vdefs[@]}" \
-        "$ref/zb_ref_rop.sv" "$ref/zb_ref_adapter.sv" || fail "verilator lint [$set] [$defs]"
-      msg=$(iverilog -g2012 -Wall -o /dev/null -s zb_conf_adapter "${iparams[@]}" "${idefs[@]}" \
-        "$ref/zb_ref_rop.sv" "$ref/zb_ref_adapter.sv" 2>&1) || fail "iverilog [$set] [$defs]: $msg"
-      [[ -z $msg ]] || fail "iverilog warns [$set] [$defs]: $msg"
-    done
+  # The defect catalogue's defines of one variant (conformance/ref/defects.json).
+  defects() {
+    python3 -c 'import json,sys
+print(" ".join(d["define"] for d in json.load(open(sys.argv[1])) if d["variant"] == sys.argv[2]))' \
+      "$ref/defects.json" "$1"
+  }
+  ref_defects=$(defects ref) pipe_defects=$(defects pipe)
+  [[ -n $ref_defects && -n $pipe_defects ]] || fail "no defects of a variant in $ref/defects.json"
+  # Per variant: its sources, then its define sets, one a line: none, the full datapath, the kit's
+  # own defects, every defect at once, and each defect alone.
+  inject="ZB_REF_INJECT_BLEND_BUG ZB_REF_INJECT_HANG"
+  ref_sets=$(printf '%s\n' "" "ZB_REF_FULL" "$inject" "$inject $ref_defects" \
+    "ZB_REF_FULL $inject $ref_defects"; for d in $ref_defects; do echo "ZB_REF_FULL $d"; done)
+  pipe_sets=$(printf '%s\n' "" "$pipe_defects"; for d in $pipe_defects; do echo "$d"; done)
+  n=0
+  for variant in ref pipe; do
+    if [[ $variant == ref ]]; then
+      srcs=("$ref/zb_ref_rop.sv" "$ref/zb_ref_adapter.sv") defsets=$ref_sets
+    else
+      srcs=("$ref/zb_ref_pipe.sv" "$ref/zb_ref_pipe_adapter.sv") defsets=$pipe_sets
+    fi
+    while IFS= read -r defs; do
+      for set in "${sets[@]}"; do
+        vdefs=() idefs=() iparams=()
+        for d in $defs; do vdefs+=("+define+$d"); idefs+=("-D$d"); done
+        for p in $set; do iparams+=("-Pzb_conf_adapter.${p#-G}"); done
+        # shellcheck disable=SC2086  # $set: one option a word
+        verilator --lint-only -Wall --top-module zb_conf_adapter $set "${vdefs[@]}" "${srcs[@]}" ||
+          fail "verilator lint $variant [$set] [$defs]"
+        msg=$(iverilog -g2012 -Wall -o /dev/null -s zb_conf_adapter "${iparams[@]}" "${idefs[@]}" \
+          "${srcs[@]}" 2>&1) || fail "iverilog $variant [$set] [$defs]: $msg"
+        [[ -z $msg ]] || fail "iverilog warns $variant [$set] [$defs]: $msg"
+        n=$((n + 1))
+      done
+    done <<<"$defsets"
   done
-  echo "ok: zb_ref_rop and its adapter lint clean (Verilator -Wall) and elaborate silently (Icarus), ${#sets[@]} parameter sets, with and without the defects"
+  echo "ok: zb_ref_rop (subset and ZB_REF_FULL) and zb_ref_pipe with their adapters lint clean (Verilator -Wall) and elaborate silently (Icarus): ${#sets[@]} parameter sets, with no defect, every defect at once and each alone ($n builds each)"
   exit 0
 fi
 

@@ -14,7 +14,8 @@
 #       lock-step run at the first wrong accumulation write
 #   test_sv_tb.sh no-accum SIM SUITE OUT ZBLEND TESTS [ARGS...]   the adapter without the
 #       accumulation plane: the tests that need it are skipped (not passed), the others match
-# ARGS go to conformance.py (e.g. --param TILE_W=32, --lockstep --golden-libs ...).
+# ARGS go to conformance.py (e.g. --param TILE_W=32, --lockstep --golden-libs ...). TESTS "@quick"
+# is the suite's quick tier (conformance.py --quick; its names from the manifest).
 set -u
 mode=${1:?usage: test_sv_tb.sh MODE SIM SUITE OUT ZBLEND TESTS [ARGS...] (MODE: see above)}
 sim=$2 suite=$3 out=$4 zblend=$5 tests=$6
@@ -34,8 +35,15 @@ stopped_at_first_wrong_write() {
   grep -q "^zb_conf:   golden $write" "$log" || fail "the golden value is not reported ($write)"
   grep -q "^zb_conf: done:" "$log" && fail "the run went on past the first wrong write"
 }
+sel=(--tests "$tests")
+if [[ $tests == @quick ]]; then
+  sel=(--quick)
+  tests=$(python3 -c 'import json, sys
+print(",".join(t["name"] for t in json.load(open(sys.argv[1]))["tests"] if t["tier"] == "quick"))' \
+    "$suite/manifest.json") || fail "no manifest in $suite"
+fi
 run() {
-  python3 "$root/scripts/conformance.py" --suite "$suite" --sim "$sim" --out "$out" --tests "$tests" \
+  python3 "$root/scripts/conformance.py" --suite "$suite" --sim "$sim" --out "$out" "${sel[@]}" \
     --zblend "$zblend" -j 2 "$@" >"$out/log.txt" 2>&1
 }
 
