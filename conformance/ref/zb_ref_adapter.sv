@@ -1,8 +1,9 @@
-// zb_conf_adapter around zb_ref_rop (conformance/ref/README.md): the conformance testbench's DUT
-// interface (docs/conformance.md "The adapter") on the reference DUT. zb_ref_rop already speaks
-// pixels a clock, so the adapter only narrows and widens: depth and peel to DEPTH_BITS, the
-// coverage count to its width. Without ZB_REF_FULL it has no accumulation plane
-// (planes_o = 5'b01111); with it, all five. No retire port (the valids tied low).
+// zb_conf_adapter around zb_ref_rop, or with ZB_REF_PIPE around its pipelined variant zb_ref_pipe
+// (conformance/ref/README.md): the conformance testbench's DUT interface (docs/conformance.md
+// "The adapter") on the reference DUT. Both speak pixels a clock, so the adapter only narrows and
+// widens: depth and peel to DEPTH_BITS, the coverage count to its width. Only zb_ref_rop with
+// ZB_REF_FULL has the accumulation plane (planes_o = 5'b11111); the others 5'b01111. No retire
+// port (the valids tied low).
 // The testbench instantiates the adapter as zb_conf_adapter whatever its file is called.
 /* verilator lint_off DECLFILENAME */
 module zb_conf_adapter #(
@@ -10,13 +11,13 @@ module zb_conf_adapter #(
   parameter int COV_SAMPLES = 16,
   parameter int TILE_W      = 16,
   parameter int TILE_H      = 16,
-  // The testbench passes every adapter BEAT, zb_rop's tile-port width (this DUT takes a pixel
-  // a clock).
+  // The testbench passes every adapter these: BEAT is zb_rop's tile-port width (this DUT takes
+  // a pixel a clock), WEIGHT_BITS the accumulate blend's (unused by zb_ref_pipe).
   /* verilator lint_off UNUSEDPARAM */
   parameter int BEAT        = 8,
+  parameter int WEIGHT_BITS = 4,
   /* verilator lint_on UNUSEDPARAM */
-  parameter int WEIGHT_BITS = 4,   // the accumulate blend's widths (used with ZB_REF_FULL)
-  parameter int ACC_BITS    = 16,
+  parameter int ACC_BITS    = 16,  // the accumulation word's widths (zb_ref_rop with ZB_REF_FULL)
   parameter int REV_BITS    = 8
 ) (
   input  logic        clk_i,
@@ -68,6 +69,44 @@ module zb_conf_adapter #(
   logic [D-1:0]    st_depth, st_peel;
   logic [CovW-1:0] st_cov;
 
+`ifdef ZB_REF_PIPE
+  // No accumulate or coverage blend: the accumulation word and the fragment's coverage unread.
+  zb_ref_pipe #(
+    .DEPTH_BITS (DEPTH_BITS),
+    .COV_SAMPLES(COV_SAMPLES),
+    .TILE_W     (TILE_W),
+    .TILE_H     (TILE_H)
+  ) u_pipe (
+    .clk_i,
+    .rst_ni,
+    .state_we_i,
+    .state_i,
+    .tile_x0_i,
+    .tile_y0_i,
+    .ld_valid_i,
+    .ld_ready_o,
+    .ld_color_i,
+    .ld_depth_i  (ld_depth_i[D-1:0]),
+    .ld_cov_i    (ld_cov_i[CovW-1:0]),
+    .ld_peel_i   (ld_peel_i[D-1:0]),
+    .frag_valid_i,
+    .frag_ready_o,
+    .frag_x_i,
+    .frag_y_i,
+    .frag_z_i    (frag_z_i[D-1:0]),
+    .frag_rgba_i,
+    .idle_o,
+    .st_start_i,
+    .st_valid_o,
+    .st_color_o,
+    .st_depth_o  (st_depth),
+    .st_cov_o    (st_cov),
+    .st_peel_o   (st_peel)
+  );
+  assign st_acc_o = '0;
+  logic unused_pipe;
+  assign unused_pipe = ^ld_acc_i;
+`else
   zb_ref_rop #(
     .DEPTH_BITS (DEPTH_BITS),
     .COV_SAMPLES(COV_SAMPLES),
@@ -106,11 +145,14 @@ module zb_conf_adapter #(
     .st_peel_o   (st_peel),
     .st_acc_o
   );
+`endif
 
   assign st_depth_o = 32'(st_depth);
   assign st_peel_o  = 32'(st_peel);
   assign st_cov_o   = 8'(st_cov);
-`ifdef ZB_REF_FULL
+`ifdef ZB_REF_PIPE
+  assign planes_o   = 5'b01111;  // colour, depth, coverage, peel: no accumulation plane
+`elsif ZB_REF_FULL
   assign planes_o   = 5'b11111;  // colour, depth, coverage, peel, accumulation
 `else
   assign planes_o   = 5'b01111;  // colour, depth, coverage, peel: no accumulation plane

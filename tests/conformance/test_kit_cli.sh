@@ -42,7 +42,7 @@ echo '{"features": ["*"], "sources": ["x.sv"], "resident_tile": "yes"}' >"$out/r
 touch "$out/x.sv"
 bad_input "resident_tile: 'yes' is not true or false" --suite "$suite" --out "$out/run" --profile "$out/resident.json"
 echo '{"features": ["*"], "sources": ["x.sv"]}' >"$out/flat.json"
-bad_input "--schedule resident: the profile .* does not say" --suite "$suite" --out "$out/run" --profile "$out/flat.json" --schedule resident
+bad_input "schedule resident: the profile .* does not say" --suite "$suite" --out "$out/run" --profile "$out/flat.json" --schedule resident
 bad_input "feature 'blend.alfa' .* names no feature" --suite "$suite" --out "$out/run" --features blend.alfa
 echo '{"features": ["*"], "source": []}' >"$out/typo.json"
 bad_input "unknown key 'source'" --suite "$suite" --out "$out/run" --profile "$out/typo.json"
@@ -80,8 +80,8 @@ d = sys.argv[1]
 r = json.load(open(f"{d}/results.json"))
 v = {t["name"]: t["verdict"] for t in r["tests"]}
 assert v == {"cad-opaque": "pass", "cad-three-pass": "pass", "cad-coverage-aa": "not_supported"}, v
-assert r["counts"] == {"pass": 2, "fail": 0, "not_supported": 1, "timeout": 0}, r["counts"]
-assert r["suite_version"] == 5
+assert r["counts"] == {"pass": 2, "fail": 0, "not_supported": 1, "timeout": 0, "not_run": 0}, r["counts"]
+assert r["suite_version"] == 6 and r["timing"] == "tight" and r["schedule"] == "resident"
 s = ET.parse(f"{d}/junit.xml").getroot().find("testsuite")
 assert (s.get("tests"), s.get("failures"), s.get("skipped")) == ("3", "0", "1"), s.attrib
 sk = [c.get("name") for c in s.iter("testcase") if c.find("skipped") is not None]
@@ -109,6 +109,22 @@ broken BROKEN_X "zb_conf: PROTOCOL: cycle [0-9]*: frag_ready_o: is X or Z" "frag
 broken BROKEN_HANG "zb_conf: WATCHDOG: 300 cycles without progress at cycle [0-9]*, pass 0, tile (0, 0), fragment 0 of the pass: waiting for frag_ready_o (frag_valid_i=1 frag_ready_o=0" \
   "WATCHDOG: 300 cycles without progress"
 
+# --first-fail: one test at a time in suite order, the run stops at the first that fails, the rest
+# reported not_run (results.json and junit.xml's skipped).
+o=$out/first-fail
+conf --suite "$suite" --out "$o" --profile "$duts/broken.profile.json" \
+  --tests 'cad-opaque,cad-three-pass,cad-hidden-line' --define BROKEN_X --first-fail >"$o.txt" 2>&1
+[[ $? == 1 ]] || fail "--first-fail: exit, want 1"
+python3 - "$o" <<'PY' || fail "--first-fail: results"
+import json, sys, xml.etree.ElementTree as ET
+r = json.load(open(f"{sys.argv[1]}/results.json"))
+v = [t["verdict"] for t in r["tests"]]
+assert v == ["fail", "not_run", "not_run"], v
+assert ET.parse(f"{sys.argv[1]}/junit.xml").getroot().find("testsuite").get("skipped") == "2"
+PY
+[[ -e $o/cad-three-pass/sim.log ]] && fail "--first-fail: a test after the failure ran"
+grep -q "2 not run (--first-fail)" "$o.txt" || fail "--first-fail: the summary does not count the tests not run"
+
 # --timeout: the hang with the watchdog out of reach is killed, its output kept.
 o=$out/timeout
 conf --suite "$suite" --out "$o" --profile "$duts/broken.profile.json" --tests cad-opaque \
@@ -120,4 +136,4 @@ grep -q "^zb_conf: planes: color depth coverage peel$" "$o/cad-opaque/sim.log" |
 grep -q "^conformance: killed after 3.0 s (--timeout)" "$o/cad-opaque/sim.log" || fail "--timeout: sim.log does not say it was killed"
 python3 -c "import json,sys; assert json.load(open(sys.argv[1]))['counts']['timeout'] == 1" "$o/results.json" ||
   fail "--timeout: results.json"
-echo "ok: bad suites and profiles refused; selection, NOT SUPPORTED, results.json, junit.xml; protocol, X, watchdog and timeout caught"
+echo "ok: bad suites and profiles refused; selection, NOT SUPPORTED, results.json, junit.xml; protocol, X, watchdog and timeout caught; --first-fail stops at the first failure"

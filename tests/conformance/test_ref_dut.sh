@@ -44,13 +44,13 @@ print(" ".join(d["define"] for d in json.load(open(sys.argv[1])) if d["variant"]
   inject="ZB_REF_INJECT_BLEND_BUG ZB_REF_INJECT_HANG"
   ref_sets=$(printf '%s\n' "" "ZB_REF_FULL" "$inject" "$inject $ref_defects" \
     "ZB_REF_FULL $inject $ref_defects"; for d in $ref_defects; do echo "ZB_REF_FULL $d"; done)
-  pipe_sets=$(printf '%s\n' "" "$pipe_defects"; for d in $pipe_defects; do echo "$d"; done)
+  pipe_sets=$(printf '%s\n' "ZB_REF_PIPE" "ZB_REF_PIPE $pipe_defects"; for d in $pipe_defects; do echo "ZB_REF_PIPE $d"; done)
   n=0
   for variant in ref pipe; do
     if [[ $variant == ref ]]; then
       srcs=("$ref/zb_ref_rop.sv" "$ref/zb_ref_adapter.sv") defsets=$ref_sets
     else
-      srcs=("$ref/zb_ref_pipe.sv" "$ref/zb_ref_pipe_adapter.sv") defsets=$pipe_sets
+      srcs=("$ref/zb_ref_pipe.sv" "$ref/zb_ref_adapter.sv") defsets=$pipe_sets
     fi
     while IFS= read -r defs; do
       for set in "${sets[@]}"; do
