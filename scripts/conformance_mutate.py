@@ -94,6 +94,12 @@ def proven_equivalent(path):
     return out
 
 
+def instance_of(description):
+    """The zb_rop instance a mutation's cell sits in ("u_depth.u_cov_plane"), or "zb_rop"."""
+    m = re.search(r"-cell \$flatten((?:\\u_[a-z_0-9]+\.)+)", description)
+    return m.group(1).replace("\\", "").rstrip(".") if m else "zb_rop"
+
+
 def build_testbench(a):
     """conformance.py on mutant 0 over the configuration's tests: builds the testbench around
     the netlist and proves the unmutated netlist passes; returns (binary, {test: seconds})."""
@@ -203,7 +209,11 @@ def main():
     summary = {"mutants": len(chosen), "proven_equivalent": len(chosen) - len(scored),
                "scored": len(scored), "killed": len(killed), "survivors": len(survivors),
                "score_pct": round(pct, 2), "target_pct": a.target, "config": CONFIG,
-               "tests": len(order), "kills_by_test": kills}
+               "tests": len(order), "kills_by_test": kills,
+               "survivors_by_instance": {}}
+    for r in survivors:
+        place = instance_of(descriptions[r["mutant"] - 1])
+        summary["survivors_by_instance"][place] = summary["survivors_by_instance"].get(place, 0) + 1
     with open(os.path.join(a.out, "summary.json"), "w") as f:
         json.dump(summary, f, indent=1)
     with open(os.path.join(a.out, "mutants.csv"), "w", newline="") as f:
@@ -219,9 +229,16 @@ def main():
                 "## Kills by first test\n\n")
         for t, k in sorted(kills.items(), key=lambda kv: -kv[1]):
             f.write(f"- {t}: {k}\n")
-        f.write(f"\n## Survivors ({len(survivors)})\n\n")
+        by_place = {}
         for r in survivors:
-            f.write(f"- mutant {r['mutant']}: `{descriptions[r['mutant'] - 1]}`\n")
+            by_place.setdefault(instance_of(descriptions[r["mutant"] - 1]), []).append(r)
+        f.write(f"\n## Survivors ({len(survivors)}) by where they sit\n\n")
+        for place, rs in sorted(by_place.items(), key=lambda kv: -len(kv[1])):
+            f.write(f"- {place}: {len(rs)}\n")
+        for place, rs in sorted(by_place.items(), key=lambda kv: -len(kv[1])):
+            f.write(f"\n### {place} ({len(rs)})\n\n")
+            for r in rs:
+                f.write(f"- mutant {r['mutant']}: `{descriptions[r['mutant'] - 1]}`\n")
     print(f"conformance-mutate: {len(killed)} of {len(scored)} mutants not proven equivalent "
           f"killed: {pct:.1f} % (target {a.target} %); {len(survivors)} survivors; report "
           f"{os.path.join(a.out, 'report.md')}")
