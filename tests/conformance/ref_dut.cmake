@@ -66,6 +66,10 @@ if(NOT ZBLEND_SANITIZE)
     list(APPEND defect_tests conformance_defect_${name})
   endforeach()
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${refdir}/defects.json)
+  # The seeded random tier exported and run on the subset, with random timing from the seed.
+  add_test(NAME conformance_seeded_tier
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test_seeded_tier.sh ${zb} 11)
+  set_tests_properties(conformance_seeded_tier PROPERTIES LABELS conformance)
   set_tests_properties(conformance_ref_verilator conformance_ref_icarus
                        conformance_ref_random_stalls conformance_ref_bug conformance_ref_hang
                        conformance_ref_full conformance_ref_pipe ${defect_tests}
