@@ -26,7 +26,7 @@ namespace {
 namespace cf = zb::conformance;
 
 struct ReachOptions {
-  std::string tile = "64x64", json, tests;
+  std::string tile = "64x64", json;
   int window = 8, gap = 0;
   uint32_t gap_seed = 1;
   bool quick = false, rank = false, holes = false;

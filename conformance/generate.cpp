@@ -60,8 +60,17 @@ Rgba8 random_color(tb::Rng& r) {
           uint8_t(r.below(256))};
 }
 
-[[noreturn]] void no_draw(const std::string& what) {
-  throw std::logic_error("conformance generator: no visible draw for " + what);
+// Calls draw() until it takes what it drew (returns true), at most kDraws times: whether it did.
+template <class Draw>
+bool draw_until(Draw draw) {
+  for (int k = 0; k < kDraws; ++k)
+    if (draw()) return true;
+  return false;
+}
+
+Rgba8 with_channel(Rgba8 c, int ch, uint8_t v) {
+  (ch == 0 ? c.r : ch == 1 ? c.g : ch == 2 ? c.b : c.a) = v;
+  return c;
 }
 
 int rows_for(int pixels, int w) { return (pixels + w - 1) / w; }
@@ -72,10 +81,8 @@ Trace states_trace(BlendMode blend, bool peel, int depth_bits, int samples) {
   tb::Rng r(kStatesSeed * 16 + uint64_t(blend) * 2 + (peel ? 1 : 0));
   const uint32_t zmax = depth_max(depth_bits);
   std::vector<RopState> states;
-  for (int d = 0; d < 9; ++d)
-    for (int w = 0; w < 2; ++w)
-      for (int m = 0; m < 16; ++m)
-        states.push_back(state_of(d > 0, DepthFunc(d > 0 ? d - 1 : 1), w != 0, blend, uint8_t(m), peel));
+  for (const RopState& s : pass_states())
+    if (s.blend == blend && s.peel_test == peel) states.push_back(s);
   constexpr int kW = 48;
   const int pixels = int(states.size()) * 3;
   Trace t = frame(kW, rows_for(pixels, kW), depth_bits, samples);
@@ -85,8 +92,7 @@ Trace states_trace(BlendMode blend, bool peel, int depth_bits, int samples) {
     TracePass pass{"state-" + std::to_string(si), {}, states[si], {}};
     for (int rel = 0; rel < 3; ++rel) {
       const int i = int(si) * 3 + rel;
-      bool found = false;
-      for (int draw = 0; draw < kDraws && !found; ++draw) {
+      const bool found = draw_until([&] {
         StoredPixel sp;
         sp.depth = zmax / 4 + r.below(zmax / 2);
         sp.color = random_color(r);
@@ -94,15 +100,17 @@ Trace states_trace(BlendMode blend, bool peel, int depth_bits, int samples) {
         const uint32_t delta = 1 + r.below(4096);
         Fragment f = frag(i, kW, rel == 0 ? sp.depth - delta : rel == 1 ? sp.depth : sp.depth + delta,
                           random_color(r), uint8_t(1 + r.below(uint32_t(std::max(1, samples - 1)))));
-        if (!visible(states[si], f, sp, depth_bits, samples, t.wboit)) continue;
-        found = true;
+        if (!visible(states[si], f, sp, depth_bits, samples, t.wboit)) return false;
         // The peel plane: behind it (z > peel) where less or greater, not where equal.
         const uint32_t p = rel == 1 ? sp.depth + r.below(4096) : f.z - 1 - r.below(delta);
         peels.push_back(frag(i, kW, p, kClear));
         stored.push_back(frag(i, kW, sp.depth, sp.color));
         pass.fragments.push_back(f);
-      }
-      if (!found) no_draw("state " + std::to_string(si));
+        return true;
+      });
+      if (!found)
+        throw std::logic_error("conformance generator: no visible draw for state " +
+                               std::to_string(si));
     }
     passes.push_back(std::move(pass));
   }
@@ -176,24 +184,21 @@ Trace values_trace(BlendMode blend, int depth_bits, int samples) {
                    state_of(false, DepthFunc::kLess, false, blend, uint8_t(m), false), {}};
     for (int ch = 0; ch < 4; ++ch)
       for (uint8_t v : corners) {
-        bool found = false;
-        for (int draw = 0; draw < kDraws && !found; ++draw) {
-          Rgba8 c = random_color(r);
-          (ch == 0 ? c.r : ch == 1 ? c.g : ch == 2 ? c.b : c.a) = v;
+        const bool found = draw_until([&] {
+          const Rgba8 c = with_channel(random_color(r), ch, v);
           StoredPixel sp;
           sp.depth = z;
           sp.color = random_color(r);
-          Fragment f = frag(i, kW, z, c);
-          if (!visible(pass.state, f, sp, depth_bits, samples, t.wboit)) continue;
-          found = true;
+          const Fragment f = frag(i, kW, z, c);
+          if (!visible(pass.state, f, sp, depth_bits, samples, t.wboit)) return false;
           stored.push_back(frag(i, kW, z, sp.color));
           pass.fragments.push_back(f);
-        }
+          return true;
+        });
         // A corner no draw can show in this blend (alpha 0 leaves an alpha blend's pixel as it
         // was): the fragment is still sent, onto a pixel drawn at random.
         if (!found) {
-          Rgba8 c = random_color(r);
-          (ch == 0 ? c.r : ch == 1 ? c.g : ch == 2 ? c.b : c.a) = v;
+          const Rgba8 c = with_channel(random_color(r), ch, v);
           stored.push_back(frag(i, kW, z, random_color(r)));
           pass.fragments.push_back(frag(i, kW, z, c));
         }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <deque>
 #include <set>
 
 #include <fmt/core.h>
@@ -58,17 +59,19 @@ bool is_rmw(BlendMode b) {
 // visit(pass, fragment index, tile x0, y0, first of its pass on the tile, first since the load).
 template <class Visit>
 void tb_order(const Trace& t, const DutShape& shape, Visit visit) {
+  auto in_tile = [&](const Fragment& f, int x0, int y0) {
+    return f.x >= x0 && f.x < x0 + shape.tile_w && f.y >= y0 && f.y < y0 + shape.tile_h;
+  };
   auto touches = [&](size_t p, int x0, int y0) {
-    for (const Fragment& f : t.passes[p].fragments)
-      if (f.x >= x0 && f.x < x0 + shape.tile_w && f.y >= y0 && f.y < y0 + shape.tile_h) return true;
-    return false;
+    const std::vector<Fragment>& frags = t.passes[p].fragments;
+    return std::any_of(frags.begin(), frags.end(),
+                       [&](const Fragment& f) { return in_tile(f, x0, y0); });
   };
   auto run = [&](size_t p, int x0, int y0, bool& loaded) {
     bool first = true;
     const std::vector<Fragment>& frags = t.passes[p].fragments;
     for (size_t i = 0; i < frags.size(); ++i) {
-      const Fragment& f = frags[i];
-      if (f.x < x0 || f.x >= x0 + shape.tile_w || f.y < y0 || f.y >= y0 + shape.tile_h) continue;
+      if (!in_tile(frags[i], x0, y0)) continue;
       visit(p, i, x0, y0, first, !loaded);
       first = false;
       loaded = true;
@@ -90,7 +93,24 @@ void tb_order(const Trace& t, const DutShape& shape, Visit visit) {
 
 }  // namespace
 
-std::string pass_state_bin(const RopState& s) { return "pass_state[" + state_dims(s) + "]"; }
+std::vector<RopState> pass_states() {
+  std::vector<RopState> out;
+  for (int d = 0; d < 9; ++d)  // off, then each function
+    for (int w = 0; w < 2; ++w)
+      for (unsigned b = 0; b < kBlendModes; ++b)
+        for (int m = 0; m < 16; ++m)
+          for (int p = 0; p < 2; ++p) {
+            RopState s;
+            s.depth_test = d > 0;
+            s.depth_func = d > 0 ? DepthFunc(d - 1) : DepthFunc::kLess;
+            s.depth_write = w != 0;
+            s.blend = BlendMode(b);
+            s.color_mask = uint8_t(m);
+            s.peel_test = p != 0;
+            out.push_back(s);
+          }
+  return out;
+}
 
 bool visible(const RopState& state, const Fragment& f, const StoredPixel& p, int depth_bits,
              int samples, const WboitFormat& wboit) {
@@ -167,20 +187,17 @@ BinCounts trace_reach(const Trace& t, const DutShape& shape) {
       if (f.coverage == 0) ++bins["frag_coverage.zero"];
       if (f.coverage == 1) ++bins["frag_coverage.one"];
       if (f.coverage == n) ++bins["frag_coverage.full"];
-      if (w.accum) {
-        const uint32_t weight = f.color.a * wboit_depth_weight(f.z, t.depth_bits, t.wboit.weight_bits);
-        const int shift = wboit_term_shift(t.wboit);
-        const uint8_t pm[4] = {mul_unorm8(f.color.r, f.color.a), mul_unorm8(f.color.g, f.color.a),
-                               mul_unorm8(f.color.b, f.color.a), f.color.a};
-        for (int c = 0; c < 4; ++c)
-          if ((uint64_t(before.acc[size_t(c)]) + wboit_term(pm[c], weight, shift)) >>
-              t.wboit.acc_bits)
+      if (w.accum) {  // a channel's sum carrying out of its acc_bits (zb_rop's acc_sat)
+        const std::array<uint32_t, 4> terms = wboit_terms(f.z, f.color, t.depth_bits, t.wboit);
+        for (size_t c = 0; c < 4; ++c)
+          if ((uint64_t(before.acc[c]) + terms[c]) >> t.wboit.acc_bits)
             ++bins[fmt::format("accum_saturation[channel={}]", kChannels[c])];
       }
 
       // The suite's goals.
+      const bool shows = visible(s, f, before, t.depth_bits, n, t.wboit);
       const bool peel_shows = !s.peel_test || cov_mode || (rel == 1 ? f.z <= peel : f.z > peel);
-      if (peel_shows && visible(s, f, before, t.depth_bits, n, t.wboit))
+      if (peel_shows && shows)
         ++bins[fmt::format("goal.state_relation[{},relation={}]", dims, kRelations[rel])];
       const bool ordering = s.depth_test && !cov_mode && s.depth_func != DepthFunc::kNever &&
                             s.depth_func != DepthFunc::kAlways;
@@ -196,8 +213,7 @@ BinCounts trace_reach(const Trace& t, const DutShape& shape) {
         ++bins[fmt::format("goal.depth_value[bits={},value={}]", t.depth_bits, corner_name(f.z, zmax))];
       const bool passes = (!s.depth_test || depth_test(s.depth_func, f.z, before.depth)) &&
                           (!s.peel_test || f.z > peel);
-      if (!cov_mode && s.blend != BlendMode::kAccumulate && passes &&
-          visible(s, f, before, t.depth_bits, n, t.wboit))
+      if (!cov_mode && s.blend != BlendMode::kAccumulate && passes && shows)
         for (int k = 0; k < 4; ++k)
           for (uint8_t v : kChannelCorners)
             if (channel(f.color, k) == v)
@@ -242,15 +258,21 @@ BinCounts trace_reach(const Trace& t, const DutShape& shape) {
     rng ^= rng << 5;
     return int(rng % 100u);
   };
-  std::vector<int> hist;                   // tile-local addresses, newest last
-  std::vector<bool> hist_gap;              // a gap since that entry was taken
-  std::vector<BlendMode> hist_blend;
+  struct Taken {
+    int addr;         // tile-local, as a DUT's addresses are
+    bool gap;         // a gap since it was taken
+    BlendMode blend;
+  };
+  std::deque<Taken> hist;  // the last fragments taken, newest last
+  auto gap_all = [&] {
+    for (Taken& k : hist) k.gap = true;
+  };
   tb_order(t, shape, [&](size_t p, size_t i, int x0, int y0, bool first, bool load) {
     const Fragment& f = t.passes[p].fragments[i];
     const RopState& s = t.passes[p].state;
     if (first) {
       ++bins["frame_ops.state_write"];
-      hist_gap.assign(hist_gap.size(), true);  // the wait for idle_o, the state write
+      gap_all();  // the wait for idle_o, the state write
     }
     if (load) {
       ++bins["store.first_beat"];
@@ -262,29 +284,23 @@ BinCounts trace_reach(const Trace& t, const DutShape& shape) {
     }
     bool gap = false;
     while (shape.gap_pct > 0 && chance() < shape.gap_pct) gap = true;
-    if (gap) hist_gap.assign(hist_gap.size(), true);
+    if (gap) gap_all();
     const int lx = f.x - x0, ly = f.y - y0;
     const int addr = ly * shape.tile_w + lx;
     ++bins[fmt::format("frag_in_tile[row={},col={}]", kBands[band(ly, shape.tile_h)],
                        kColBands[band(lx, shape.tile_w)])];
     ++bins[fmt::format("tile_origin.{}", kOrigins[origin_kind(x0, y0)])];
     for (size_t back = 1; back <= hist.size(); ++back) {
-      const size_t k = hist.size() - back;
-      if (hist[k] != addr) continue;
+      const Taken& k = hist[hist.size() - back];
+      if (k.addr != addr) continue;
       if (int(back) <= window_dist)
-        ++bins[fmt::format("same_pixel[distance={},between={}]", back, hist_gap[k] ? "Gap" : "Calm")];
-      if (int(back) <= kRunDistances && is_rmw(s.blend) && hist_blend[k] == s.blend && !hist_gap[k])
+        ++bins[fmt::format("same_pixel[distance={},between={}]", back, k.gap ? "Gap" : "Calm")];
+      if (int(back) <= kRunDistances && is_rmw(s.blend) && k.blend == s.blend && !k.gap)
         ++bins[fmt::format("goal.same_pixel_rmw[blend={},distance={}]", to_string(s.blend), back)];
       break;
     }
-    hist.push_back(addr);
-    hist_gap.push_back(false);
-    hist_blend.push_back(s.blend);
-    if (hist.size() > size_t(std::max(window_dist, kRunDistances))) {
-      hist.erase(hist.begin());
-      hist_gap.erase(hist_gap.begin());
-      hist_blend.erase(hist_blend.begin());
-    }
+    hist.push_back({addr, false, s.blend});
+    if (hist.size() > size_t(std::max(window_dist, kRunDistances))) hist.pop_front();
   });
   return bins;
 }
@@ -292,16 +308,8 @@ BinCounts trace_reach(const Trace& t, const DutShape& shape) {
 BinList reach_bins(const DutShape& shape) {
   BinList out;
   std::vector<std::string>& plan = out.plan;
-  const char* const depths[] = {"off", "never", "less", "equal", "lequal", "greater", "notequal",
-                                "gequal", "always"};
   std::vector<std::string> states;
-  for (const char* d : depths)
-    for (int w = 0; w < 2; ++w)
-      for (unsigned b = 0; b < kBlendModes; ++b)
-        for (int m = 0; m < 16; ++m)
-          for (int p = 0; p < 2; ++p)
-            states.push_back(fmt::format("depth={},write={},blend={},mask={:x},peel={}", d, w,
-                                         to_string(BlendMode(b)), m, p));
+  for (const RopState& s : pass_states()) states.push_back(state_dims(s));
   for (const std::string& s : states) plan.push_back("pass_state[" + s + "]");
   for (int f = 0; f < 8; ++f)
     for (const char* r : kRelations)

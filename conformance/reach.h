@@ -63,9 +63,9 @@ struct StoredPixel {
 bool visible(const RopState& state, const Fragment& f, const StoredPixel& p, int depth_bits,
              int samples, const WboitFormat& wboit);
 
-// The pass-state index of the plan (zb_rop_cov's order): depth off or function, write, blend,
-// mask, peel; and its bin name.
-std::string pass_state_bin(const RopState& s);
+// Every pass state of the plan (3456), in zb_rop_cov's order: depth off or each function, x
+// write, x blend, x mask, x peel.
+std::vector<RopState> pass_states();
 
 }  // namespace zb::conformance
 

@@ -71,17 +71,24 @@ CoveragePixel composite_coverage(uint32_t z, Rgba8 p, int k, uint32_t zs, Rgba8 
   return out;
 }
 
-// The paper's accumulation, C_i * w and a_i * w added, revealage times (1 - a_i), with
-// C_i = m(s, a) premultiplied and w = a * F(z).
-WboitPixel accumulate_wboit(uint32_t z, Rgba8 c, const std::array<uint32_t, 4>& acc,
-                            uint32_t reveal, int depth_bits, const WboitFormat& format) {
+// The paper's terms C_i * w and a_i * w, with C_i = m(s, a) premultiplied and w = a * F(z).
+std::array<uint32_t, 4> wboit_terms(uint32_t z, Rgba8 c, int depth_bits,
+                                    const WboitFormat& format) {
   const uint32_t weight = c.a * wboit_depth_weight(z, depth_bits, format.weight_bits);
   const int shift = wboit_term_shift(format);
   const uint8_t p[4] = {mul_unorm8(c.r, c.a), mul_unorm8(c.g, c.a), mul_unorm8(c.b, c.a), c.a};
+  std::array<uint32_t, 4> terms{};
+  for (int ch = 0; ch < 4; ++ch) terms[size_t(ch)] = wboit_term(p[ch], weight, shift);
+  return terms;
+}
+
+// The accumulation: the terms added, revealage times (1 - a_i).
+WboitPixel accumulate_wboit(uint32_t z, Rgba8 c, const std::array<uint32_t, 4>& acc,
+                            uint32_t reveal, int depth_bits, const WboitFormat& format) {
+  const std::array<uint32_t, 4> terms = wboit_terms(z, c, depth_bits, format);
   WboitPixel out;
-  for (int ch = 0; ch < 4; ++ch)
-    out.acc[ch] = wboit_accumulate(acc[ch], wboit_term(p[ch], weight, shift),
-                                   format.acc_bits);
+  for (size_t ch = 0; ch < 4; ++ch)
+    out.acc[ch] = wboit_accumulate(acc[ch], terms[ch], format.acc_bits);
   out.reveal = wboit_reveal(reveal, c.a);
   return out;
 }

@@ -62,6 +62,10 @@ struct PixelWrites {
   uint32_t reveal = 0;            // the revealage written
 };
 
+// The four terms (R, G, B, A) an accumulate-mode fragment of depth z and colour c adds to the
+// accumulation before the saturating add (docs/datapath.md "7. Accumulate blend").
+std::array<uint32_t, 4> wboit_terms(uint32_t z, Rgba8 c, int depth_bits, const WboitFormat& format);
+
 // The accumulation and revealage of a pixel after an accumulate-mode fragment of depth z and
 // colour c (docs/datapath.md "7. Accumulate blend").
 struct WboitPixel {
