@@ -162,7 +162,7 @@ conformance: build ## The conformance suite on zb_rop under Verilator, Icarus an
 
 # The suite's strength on zb_rop's mutants (docs/conformance.md "The suite's strength"): the
 # mutation tool's 1200 mutants, each against the suite's d24-c16 tests until one kills it (about an
-# hour on 2 cores). CONF_MUTATE_ARGS passes options (--resume, --mutants every:10).
+# hour on 2 cores). CONF_MUTATE_ARGS passes options (--resume, --sample 120, --mutants 1-50).
 CONF_MUTATE_ARGS ?=
 conformance-mutate: build ## The conformance suite as a test group on zb_rop's mutants: out/conformance/mutate/
 	$(ZBLEND) conformance export $(CONF_DIR)/suite

@@ -2,7 +2,8 @@
 """The conformance suite's strength: the suite alone as a test group on zb_rop's mutants
 (make conformance-mutate; docs/conformance.md "The suite's strength").
 
-  conformance_mutate.py --build DIR --suite DIR --out DIR [-j N] [--mutants SPEC] [--resume]
+  conformance_mutate.py --build DIR --suite DIR --out DIR [-j N] [--sample N | --mutants LIST]
+                        [--resume]
 
 The mutants are the mutation tool's sample (docs/mutation.md: build/mutation/mutants.v, one
 netlist with every mutant behind +zb_mutant=N, at the build's widths). The kit's testbench is
@@ -27,9 +28,11 @@ import subprocess
 import sys
 import time
 
-from zbscript import ROOT, usage_error
+from mutate import Journal, choose_mutants
+from zbscript import ROOT, Progress, usage_error
 
 CONFIG = "d24-c16"  # the mutant netlist's widths (a default build's)
+STAGE = "conformance"  # the journal's stage (mutate.py's journal format)
 PLANES = ("color", "depth", "coverage", "peel", "accum")
 
 
@@ -42,8 +45,8 @@ def parse_args():
     ap.add_argument("--suite", required=True, help="an exported suite (zblend conformance export)")
     ap.add_argument("--out", required=True)
     ap.add_argument("-j", "--jobs", type=int, default=os.cpu_count() or 1)
-    ap.add_argument("--mutants", default="",
-                    help="which mutants: 'all' (default), 'A-B', or 'every:K' (a sample)")
+    ap.add_argument("--sample", type=int, help="every k-th mutant, k = count / N: N of them")
+    ap.add_argument("--mutants", help="mutants to run, e.g. 1-50,77 (default all)")
     ap.add_argument("--equivalent", default=os.path.join(ROOT, "docs", "reports",
                                                          "mutation_report.md"),
                     help="the mutation report whose 'Proven equivalent' list leaves the score")
@@ -63,18 +66,6 @@ def count_mutants(build):
     except OSError as e:
         usage_error(f"{path}: {e.strerror} (build the tree: cmake --build {build})")
     return lines
-
-
-def choose(spec, count):
-    if spec in ("", "all"):
-        return list(range(1, count + 1))
-    m = re.fullmatch(r"(\d+)-(\d+)", spec)
-    if m and 1 <= int(m.group(1)) <= int(m.group(2)) <= count:
-        return list(range(int(m.group(1)), int(m.group(2)) + 1))
-    m = re.fullmatch(r"every:(\d+)", spec)
-    if m and int(m.group(1)) >= 1:
-        return list(range(1, count + 1, int(m.group(1))))
-    usage_error(f"--mutants {spec!r}: 'all', 'A-B' (1 to {count}) or 'every:K'")
 
 
 def proven_equivalent(path):
@@ -168,36 +159,28 @@ def run_mutant(n, a, binary, order, secs):
 def main():
     a = parse_args()
     descriptions = count_mutants(a.build)
-    chosen = choose(a.mutants, len(descriptions))
+    chosen = choose_mutants(a, len(descriptions))
     equivalent = proven_equivalent(a.equivalent)
     a.suite, a.out = os.path.abspath(a.suite), os.path.abspath(a.out)
     os.makedirs(a.out, exist_ok=True)
-    journal = os.path.join(a.out, "journal.jsonl")
-    verdicts = {}
-    if a.resume and os.path.exists(journal):
-        with open(journal) as f:
-            for ln in f:
-                r = json.loads(ln)
-                verdicts[r["mutant"]] = r
-    elif os.path.exists(journal):
-        os.remove(journal)
+    # mutate.py's journal: on --resume it refuses verdicts of another netlist.
+    journal = Journal(a.out, descriptions, a.resume)
+    verdicts = {m: e for (m, stage), e in journal.done.items() if stage == STAGE}
     binary, secs, order = build_testbench(a)
     todo = [n for n in chosen if n not in verdicts]
     print(f"conformance-mutate: {len(todo)} mutants to run ({len(chosen) - len(todo)} kept), "
           f"{len(order)} tests each at most, -j {a.jobs}", file=sys.stderr, flush=True)
-    t0 = time.time()
-    with open(journal, "a") as jf, concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
+    prog = Progress("conformance-mutate", todo, jobs=a.jobs, every=30)
+    with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
         futures = [pool.submit(run_mutant, n, a, binary, order, secs) for n in todo]
-        for i, f in enumerate(concurrent.futures.as_completed(futures), 1):
+        for f in concurrent.futures.as_completed(futures):
             n, by, why, s = f.result()
-            r = {"mutant": n, "killed_by": by, "why": why, "seconds": round(s, 2)}
+            r = {"mutant": n, "description": descriptions[n - 1], "stage": STAGE,
+                 "killed_by": by, "why": why, "seconds": round(s, 2)}
             verdicts[n] = r
-            jf.write(json.dumps(r) + "\n")
-            jf.flush()
-            if i % 25 == 0 or i == len(todo):
-                el = time.time() - t0
-                print(f"conformance-mutate: {i} of {len(todo)} in {el:.0f} s, about "
-                      f"{el / i * (len(todo) - i):.0f} s left", file=sys.stderr, flush=True)
+            journal.record(r)
+            prog.step(n, lambda p: f"{p.done} of {p.n} in {p.elapsed:.0f} s, about "
+                                   f"{p.left:.0f} s left")
     rows = [verdicts[n] for n in chosen]
     scored = [r for r in rows if r["mutant"] not in equivalent]
     killed = [r for r in scored if r["killed_by"]]
