@@ -85,7 +85,7 @@ PROFILE_KEYS = {"dut", "features", "params", "retire_port", "resident_tile", "so
 # The waves' save file: the testbench's signals by role (zb_conf_tb.sv), hex for buses.
 WAVE_GROUPS = [
     ("testbench: pass, fragment offered (index in the pass), tile, pass state",
-     ["n_passes", "frag_index", "tile_x0[15:0]", "tile_y0[15:0]", "state[12:0]"]),
+     ["pass_index", "frag_index", "tile_x0[15:0]", "tile_y0[15:0]", "state[12:0]"]),
     ("fragments", ["clk", "frag_valid", "frag_ready", "frag_x[15:0]", "frag_y[15:0]",
                    "frag_z[31:0]", "frag_rgba[31:0]", "frag_cov[7:0]", "idle"]),
     ("tile load and store", ["ld_valid", "ld_ready", "ld_color[31:0]", "st_start", "st_valid",
@@ -137,7 +137,7 @@ def write_save_file(fst, sim):
             f.write(f"@800200\n-{title}\n")
             for n in names:
                 # Buses in hex, the testbench's counts (ints) in decimal.
-                flag = "@22" if "[" in n else "@24" if n in ("n_passes", "frag_index") else "@28"
+                flag = "@22" if "[" in n else "@24" if n in ("pass_index", "frag_index") else "@28"
                 f.write(f"{flag}\n{top}{n}\n")
             f.write(f"@1000200\n-{title}\n")
     return gtkw

@@ -224,6 +224,7 @@ module zb_conf_tb #(
   bit           resident;  // several passes on one resident tile: one load, their states and
                            // fragments, one store (a profile's resident_tile)
   int unsigned  n_passes, n_frags, n_tiles;
+  int unsigned  pass_index;  // the pass being streamed: its place in the stream (the waves' pass)
   int unsigned  frag_index;  // the fragment offered: its index in the pass (the waves' marker)
 
   function automatic logic [7:0] opcode(input logic [127:0] w);
@@ -390,7 +391,7 @@ module zb_conf_tb #(
         frag_valid = 1'b1;
         frag_index = k - first;
         phase = $sformatf("pass %0d, tile (%0d, %0d), fragment %0d of the pass: waiting for frag_ready_o",
-                          n_passes, x0, y0, frag_index);
+                          pass_index, x0, y0, frag_index);
         frag_x     = w[15:0];
         frag_y     = w[31:16];
         frag_z     = w[63:32];
@@ -450,7 +451,7 @@ module zb_conf_tb #(
   // the edge before), so the next event goes at the first edge that allows it.
   task automatic wait_idle;
     phase = $sformatf("pass %0d, tile (%0d, %0d): the tile's fragments sent, waiting for idle_o",
-                      n_passes, tile_x0, tile_y0);
+                      pass_index, tile_x0, tile_y0);
     slack();
     while (!idle) @(negedge clk);
     progress();
@@ -478,8 +479,9 @@ module zb_conf_tb #(
   // loaded, streamed and stored.
   task automatic run_pass(input logic [12:0] pass_state, input int unsigned first,
                           input int unsigned last);
+    pass_index = n_passes;
 `ifdef ZB_CONF_LOCKSTEP
-    u_sb.begin_pass(pass_state);
+    u_sb.begin_pass(pass_state, pass_index);
 `endif
     for (int unsigned y0 = 0; y0 < height; y0 += TILE_H) begin
       for (int unsigned x0 = 0; x0 < width; x0 += TILE_W) begin
@@ -528,11 +530,12 @@ module zb_conf_tb #(
           loaded = 1'b0;
           for (int unsigned g = 0; g < passes; g++) begin
             if (pass_touches(group_first[g], group_last[g], x0, y0)) begin
+              pass_index = n_passes + g;
               write_state(13'(group_state[g]));
               if (!loaded) load_tile(x0, y0);
               loaded = 1'b1;
 `ifdef ZB_CONF_LOCKSTEP
-              u_sb.begin_pass(13'(group_state[g]));
+              u_sb.begin_pass(13'(group_state[g]), pass_index);
               u_sb.begin_tile(x0, y0);
 `endif
               stream_tile(group_first[g], group_last[g], x0, y0);
