@@ -584,7 +584,7 @@ module zb_conf_tb #(
 
   initial begin : run
     logic [127:0] w;
-    int unsigned  pc, first, group;
+    int unsigned  pc, group;
     bit           needs_accum;
     if (!$value$plusargs("stream=%s", stream_path))
       $fatal(1, "zb_conf: no +stream=FILE: name a test's stream.hex (docs/conformance.md)");
@@ -658,10 +658,11 @@ module zb_conf_tb #(
       if (opcode(w) == OpFrameOp) begin
         frame_op(w);
         pc++;
-      end else if (opcode(w) == OpPass && resident) begin
-        // The passes up to the next frame operation or END, run tile by tile.
+      end else if (opcode(w) == OpPass) begin
+        // A pass; on resident tiles, the passes up to the next frame operation or END, run
+        // tile by tile.
         group = 0;
-        while (opcode(words[pc]) == OpPass && group < MAX_GROUP) begin
+        while (opcode(words[pc]) == OpPass && group < (resident ? MAX_GROUP : 1)) begin
           group_state[group] = 32'(words[pc][12:0]);
           group_first[group] = pc + 1;
           pc++;
@@ -671,16 +672,9 @@ module zb_conf_tb #(
           group++;
           pc++;
         end
-        run_resident(group);
+        if (resident) run_resident(group);
+        else run_pass(13'(group_state[0]), group_first[0], group_last[0]);
         n_passes += group;
-      end else if (opcode(w) == OpPass) begin
-        first = pc + 1;
-        pc = first;
-        while (pc <= count && opcode(words[pc]) == OpFrag) pc++;
-        if (opcode(words[pc]) != OpEndPass) fail($sformatf("word %0d: a pass not ended by END_PASS", pc));
-        run_pass(w[12:0], first, pc);
-        n_passes++;
-        pc++;
       end else begin
         fail($sformatf("word %0d: opcode %02x where a pass, a frame operation or END belongs",
                        pc, opcode(w)));
