@@ -123,40 +123,36 @@ CONF_COVER = tb/cov/zb_rop_cov.sv tb/cov/zb_rop_cov_bind.sv tb/cov/zb_conf_cov_w
              tb/cov/zb_conf_cov_writer.cpp
 CONF_LIBS = $(BUILD)/conformance/libzbgolden_dpi.a $(BUILD)/conformance/libzbgolden_c.a \
             $(BUILD)/cmodel/libzbmodel.a
+CONF_PY   = python3 scripts/conformance.py -j $(JOBS)
+CONF_RUN  = $(CONF_PY) --suite $(CONF_DIR)/suite
 
 conformance: build ## The conformance suite on zb_rop under Verilator, Icarus and DPI-C lock-step, its reach (golden and zb_rop's covers, cross-checked), the second DUT and its defect catalogue: out/conformance/
 	$(ZBLEND) conformance export $(CONF_DIR)/suite
 	@# The reach on the golden model, as the coverage run below drives the suite (gaps 20 %,
 	@# zb_rop's resident tiles): printed, and written per test for the cross-check.
 	$(ZBLEND) conformance reach --gap 20 --schedule resident --json $(CONF_DIR)/reach.json
-	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim verilator --out $(CONF_DIR)/verilator -j $(JOBS)
-	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim verilator --out $(CONF_DIR)/verilator-pass \
-	  -j $(JOBS) --schedule pass --timing random --seed 2
+	$(CONF_RUN) --sim verilator --out $(CONF_DIR)/verilator
+	$(CONF_RUN) --sim verilator --out $(CONF_DIR)/verilator-pass --schedule pass --timing random --seed 2
 	@# Icarus runs about 7000 cycles a second: zb_rop with a 32x32 tile (its HX8K size) there,
 	@# so that a pass's tile load and store cost a quarter of the default's.
-	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim icarus --out $(CONF_DIR)/icarus -j $(JOBS) \
-	  --param TILE_W=32 --param TILE_H=32
-	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim verilator --out $(CONF_DIR)/lockstep \
-	  -j $(JOBS) --gap 20 --lockstep --golden-libs $(CONF_LIBS)
+	$(CONF_RUN) --sim icarus --out $(CONF_DIR)/icarus --param TILE_W=32 --param TILE_H=32
+	$(CONF_RUN) --sim verilator --out $(CONF_DIR)/lockstep --gap 20 --lockstep --golden-libs $(CONF_LIBS)
 	@# The suite's reach on the functional coverage plan (docs/coverage.md): zb_rop with the
 	@# plan's covers bound in, each test's counts written at its end: reach.html; at least 99 %
 	@# of the kit-reachable bins, and the golden reach equal to the covers' test by test.
-	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim verilator --out $(CONF_DIR)/coverage \
-	  -j $(JOBS) --gap 20 --verilator-arg=--coverage-user --extra-sources $(CONF_COVER)
+	$(CONF_RUN) --sim verilator --out $(CONF_DIR)/coverage --gap 20 \
+	  --verilator-arg=--coverage-user --extra-sources $(CONF_COVER)
 	python3 scripts/coverage_report.py $(CONF_DIR)/coverage --conformance \
 	  --kit-bins conformance/kit_bins.json --reach $(CONF_DIR)/reach.json --min-reach 99
 	@# The second DUT, full and pipelined, on both simulators; the seeded random tier on both DUTs.
-	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim verilator --out $(CONF_DIR)/ref-full \
-	  -j $(JOBS) --profile conformance/ref/profile_full.json
-	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim icarus --out $(CONF_DIR)/ref-full-icarus \
-	  -j $(JOBS) --profile conformance/ref/profile_full.json
-	python3 scripts/conformance.py --suite $(CONF_DIR)/suite --sim verilator --out $(CONF_DIR)/ref-pipe \
-	  -j $(JOBS) --profile conformance/ref/profile_pipe.json
+	$(CONF_RUN) --sim verilator --out $(CONF_DIR)/ref-full --profile conformance/ref/profile_full.json
+	$(CONF_RUN) --sim icarus --out $(CONF_DIR)/ref-full-icarus --profile conformance/ref/profile_full.json
+	$(CONF_RUN) --sim verilator --out $(CONF_DIR)/ref-pipe --profile conformance/ref/profile_pipe.json
 	$(ZBLEND) conformance export --seed $(CONF_SEED) $(CONF_DIR)/seed
-	python3 scripts/conformance.py --suite $(CONF_DIR)/seed --sim verilator --out $(CONF_DIR)/seed-rop \
-	  -j $(JOBS) --timing random --seed $(CONF_SEED)
-	python3 scripts/conformance.py --suite $(CONF_DIR)/seed --sim icarus --out $(CONF_DIR)/seed-ref \
-	  -j $(JOBS) --profile conformance/ref/profile_full.json --timing random --seed $(CONF_SEED)
+	$(CONF_PY) --suite $(CONF_DIR)/seed --sim verilator --out $(CONF_DIR)/seed-rop \
+	  --timing random --seed $(CONF_SEED)
+	$(CONF_PY) --suite $(CONF_DIR)/seed --sim icarus --out $(CONF_DIR)/seed-ref \
+	  --profile conformance/ref/profile_full.json --timing random --seed $(CONF_SEED)
 	@# The defect catalogue, each defect against the whole suite: the tests that catch it.
 	tests/conformance/test_ref_defects.sh $(CONF_DIR)/suite $(CONF_DIR)/defects $(ZBLEND) -j $(JOBS)
 
