@@ -69,6 +69,7 @@ struct RenderOptions {
   // method's mismatch waveform.
   CosimOptions cosim;
   int64_t seed = 1;                 // checked (0 or more) before it becomes cosim.rtl.seed
+  std::string schedule = "tile";    // --schedule, parsed into cosim.rtl.schedule
   std::string background;
   int threads = default_threads();  // golden: render_frame's workers; RTL: models side by side
   bool threads_given = false;
@@ -78,7 +79,7 @@ struct RenderOptions {
 };
 
 // The options that only the RTL backends use.
-constexpr const char* kRtlOnly[] = {"--backpressure", "--seed", "--waves"};
+constexpr const char* kRtlOnly[] = {"--backpressure", "--seed", "--waves", "--schedule"};
 
 double ms_since(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
@@ -373,6 +374,10 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--seed", o->seed, "RTL: seed of the back-pressure pattern")
       ->capture_default_str();
   cmd->add_option("--waves", o->cosim.rtl.trace_path, "RTL: FST waveform of the whole run");
+  cmd->add_option("--schedule", o->schedule,
+                  "RTL: tile (each tile loaded once, the passes up to a host frame operation run "
+                  "on it, stored once) or pass (every pass loads and stores each tile it touches)")
+      ->capture_default_str();
   cmd->add_flag("!--no-lockstep", o->cosim.lockstep,
                 "--backend both: compare the frames after each pass only, not every write at its "
                 "cycle");
@@ -386,6 +391,9 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--quiet,-q", o->quiet, "Print nothing but errors (no warnings either)");
   cmd->callback([o, cmd] {
     o->backend = parse_backend(o->backend_text);
+    if (!parse_schedule(o->schedule, o->cosim.rtl.schedule))
+      throw UsageError(
+          fmt::format("--schedule: unknown schedule '{}' (choose from tile, pass)", o->schedule));
     for (const char* name : kRtlOnly)
       if (cmd->count(name)) o->given.emplace_back(name);
     o->threads_given = cmd->count("--threads") != 0;

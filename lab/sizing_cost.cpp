@@ -32,6 +32,18 @@ uint64_t MethodCost::traffic_bytes(int tile, int depth_bits, int coverage_sample
   return (io + access + 7) / 8;
 }
 
+uint64_t TileCost::port_bytes(TileSchedule s, int depth_bits, int coverage_samples,
+                              const WboitFormat& wboit) const {
+  const std::array<uint64_t, kTilePlanes> bits{32, uint64_t(depth_bits),
+                                               uint64_t(coverage_bits(coverage_samples)),
+                                               uint64_t(depth_bits),
+                                               uint64_t(accum_word_bits(wboit))};
+  const auto& pixels = s == TileSchedule::kTile ? resident.plane_pixels : plane_pixels;
+  uint64_t io = 0;
+  for (size_t p = 0; p < bits.size(); ++p) io += pixels[p] * bits[p];
+  return (io + 7) / 8;
+}
+
 int MethodCost::best_tile(int depth_bits, int coverage_samples) const {
   int best = 0;
   for (const TileCost& t : tiles) {
@@ -54,6 +66,7 @@ void CostCounter::begin_frame(int width, int height, int depth_bits, Rgba8 clear
   height_ = height;
   cost_ = MethodCost{};
   cost_.wboit = wboit;
+  pass_states_.clear();
   grids_.clear();
   for (const int size : kAnalysisTileSizes) {
     Grid g;
@@ -61,6 +74,7 @@ void CostCounter::begin_frame(int width, int height, int depth_bits, Rgba8 clear
     g.columns = (width + size - 1) / size;
     g.stream.assign(size_t(g.columns) * size_t((height + size - 1) / size), {});
     g.states = TileStates(width, height, size, depth_bits, clear_color);
+    g.resident_states = g.states;
     grids_.push_back(std::move(g));
     cost_.tiles.push_back(TileCost{});
     cost_.tiles.back().tile = size;
@@ -90,6 +104,7 @@ void CostCounter::draw(const Fragment* fragments, size_t count) {
 // with a second tile buffer.
 PassStats CostCounter::end_pass() {
   const PassStats s = inner_.end_pass();
+  pass_states_.push_back(state_);
   cost_.totals += s;
   if (state_.blend == BlendMode::kAccumulate) cost_.accum_accesses += s.color_reads + s.color_writes;
   ++cost_.passes;
@@ -122,14 +137,72 @@ PassStats CostCounter::end_pass() {
     c.two_buffer_pipe += schedule_.run_two_buffers(overlapped).stream;
     for (const uint32_t t : g.touched) g.stream[t].clear();
     c.tiles_loaded += g.touched.size();
+    g.group.emplace_back(state_, std::move(g.touched));
     g.touched.clear();
   }
   return s;
 }
 
+// As the RTL driver's tile schedule (rtlmodel/rtl_rop.cpp): per tile the group's passes that
+// touch it, each a setup cycle and its loads (TileStates::plan_group), then one store.
+void CostCounter::end_group() {
+  for (size_t k = 0; k < grids_.size(); ++k) {
+    Grid& g = grids_[k];
+    if (g.group.empty()) continue;
+    ResidentTraffic& r = cost_.tiles[k].resident;
+    const uint64_t beats = tile_beats(g.size, g.size, beat_);
+    std::vector<uint32_t> all;
+    for (const auto& p : g.group) all.insert(all.end(), p.second.begin(), p.second.end());
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    std::vector<RopState> states;
+    for (const uint32_t t : all) {
+      states.clear();
+      for (const auto& p : g.group)
+        if (std::binary_search(p.second.begin(), p.second.end(), t)) states.push_back(p.first);
+      uint8_t store = 0;
+      const std::vector<TileIo> ios = g.resident_states.plan_group(t, states.data(), states.size(), store);
+      g.resident_states.stored(t, store);
+      const int x0 = int(t % uint32_t(g.columns)) * g.size;
+      const int y0 = int(t / uint32_t(g.columns)) * g.size;
+      const uint64_t pixels = uint64_t(std::min(g.size, width_ - x0)) *
+                              uint64_t(std::min(g.size, height_ - y0));
+      ++r.tile_runs;
+      for (const TileIo& io : ios) {
+        r.io_cycles += kRtlTileSetup + (io.load ? beats : 0);
+        r.beats += io.load ? beats : 0;
+        for (int p = 0; p < kTilePlanes; ++p) r.plane_pixels[size_t(p)] += pixels * (io.load >> p & 1);
+      }
+      r.io_cycles += store ? beats : 0;
+      r.beats += store ? beats : 0;
+      for (int p = 0; p < kTilePlanes; ++p) r.plane_pixels[size_t(p)] += pixels * (store >> p & 1);
+    }
+    g.group.clear();
+  }
+}
+
+// A backend that ran its passes only now (the RTL's tile schedule) gave zeros at end_pass: the
+// counters are the frame's final ones.
+void CostCounter::finish_frame(std::vector<PassStats>& stats) {
+  inner_.finish_frame(stats);
+  end_group();
+  if (stats.size() != pass_states_.size()) return;
+  cost_.totals = PassStats{};
+  cost_.accum_accesses = 0;
+  for (size_t k = 0; k < stats.size(); ++k) {
+    cost_.totals += stats[k];
+    if (pass_states_[k].blend == BlendMode::kAccumulate)
+      cost_.accum_accesses += stats[k].color_reads + stats[k].color_writes;
+  }
+}
+
 void CostCounter::frame_op(const FrameOp& op) {
   inner_.frame_op(op);
-  for (Grid& g : grids_) g.states.frame_op(op);
+  end_group();
+  for (Grid& g : grids_) {
+    g.states.frame_op(op);
+    g.resident_states.frame_op(op);
+  }
   ++cost_.frame_ops;
   cost_.frame_op_pixels += uint64_t(width_) * uint64_t(height_);
 }

@@ -14,7 +14,19 @@
 
 namespace zb {
 
-// A method's cost with square tiles of one size.
+// The tile port's traffic of the tile schedule (TileSchedule::kTile): a run per tile and group
+// of passes (the passes between two host frame operations), its setup cycle per pass, its
+// loads as each plane is first needed, one store.
+struct ResidentTraffic {
+  uint64_t tile_runs = 0;       // tiles loaded (once a group)
+  uint64_t io_cycles = 0;
+  uint64_t beats = 0;
+  std::array<uint64_t, kTilePlanes> plane_pixels{};
+};
+
+// A method's cost with square tiles of one size. The fields without a schedule in their name
+// are the pass schedule's (every pass loads and stores each tile it touches); the streaming
+// cycles are the same under both.
 struct TileCost {
   int tile = 0;
   uint64_t tiles_loaded = 0;    // summed over passes: the tiles each pass touches
@@ -31,9 +43,16 @@ struct TileCost {
   uint64_t two_buffer_pipe = 0;
   // Per plane (colour, depth, coverage, peel, accumulation): pixels loaded plus pixels stored.
   std::array<uint64_t, kTilePlanes> plane_pixels{};
+  ResidentTraffic resident;     // the tile schedule's
   // The RTL's clock cycles for the frame without back-pressure (`zblend render --backend rtl`
   // reports them as rtl_cycles plus the tile I/O).
   uint64_t rtl_cycles() const { return stream_cycles + tile_io_cycles; }
+  uint64_t io_cycles(TileSchedule s) const {
+    return s == TileSchedule::kTile ? resident.io_cycles : tile_io_cycles;
+  }
+  // Tile-port bytes moved (loads and stores, each plane its width), rounded up from bits.
+  uint64_t port_bytes(TileSchedule s, int depth_bits, int coverage_samples,
+                      const WboitFormat& wboit) const;
 };
 
 struct MethodCost {
@@ -69,6 +88,7 @@ class CostCounter final : public Backend {
  public:
   // `beat`: the tile port's pixels per clock (zb_rop's BEAT; other widths for the sweep).
   explicit CostCounter(Backend& inner, int beat = kRtlBeat) : inner_(inner), beat_(beat) {}
+  ~CostCounter() override = default;
   const char* name() const override { return inner_.name(); }
   using Backend::begin_frame;
   void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
@@ -78,6 +98,7 @@ class CostCounter final : public Backend {
   using Backend::draw;
   void draw(const Fragment* fragments, size_t count) override;
   PassStats end_pass() override;
+  void finish_frame(std::vector<PassStats>& stats) override;
   void frame_op(const FrameOp& op) override;
   const Framebuffer& framebuffer() const override { return inner_.framebuffer(); }
 
@@ -90,7 +111,13 @@ class CostCounter final : public Backend {
     std::vector<std::vector<uint32_t>> stream;  // per tile
     std::vector<uint32_t> touched;  // tiles with a fragment, in first-touch order
     TileStates states;
+    // The tile schedule's: the frame's planes per tile, and the group's passes with the tiles
+    // each touches (sorted).
+    TileStates resident_states;
+    std::vector<std::pair<RopState, std::vector<uint32_t>>> group;
   };
+  void end_group();  // the tile schedule's group ends: its traffic
+  std::vector<RopState> pass_states_;  // the frame's, for finish_frame's counters
   Backend& inner_;
   int beat_;
   RopState state_;

@@ -14,16 +14,34 @@
 namespace zb {
 
 struct RtlRop::Impl {
+  // A pass of the group: its state and its fragments, frags[base, base + n), binned by tile
+  // (Streamed::index counts from the group's first fragment).
+  struct Pass {
+    RopState state;
+    size_t base = 0, n = 0;
+    uint64_t number = 0;              // passes since construction
+    std::vector<uint32_t> tile_first; // per tile, start in `binned`; one extra at the end
+    std::vector<Streamed> binned;
+  };
+  // A tile's run: which passes touch it, each one's traffic, the planes stored after them.
+  struct Plan {
+    size_t tile = 0;
+    std::vector<size_t> passes;       // indices in `group`
+    std::vector<TileIo> ios;
+    uint8_t store = 0;
+  };
+
   RtlOptions opt;
   Sim sim;
   std::vector<std::unique_ptr<Sim>> helpers;  // the other models of a tile-parallel run
   Framebuffer fb;
-  RopState state;
-  std::vector<Fragment> frags;      // the current (or last ended) pass
+  std::vector<Pass> group;          // the passes run together (one pass under kPass)
+  bool ran = false;                 // the group has run (its records stay for reports)
+  std::vector<Fragment> frags;      // the group's fragments, pass after pass
   std::vector<uint64_t> accepted;   // accept cycle per fragment
-  std::vector<Streamed> binned;     // frags in tile order, stable
-  std::vector<uint32_t> tile_first; // per tile, start in `binned`; one extra at the end
-  std::vector<TileRun> runs;
+  std::vector<TileRun> runs;        // the group's, one a tile
+  std::vector<Plan> plans;          // beside runs
+  std::vector<PassStats> frame_stats;  // the frame's passes so far
   TileStates tiles;                 // the frame's planes per tile: cleared or stored
   uint64_t pass_no = 0;
   bool in_pass = false;
@@ -35,40 +53,66 @@ struct RtlRop::Impl {
 
   int models() const { return opt.trace_path.empty() ? std::max(1, opt.threads) : 1; }
   int tiles_x() const { return (fb.width + kRtlTileW - 1) / kRtlTileW; }
+  bool pending() const { return !ran && !group.empty(); }
 
-  // Tile `tile` of pass `pass`, loaded from `src` and stored to `dst`.
-  TileJob job(size_t tile, uint64_t pass, const TileIo& io, const Framebuffer& src,
-              Framebuffer& dst, uint64_t* accept_out) const {
+  TileJob job(const Plan& plan, const Framebuffer& src, Framebuffer& dst,
+              uint64_t* accept_out) const {
     TileJob j;
-    j.x0 = int(tile % size_t(tiles_x())) * kRtlTileW;
-    j.y0 = int(tile / size_t(tiles_x())) * kRtlTileH;
-    j.io = io;
-    j.state = pack_state(state);
+    j.x0 = int(plan.tile % size_t(tiles_x())) * kRtlTileW;
+    j.y0 = int(plan.tile / size_t(tiles_x())) * kRtlTileH;
+    for (size_t k = 0; k < plan.passes.size(); ++k) {
+      const Pass& p = group[plan.passes[k]];
+      TileStep st;
+      st.state = pack_state(p.state);
+      st.io = plan.ios[k];
+      st.stream = p.binned.data() + p.tile_first[plan.tile];
+      st.n = p.tile_first[plan.tile + 1] - p.tile_first[plan.tile];
+      st.seed = tile_seed(opt.seed, p.number, plan.tile);
+      j.steps.push_back(st);
+    }
+    j.store = plan.store;
     j.src = &src;
     j.dst = &dst;
-    j.stream = binned.data() + tile_first[tile];
-    j.n = tile_first[tile + 1] - tile_first[tile];
     j.pass = frags.data();
     j.accepted = accept_out;
-    j.seed = tile_seed(opt.seed, pass, tile);
     j.backpressure = opt.backpressure;
     j.check_timing = opt.check_timing;
     j.reread_stores = opt.reread_stores;
     return j;
   }
 
-  size_t run_tiles(const std::vector<size_t>& touched, const std::vector<TileIo>& ios,
-                   std::vector<TileResult>& out, bool& stopped);
-  PassStats rebase(const std::vector<size_t>& touched, const std::vector<TileIo>& ios,
-                   const std::vector<TileResult>& out, size_t ran);
+  void plan_group();
+  size_t run_tiles(std::vector<TileResult>& out, bool& stopped);
+  std::vector<PassStats> rebase(const std::vector<TileResult>& out, size_t ran);
+  std::vector<PassStats> run_group();
 };
+
+// The group's touched tiles in tile order, each with the passes that touch it and their traffic
+// on the resident tile (TileStates::plan_group).
+void RtlRop::Impl::plan_group() {
+  plans.clear();
+  const size_t ntiles = group.front().tile_first.size() - 1;
+  std::vector<RopState> states;
+  for (size_t t = 0; t < ntiles; ++t) {
+    Plan plan;
+    plan.tile = t;
+    states.clear();
+    for (size_t k = 0; k < group.size(); ++k)
+      if (group[k].tile_first[t] != group[k].tile_first[t + 1]) {
+        plan.passes.push_back(k);
+        states.push_back(group[k].state);
+      }
+    if (plan.passes.empty()) continue;
+    plan.ios = tiles.plan_group(t, states.data(), states.size(), plan.store);
+    plans.push_back(std::move(plan));
+  }
+}
 
 // Each model takes the next tile; the tiles touch disjoint pixels of fb and of accepted. One
 // model runs on this thread, in tile order. A stop (the retire sink's) lets the running tiles
 // finish, so the tiles that ran are the first ones, whole. Returns how many ran.
-size_t RtlRop::Impl::run_tiles(const std::vector<size_t>& touched, const std::vector<TileIo>& ios,
-                               std::vector<TileResult>& out, bool& stopped) {
-  const int n = int(std::min<size_t>(size_t(models()), touched.size()));
+size_t RtlRop::Impl::run_tiles(std::vector<TileResult>& out, bool& stopped) {
+  const int n = int(std::min<size_t>(size_t(models()), plans.size()));
   while (helpers.size() + 1 < size_t(n))
     helpers.push_back(std::make_unique<Sim>(std::string(), opt, opt.coverage));
   std::atomic<size_t> next{0};
@@ -76,10 +120,10 @@ size_t RtlRop::Impl::run_tiles(const std::vector<size_t>& touched, const std::ve
   run_workers(n, [&](int w) {
     Sim& s = w == 0 ? sim : *helpers[size_t(w - 1)];
     use_context(s.ctx.get());
-    s.wave.pass_no = uint32_t(pass_no);
+    s.wave.pass_no = uint32_t(group.back().number);
     try {
-      for (size_t j; !failed && !stop && (j = next++) < touched.size();) {
-        out[j] = run_tile(s, job(touched[j], pass_no, ios[j], fb, fb, accepted.data()));
+      for (size_t j; !failed && !stop && (j = next++) < plans.size();) {
+        out[j] = run_tile(s, job(plans[j], fb, fb, accepted.data()));
         if (!out[j].go) stop = true;
       }
     } catch (...) {
@@ -89,31 +133,49 @@ size_t RtlRop::Impl::run_tiles(const std::vector<size_t>& touched, const std::ve
   });
   use_context(sim.ctx.get());
   stopped = stop;
-  return std::min(next.load(), touched.size());
+  return std::min(next.load(), plans.size());
 }
 
-// One model's cycles: the tiles back to back in tile order, from where the last pass ended.
-PassStats RtlRop::Impl::rebase(const std::vector<size_t>& touched,
-                               const std::vector<TileIo>& ios,
-                               const std::vector<TileResult>& out, size_t ran) {
-  PassStats stats;
+// One model's cycles: the tiles back to back in tile order, from where the last group ended.
+// Returns each pass's counters summed over its tiles.
+std::vector<PassStats> RtlRop::Impl::rebase(const std::vector<TileResult>& out, size_t ran) {
+  std::vector<PassStats> stats(group.size());
   runs.resize(ran);
   for (size_t j = 0; j < ran; ++j) {
     TileRun& r = runs[j] = out[j].run;
+    const Plan& plan = plans[j];
     const uint64_t from = r.load_begin;
     auto at = [&](uint64_t c) { return c - from + cycles; };
-    for (uint32_t k = tile_first[touched[j]]; k < tile_first[touched[j] + 1]; ++k)
-      accepted[binned[k].index] = at(accepted[binned[k].index]);
+    for (const size_t k : plan.passes) {
+      const Pass& p = group[k];
+      for (uint32_t i = p.tile_first[plan.tile]; i < p.tile_first[plan.tile + 1]; ++i)
+        accepted[p.binned[i].index] = at(accepted[p.binned[i].index]);
+    }
+    for (size_t k = 0; k < plan.passes.size(); ++k) stats[plan.passes[k]] += out[j].stats[k];
     r.load_begin = at(r.load_begin);
     r.stream_begin = at(r.stream_begin);
     r.stream_end = at(r.stream_end);
     r.store_end = at(r.store_end);
     cycles = r.store_end;
-    stats += out[j].stats;
-    tiles.stored(touched[j], ios[j].store);
-    io_cycles += (r.stream_begin - r.load_begin) + (r.store_end - r.stream_end);
+    tiles.stored(plan.tile, plan.store);
+    io_cycles += (r.store_end - r.load_begin) - r.stream_cycles;
     stalls += r.stall_cycles;
   }
+  return stats;
+}
+
+std::vector<PassStats> RtlRop::Impl::run_group() {
+  if (!pending()) return {};
+  ran = true;
+  accepted.assign(frags.size(), 0);
+  plan_group();
+  std::vector<TileResult> out(plans.size());
+  for (const Pass& p : group) prepare_stores(fb, p.state);  // not in a tile: they run at once
+  bool stopped = false;
+  const size_t done = run_tiles(out, stopped);
+  std::vector<PassStats> stats = rebase(out, done);
+  if (stopped) throw RtlStopped();
+  frame_stats.insert(frame_stats.end(), stats.begin(), stats.end());
   return stats;
 }
 
@@ -150,16 +212,31 @@ void RtlRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_colo
     fail<E>("rtl backend: depth bits {}, the Verilated zb_rop has {}", depth_bits, kRtlDepthBits);
   if (width < 1 || height < 1 || width > 65535 || height > 65535)
     fail<E>("rtl backend: frame size {}x{} outside 1..65535", width, height);
+  if (impl_->pending())
+    fail<std::logic_error>("rtl backend: begin_frame with the last frame's passes not yet run "
+                           "(finish_frame)");
   impl_->fb = Framebuffer(width, height, depth_bits, clear_color, coverage_samples, wboit);
   impl_->tiles = TileStates(width, height, kRtlTileW, depth_bits, clear_color, wboit);
   impl_->in_pass = false;
+  impl_->group.clear();
+  impl_->frags.clear();
+  impl_->frame_stats.clear();
 }
 
 void RtlRop::begin_pass(const RopState& state) {
-  if (impl_->fb.width == 0) fail<std::logic_error>("rtl backend: begin_pass before begin_frame");
-  impl_->state = state;
-  impl_->frags.clear();
-  impl_->in_pass = true;
+  Impl& m = *impl_;
+  if (m.fb.width == 0) fail<std::logic_error>("rtl backend: begin_pass before begin_frame");
+  if (m.ran) {  // a new group: the last one's records go
+    m.group.clear();
+    m.frags.clear();
+    m.ran = false;
+  }
+  Impl::Pass p;
+  p.state = state;
+  p.base = m.frags.size();
+  p.number = m.pass_no++;
+  m.group.push_back(std::move(p));
+  m.in_pass = true;
 }
 
 void RtlRop::draw(const Fragment* fragments, size_t count) {
@@ -176,39 +253,48 @@ void RtlRop::draw(const Fragment* fragments, size_t count) {
   m.frags.insert(m.frags.end(), fragments, fragments + count);
 }
 
+// Under kTile the pass waits for the group's end (a host frame operation, finish_frame); its
+// counters come then, and this returns zeros.
 PassStats RtlRop::end_pass() {
   Impl& m = *impl_;
   if (!m.in_pass) fail<std::logic_error>("rtl backend: end_pass outside a pass");
   m.in_pass = false;
-  stream_by_tile(m.frags.data(), m.frags.size(), m.fb.width, m.fb.height, m.tile_first, m.binned);
-  m.accepted.assign(m.frags.size(), 0);
-  std::vector<size_t> touched;  // tiles with fragments, in tile order
-  std::vector<TileIo> ios;
-  for (size_t tile = 0; tile + 1 < m.tile_first.size(); ++tile) {
-    if (m.tile_first[tile] == m.tile_first[tile + 1]) continue;
-    touched.push_back(tile);
-    ios.push_back(m.tiles.plan(tile, m.state));
-  }
-  std::vector<TileResult> out(touched.size());
-  prepare_stores(m.fb, m.state);  // here, not in a tile's store: the tiles run concurrently
-  bool stopped = false;
-  const size_t ran = m.run_tiles(touched, ios, out, stopped);
-  const PassStats stats = m.rebase(touched, ios, out, ran);
-  ++m.pass_no;
-  if (stopped) throw RtlStopped();
-  return stats;
+  Impl::Pass& p = m.group.back();
+  p.n = m.frags.size() - p.base;
+  stream_by_tile(m.frags.data() + p.base, p.n, m.fb.width, m.fb.height, p.tile_first, p.binned);
+  for (Streamed& f : p.binned) f.index += uint32_t(p.base);
+  if (m.opt.schedule == TileSchedule::kTile) return PassStats{};
+  return m.run_group().at(0);
 }
 
-// The host's frame operation on the driver's frame copy; the next pass loads it into the
-// tile memory (colour, depth, coverage, peel and accumulation planes).
+std::vector<PassStats> RtlRop::flush() {
+  if (impl_->in_pass) fail<std::logic_error>("rtl backend: flush inside a pass");
+  return impl_->run_group();
+}
+
+bool RtlRop::pending() const { return impl_->pending(); }
+
+void RtlRop::finish_frame(std::vector<PassStats>& stats) {
+  flush();
+  if (impl_->opt.schedule == TileSchedule::kTile) stats = impl_->frame_stats;
+}
+
+// The host's frame operation on the driver's frame copy, after the passes before it have run;
+// the next pass loads it into the tile memory (colour, depth, coverage, peel and accumulation
+// planes).
 void RtlRop::frame_op(const FrameOp& op) {
   if (impl_->fb.width == 0) fail<std::logic_error>("rtl backend: frame_op before begin_frame");
   if (impl_->in_pass) fail<std::logic_error>("rtl backend: frame_op inside a pass");
+  flush();
   apply_frame_op(impl_->fb, op);
   impl_->tiles.frame_op(op);
 }
 
-const Framebuffer& RtlRop::framebuffer() const { return impl_->fb; }
+const Framebuffer& RtlRop::framebuffer() const {
+  if (impl_->pending())
+    fail<std::logic_error>("rtl backend: the frame read with passes not yet run (finish_frame)");
+  return impl_->fb;
+}
 uint64_t RtlRop::tile_io_cycles() const { return impl_->io_cycles; }
 uint64_t RtlRop::total_cycles() const { return impl_->cycles; }
 uint64_t RtlRop::stall_cycles() const { return impl_->stalls; }
@@ -216,6 +302,13 @@ const std::vector<Fragment>& RtlRop::pass_fragments() const { return impl_->frag
 const std::vector<uint64_t>& RtlRop::accept_cycles() const { return impl_->accepted; }
 const std::vector<TileRun>& RtlRop::tile_runs() const { return impl_->runs; }
 uint64_t RtlRop::pass_number() const { return impl_->pass_no == 0 ? 0 : impl_->pass_no - 1; }
+size_t RtlRop::group_passes() const { return impl_->group.size(); }
+size_t RtlRop::pass_of(uint32_t fragment) const {
+  const auto& g = impl_->group;
+  size_t k = 0;
+  while (k + 1 < g.size() && fragment >= g[k + 1].base) ++k;
+  return k;
+}
 
 void RtlRop::mark_waves(const WaveView& view) { impl_->sim.view = view; }
 
@@ -238,13 +331,13 @@ Framebuffer RtlRop::replay_tile(const Framebuffer& before, int x0, int y0,
                                 const std::string& fst_path, uint64_t from, uint64_t to,
                                 const WaveView& view) const {
   const Impl& m = *impl_;
-  const TileRun* found = nullptr;
-  for (const TileRun& r : m.runs)
-    if (r.x0 == x0 && r.y0 == y0) found = &r;
-  if (!found) fail<std::invalid_argument>("rtl replay: the last pass did not touch that tile");
-  const size_t tile = size_t(y0 / kRtlTileH) * m.tiles_x() + x0 / kRtlTileW;
+  size_t found = m.runs.size();
+  for (size_t j = 0; j < m.runs.size(); ++j)
+    if (m.runs[j].x0 == x0 && m.runs[j].y0 == y0) found = j;
+  if (found == m.runs.size())
+    fail<std::invalid_argument>("rtl replay: the last group of passes did not touch that tile");
   Framebuffer out = before;
-  prepare_stores(out, m.state);
+  for (const Impl::Pass& p : m.group) prepare_stores(out, p.state);
   // The replay's context goes away with it: give the thread back the main model's context.
   struct RestoreContext {
     VerilatedContext* ctx;
@@ -257,11 +350,11 @@ Framebuffer RtlRop::replay_tile(const Framebuffer& before, int x0, int y0,
   quiet.check_timing = false;  // the waveform is wanted whatever the timing
   Sim sim(fst_path, quiet, nullptr, from, to);
   sim.view = view;
-  sim.wave.pass_no = uint32_t(m.pass_no - 1);
+  sim.wave.pass_no = uint32_t(m.group.back().number);
   // Same cycle numbers as the original run, so the waveform's times match the report.
-  sim.cycle = found->load_begin;
+  sim.cycle = m.runs[found].load_begin;
   std::vector<uint64_t> accepted(m.frags.size(), 0);
-  run_tile(sim, m.job(tile, m.pass_no - 1, found->io, before, out, accepted.data()));
+  run_tile(sim, m.job(m.plans[found], before, out, accepted.data()));
   return out;
 }
 

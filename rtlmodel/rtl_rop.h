@@ -36,6 +36,10 @@ struct RtlOptions {
   // After each store, read the stored planes again: every word must read the same (a tile read
   // leaves the planes as they were, fresh words included). The tiles suite sets it.
   bool reread_stores = false;
+  // kPass: each pass loads and stores every tile it touches; kTile: the passes between two host
+  // frame operations run on the resident tile, one load and one store a tile (docs/rtl.md
+  // "Schedules"). The frame's bits are the same.
+  TileSchedule schedule = TileSchedule::kPass;
   // Models run a pass's tiles side by side (tiles are independent: each starts drained, its
   // planes loaded or cleared). Planes, counters and cycles are those of one model whatever the
   // number. A trace needs one waveform: with trace_path set the run uses one model.
@@ -48,7 +52,8 @@ struct RtlOptions {
   CoverageTotals* coverage = nullptr;
 };
 
-// The cycles of one tile's run in a pass, in cycles since reset.
+// The cycles of one tile's run (one pass, or on a resident tile every pass of a group), in
+// cycles since reset; stall, RTL and load-beat counts summed over its passes.
 struct TileRun {
   int x0 = 0, y0 = 0;          // tile origin, pixels
   TileIo io;                   // the planes fast-cleared, loaded and stored
@@ -60,6 +65,7 @@ struct TileRun {
   uint64_t rtl_cycles = 0;     // the RTL's cnt_cycles_o at the end of the drain
   uint64_t load_beats = 0;     // the RTL's cnt_tile_loads_o and cnt_tile_stores_o
   uint64_t store_beats = 0;
+  uint64_t stream_cycles = 0;  // of its passes' streams (a resident tile runs several)
 };
 
 // Thrown by RtlRop::end_pass when the retire sink stopped the run. The tiles that ran are in
@@ -86,9 +92,17 @@ class RtlRop final : public Backend {
   void begin_pass(const RopState& state) override;
   using Backend::draw;
   void draw(const Fragment* fragments, size_t count) override;
-  // PassStats summed over tiles; `cycles` counts streaming cycles (first offer to drain).
+  // PassStats summed over tiles; `cycles` counts streaming cycles (first offer to drain). Under
+  // TileSchedule::kTile the pass runs later (flush) and this returns zeros.
   PassStats end_pass() override;
+  // Runs the passes not yet run (kTile: the group since the last host frame operation) and
+  // returns their counters; empty when none wait.
+  std::vector<PassStats> flush();
+  bool pending() const;  // passes wait for flush
+  // flush(), then under kTile every pass's counters of the frame into `stats`.
+  void finish_frame(std::vector<PassStats>& stats) override;
   void frame_op(const FrameOp& op) override;
+  // std::logic_error while passes wait (finish_frame or flush first).
   const Framebuffer& framebuffer() const override;
 
   // Cumulative cycles at the tile port (setup, load and store beats), and every cycle since
@@ -97,14 +111,18 @@ class RtlRop final : public Backend {
   uint64_t total_cycles() const;
   uint64_t stall_cycles() const;  // summed cnt_stall_cycles_o
 
-  // The last ended pass: its fragments, the cycle each was accepted, its tiles and number.
+  // The last group of passes run (one pass under kPass): its fragments, pass after pass, the
+  // cycle each was accepted, its tiles, the number of its last pass (since construction, from
+  // 0), its passes and the one (from 0) a fragment of it belongs to.
   const std::vector<Fragment>& pass_fragments() const;
   const std::vector<uint64_t>& accept_cycles() const;
   const std::vector<TileRun>& tile_runs() const;
-  uint64_t pass_number() const;  // passes since construction, from 0
+  uint64_t pass_number() const;
+  size_t group_passes() const;
+  size_t pass_of(uint32_t fragment) const;
 
-  // Replays the last pass's tile at origin (x0, y0) on a fresh model, starting from `before`
-  // (the frame as it was at the start of that pass), dumping an FST of cycles [from, to] to
+  // Replays the last group's tile at origin (x0, y0) on a fresh model, starting from `before`
+  // (the frame as it was at the start of the group), dumping an FST of cycles [from, to] to
   // `fst_path`, and its save file showing `view` (waves.h). Returns the tile's frame after the
   // replay (only that tile's pixels updated). A fresh model holds no state of earlier passes
   // (the planes' fast-clear epochs): a defect that needs them may not show in the replay.

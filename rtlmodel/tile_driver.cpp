@@ -43,7 +43,7 @@ class TileRunner {
  public:
   TileRunner(Sim& s, const TileJob& job)
       : s_(s), t_(*s.top), job_(job), sweep_(job.src->width, job.src->height, job.x0, job.y0),
-        idle_(job.seed ^ 0x1d1e5eedull) {
+        idle_((job.steps.empty() ? 0 : job.steps[0].seed) ^ 0x1d1e5eedull) {
     while ((1u << beat_aw_) < unsigned(sweep_.beats())) ++beat_aw_;
   }
 
@@ -51,33 +51,31 @@ class TileRunner {
     TileRun& r = out_.run;
     r.x0 = job_.x0;
     r.y0 = job_.y0;
-    r.io = job_.io;
     r.load_begin = s_.cycle;
-    s_.feed.begin_tile(job_.x0, job_.y0, job_.stream, job_.n);
-    setup();
-    load();
-    idle_tile_port();
-    r.stream_begin = s_.cycle;
-    stream();
-    drain();
-    r.stream_end = s_.cycle;
-    out_.go = s_.feed.end_tile(s_.cycle - r.load_begin) && out_.go;
-    // After the monitor, so that a wrong write is reported as such first.
-    if (job_.check_timing && job_.n > 0 && out_.go)
-      s_.timing.check(r, job_.stream, job_.n, thr_ != 0 ? job_.accepted : nullptr,
-                      s_.feed.on() ? &s_.feed.x4_cycles() : nullptr);
-    count();
+    for (size_t i = 0; i < job_.steps.size(); ++i) step(i);
+    r.io.store = job_.store;
     store();
-    r.load_beats = t_.cnt_tile_loads_o;
     r.store_beats = t_.cnt_tile_stores_o;
     const uint64_t beats = uint64_t(sweep_.beats());
-    audit_beats(r, job_.io.load ? beats : 0, job_.io.store ? beats : 0);
+    // The tile counters were cleared at the last step's setup: its loads, then the store.
+    audit_beats(counted(t_.cnt_tile_loads_o, r.store_beats),
+                job_.steps.empty() || !job_.steps.back().io.load ? 0 : beats,
+                job_.store ? beats : 0);
     r.store_end = s_.cycle;
     if (!stored_.empty() && out_.go) reread();
     return out_;
   }
 
  private:
+  // The tile counters' beats, for audit_beats.
+  TileRun counted(uint64_t loads, uint64_t stores) const {
+    TileRun c;
+    c.x0 = job_.x0;
+    c.y0 = job_.y0;
+    c.load_beats = loads;
+    c.store_beats = stores;
+    return c;
+  }
   uint32_t bits(unsigned w) { return uint32_t(idle_.next() & ((uint64_t{1} << w) - 1)); }
   void refuses(const char* why) const {
     check_refuses(t_.frag_ready_o, job_.x0, job_.y0, s_.cycle, why);
@@ -104,17 +102,19 @@ class TileRunner {
     t_.frag_cov_i = bits(lanes::kCov);
   }
 
+  void step(size_t i);
   void setup();
   void load();
   void stream();
   void drain();
-  void count();
+  void count(TileRun& r);
   void store();
   void reread();
 
   Sim& s_;
   VModel& t_;
   const TileJob& job_;
+  const TileStep* step_ = nullptr;  // the pass being run
   const TileSweep sweep_;
   XorShift idle_;
   unsigned beat_aw_ = 0;    // zb_rop's BeatAW: tile_addr_i's width
@@ -125,19 +125,56 @@ class TileRunner {
   TileResult out_;
 };
 
+// One pass on the resident tile: setup, the loads it needs, its stream and drain, the counters.
+// The monitor's tile cycles count from the run's first setup, the pass's stream apart.
+void TileRunner::step(size_t i) {
+  step_ = &job_.steps[i];
+  const TileStep& st = *step_;
+  TileRun r;
+  r.x0 = job_.x0;
+  r.y0 = job_.y0;
+  r.io = st.io;
+  r.load_begin = out_.run.load_begin;
+  s_.feed.begin_tile(job_.x0, job_.y0, st.stream, st.n);
+  setup();
+  load();
+  idle_tile_port();
+  r.stream_begin = s_.cycle;
+  if (i == 0) out_.run.stream_begin = r.stream_begin;
+  stream();
+  drain();
+  r.stream_end = out_.run.stream_end = s_.cycle;
+  out_.run.stream_cycles += r.stream_end - r.stream_begin;
+  out_.go = s_.feed.end_tile(s_.cycle - r.load_begin) && out_.go;
+  // After the monitor, so that a wrong write is reported as such first.
+  if (job_.check_timing && st.n > 0 && out_.go)
+    s_.timing.check(r, st.stream, st.n, thr_ != 0 ? job_.accepted : nullptr,
+                    s_.feed.on() ? &s_.feed.x4_cycles() : nullptr);
+  count(r);
+  TileIo& io = out_.run.io;  // the run's: every plane cleared, with its value, and loaded
+  io.clear |= st.io.clear;
+  io.load |= st.io.load;
+  for (size_t p = 0; p < kWordPlanes; ++p)
+    if (st.io.clear >> p & 1) io.clear_value[p] = st.io.clear_value[p];
+  if (st.io.clear & kPlaneAccum) io.accum_clear = st.io.accum_clear;
+  out_.run.load_beats += t_.cnt_tile_loads_o;
+  if (i + 1 < job_.steps.size())
+    audit_beats(counted(t_.cnt_tile_loads_o, 0), st.io.load ? uint64_t(sweep_.beats()) : 0, 0);
+}
+
 // Pass state, counter clear, tile origin and the fast clear of the planes io.clear names.
 void TileRunner::setup() {
   t_.tile_x0_i = job_.x0;
   t_.tile_y0_i = job_.y0;
-  t_.state_i = job_.state;
+  t_.state_i = step_->state;
   t_.state_we_i = 1;
   t_.cnt_clear_i = 1;
   cleared_ = s_.cycle;
-  t_.tile_clear_i = job_.io.clear != 0;
-  t_.tile_planes_i = job_.io.clear;
-  put_beat(t_, clear_beat(job_.io));
+  t_.tile_clear_i = step_->io.clear != 0;
+  t_.tile_planes_i = step_->io.clear;
+  put_beat(t_, clear_beat(step_->io));
   s_.tick();
-  if (job_.io.clear) refuses("tile_clear_i");
+  if (step_->io.clear) refuses("tile_clear_i");
   t_.state_we_i = 0;
   t_.state_i = bits(13);  // pass_state_t
   t_.cnt_clear_i = 0;
@@ -145,14 +182,15 @@ void TileRunner::setup() {
 }
 
 void TileRunner::load() {
-  if (!job_.io.load) return;
+  const uint8_t planes = step_->io.load;
+  if (!planes) return;
   t_.tile_req_i = 1;
   t_.tile_we_i = 1;
-  t_.tile_planes_i = job_.io.load;
+  t_.tile_planes_i = planes;
   for (int k = 0; k < sweep_.beats(); ++k) {
     t_.tile_addr_i = k;
     BeatWords w = sweep_.load(*job_.src, k);
-    scramble(w, job_.io.load, [this](unsigned b) { return bits(b); });  // lanes not loaded
+    scramble(w, planes, [this](unsigned b) { return bits(b); });  // lanes not loaded
     put_beat(t_, w);
     s_.tick();
     refuses("tile_req_i (a load)");
@@ -168,12 +206,12 @@ void TileRunner::load() {
 void TileRunner::stream() {
   Sim& s = s_;
   VModel& t = t_;
-  const Streamed* f = job_.stream;
-  const size_t n = job_.n;
+  const Streamed* f = step_->stream;
+  const size_t n = step_->n;
   uint64_t* accepted = job_.accepted;
   const int x0 = job_.x0, y0 = job_.y0;
   const uint64_t load_begin = out_.run.load_begin;
-  XorShift rng(job_.seed);
+  XorShift rng(step_->seed);
   const uint64_t thr = thr_ = backpressure_threshold(job_.backpressure);
   uint64_t waiting = 0;  // consecutive offers (valid, no stall_i) not accepted
   uint64_t refused = 0;
@@ -227,14 +265,14 @@ void TileRunner::drain() {
   while (t_.busy_o) {
     idle_fragment();
     if (s_.cycle - last > kDrainLimit) fail_busy(job_.x0, job_.y0);
-    tick_watched(job_.n);
+    tick_watched(step_->n);
   }
 }
 
 // The RTL's counters, final once drained, into the pass's and against the driver's view.
-void TileRunner::count() {
-  PassStats& st = out_.stats;
-  TileRun& r = out_.run;
+void TileRunner::count(TileRun& r) {
+  out_.stats.emplace_back();
+  PassStats& st = out_.stats.back();
   st.fragments_in += t_.cnt_frag_in_o;
   st.fragments_passed += t_.cnt_frag_passed_o;
   st.depth_reads += t_.cnt_depth_reads_o;
@@ -244,19 +282,21 @@ void TileRunner::count() {
   st.cycles += r.stream_end - r.stream_begin;
   r.stall_cycles = t_.cnt_stall_cycles_o;
   r.rtl_cycles = t_.cnt_cycles_o;
+  out_.run.stall_cycles += r.stall_cycles;
+  out_.run.rtl_cycles += r.rtl_cycles;
   const StreamCounters c{t_.cnt_frag_in_o, t_.cnt_frag_passed_o, t_.cnt_frag_killed_o,
                          r.rtl_cycles, r.stall_cycles};
   audit_stream(r, c, s_.cycle - cleared_ - 1, refused_);
 }
 
 void TileRunner::store() {
-  const uint8_t planes = job_.io.store;
+  const uint8_t planes = job_.store;
   if (!planes) return;
   t_.tile_req_i = 1;
   t_.tile_we_i = 0;
   for (int b = 0; b < sweep_.beats(); ++b) {
     t_.tile_addr_i = b;
-    tick_watched(job_.n);
+    tick_watched(0);
     refuses("tile_req_i (a store)");
     const BeatWords w = read_beat(t_);
     sweep_.store(w, planes, *job_.dst, b);
@@ -274,7 +314,7 @@ void TileRunner::store() {
 // of reads and of loads: past their width (zb_rop's TileCntW, two tiles' beats less one), so
 // their saturation shows.
 void TileRunner::reread() {
-  const uint8_t planes = job_.io.store;
+  const uint8_t planes = job_.store;
   const std::vector<BeatWords>& first = stored_;
   t_.tile_we_i = 0;
   // The port shows a read's beat "from cycle t+1 on" (docs/rtl.md "Tile port"): a bank that
@@ -301,7 +341,7 @@ void TileRunner::reread() {
     s_.tick();
     // At every beat, not only the last: a count whose hold path rewrites it wrong shows only
     // at some cycles.
-    const uint64_t loads = std::min(most, (job_.io.load ? beats : 0) + b + 1);
+    const uint64_t loads = std::min(most, (job_.steps.back().io.load ? beats : 0) + b + 1);
     audit_reload(out_.run, t_.cnt_tile_stores_o, t_.cnt_tile_loads_o, most, loads, b);
   }
   t_.tile_req_i = 0;

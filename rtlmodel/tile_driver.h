@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "rop/backend.h"
 #include "rop/framebuffer.h"
@@ -17,27 +18,35 @@ namespace zb {
 
 struct Sim;
 
-// One tile of a pass.
+// One pass of a tile's run: its state, what its setup fast-clears and its load brings in (the
+// planes it needs that the tile memory does not yet hold), and its fragments in stream order.
+struct TileStep {
+  uint16_t state = 0;                 // pack_state of the pass state
+  TileIo io;                          // clear, load and their values; io.store unused
+  const Streamed* stream = nullptr;
+  size_t n = 0;
+  uint64_t seed = 0;                  // tile_seed: back-pressure and idle inputs
+};
+
+// One tile's run: its passes on the resident tile (docs/rtl.md "Schedules"), one after the
+// other, then one store. Pass-major runs have one step.
 struct TileJob {
   int x0 = 0, y0 = 0;                 // tile origin, pixels
-  TileIo io;                          // the planes fast-cleared, loaded and stored
-  uint16_t state = 0;                 // pack_state of the pass state
+  std::vector<TileStep> steps;
+  uint8_t store = 0;                  // planes stored after the last step
   const Framebuffer* src = nullptr;   // the planes loaded from here
   Framebuffer* dst = nullptr;         // and stored here (src, or a replay's copy)
-  const Streamed* stream = nullptr;   // the tile's fragments in stream order
-  size_t n = 0;
-  const Fragment* pass = nullptr;     // the pass's fragments, by Streamed::index (the probe's)
-  uint64_t* accepted = nullptr;       // the pass's accept cycles, by Streamed::index: written
-  uint64_t seed = 0;                  // tile_seed: back-pressure and idle inputs
+  const Fragment* pass = nullptr;     // the run's fragments, by Streamed::index (the probe's)
+  uint64_t* accepted = nullptr;       // the run's accept cycles, by Streamed::index: written
   double backpressure = 0;            // RtlOptions'
   bool check_timing = true;
   bool reread_stores = false;
 };
 
 struct TileResult {
-  TileRun run;      // in the model's cycles
-  PassStats stats;  // the RTL's counters; cycles: streaming cycles
-  bool go = true;   // false: the retire sink asked to stop
+  TileRun run;                   // in the model's cycles: the first setup to the store's end
+  std::vector<PassStats> stats;  // per step, the RTL's counters; cycles: streaming cycles
+  bool go = true;                // false: the retire sink asked to stop
 };
 
 // Runs `job` on `sim`. Throws std::runtime_error when the RTL breaks the port contract, its

@@ -168,6 +168,32 @@ TileIo TileStates::plan(size_t tile, const RopState& s) const {
   return io;
 }
 
+std::vector<TileIo> TileStates::plan_group(size_t tile, const RopState* s, size_t n,
+                                           uint8_t& store) const {
+  std::vector<TileIo> ios(n);
+  uint8_t resident = 0;
+  store = 0;
+  for (size_t k = 0; k < n; ++k) {
+    TileIo& io = ios[k];
+    io = plan(tile, s[k]);
+    io.clear &= uint8_t(~resident);
+    io.load &= uint8_t(~resident);
+    store |= io.store;
+    io.store = 0;
+    resident |= planes_read(s[k]) | planes_written(s[k]);
+  }
+  return ios;
+}
+
+const char* to_string(TileSchedule s) { return s == TileSchedule::kTile ? "tile" : "pass"; }
+
+bool parse_schedule(const std::string& name, TileSchedule& out) {
+  if (name == "pass") out = TileSchedule::kPass;
+  else if (name == "tile") out = TileSchedule::kTile;
+  else return false;
+  return true;
+}
+
 void TileStates::stored(size_t tile, uint8_t planes) {
   for (int p = 0; p < kTilePlanes; ++p)
     if (planes >> p & 1) planes_.at(tile)[size_t(p)].cleared = false;

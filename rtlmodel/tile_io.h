@@ -65,6 +65,14 @@ struct TileIo {
   AccumWord accum_clear;
 };
 
+// The order the driver runs a frame's tiles and passes in (docs/rtl.md "Schedules"): pass after
+// pass, each loading and storing every tile it touches; or tile after tile, each tile loaded
+// once, every pass up to the next host frame operation run on it, stored once.
+enum class TileSchedule : uint8_t { kPass, kTile };
+const char* to_string(TileSchedule s);
+// "pass" or "tile"; false for anything else.
+bool parse_schedule(const std::string& name, TileSchedule& out);
+
 // Beats of a w x h tile: a beat is `beat` neighbours of one row. Loads and stores move the
 // whole tile also where the frame clips it: every word's fast-clear generation must follow
 // the plane's (zb_plane), so none may be left behind.
@@ -125,6 +133,10 @@ class TileStates {
 
   void frame_op(const FrameOp& op);
   TileIo plan(size_t tile, const RopState& s) const;
+  // A resident tile's passes `s[0..n)`: per pass what its setup fast-clears and its load brings
+  // in (the planes it needs that no earlier pass of them brought), and in `store` the planes
+  // stored after the last (every plane one of them writes).
+  std::vector<TileIo> plan_group(size_t tile, const RopState* s, size_t n, uint8_t& store) const;
   void stored(size_t tile, uint8_t planes);  // the pass stored these planes of the tile
 
  private:

@@ -45,6 +45,7 @@ Cosim::Cosim(CosimOptions options)
 
 void Cosim::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
                         int coverage_samples, const WboitFormat& wboit) {
+  run_group();  // the last frame's group, if it was not finished
   golden_.begin_frame(width, height, depth_bits, clear_color, coverage_samples, wboit);
   rtl_.begin_frame(width, height, depth_bits, clear_color, coverage_samples, wboit);
   ++frame_no_;
@@ -52,12 +53,16 @@ void Cosim::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color
 }
 
 void Cosim::begin_pass(const RopState& state) {
-  before_ = golden_.framebuffer();
-  state_ = state;
-  pass_name_ = std::move(next_pass_name_);
-  next_pass_name_.clear();
+  if (!rtl_.pending()) {  // a new group
+    before_ = golden_.framebuffer();
+    group_.clear();
+    scoreboard_.begin_pass();
+  }
   ++pass_in_frame_;
-  scoreboard_.begin_pass();
+  group_.push_back(GroupPass{state, std::move(next_pass_name_), pass_in_frame_, {}});
+  next_pass_name_.clear();
+  op_name_.clear();
+  state_ = state;
   golden_.begin_pass(state);
   rtl_.begin_pass(state);
 }
@@ -72,14 +77,25 @@ void Cosim::draw(const Fragment* fragments, size_t count) {
   fragments_ += count;
 }
 
-std::string Cosim::pass_label() const {
-  std::string s = "frame " + std::to_string(frame_no_) + " pass " + std::to_string(pass_in_frame_);
-  if (!pass_name_.empty()) s += " \"" + pass_name_ + "\"";
+std::string Cosim::pass_label(size_t k) const {
+  std::string s = "frame " + std::to_string(frame_no_);
+  if (!op_name_.empty() || group_.empty()) return s + " pass " + std::to_string(pass_in_frame_) +
+                                                   (op_name_.empty() ? "" : " \"" + op_name_ + "\"");
+  if (k == std::string::npos && group_.size() > 1)
+    return s + " passes " + std::to_string(group_.front().in_frame) + ".." +
+           std::to_string(group_.back().in_frame) + " (on the resident tile)";
+  const GroupPass& p = group_[k == std::string::npos ? 0 : k];
+  s += " pass " + std::to_string(p.in_frame);
+  if (!p.name.empty()) s += " \"" + p.name + "\"";
   return s;
 }
 
 PassStats Cosim::end_pass() {
-  const PassStats g = golden_.end_pass();
+  group_.back().golden = golden_.end_pass();
+  if (opt_.rtl.schedule == TileSchedule::kTile) {
+    rtl_.end_pass();
+    return PassStats{};
+  }
   scoreboard_.arm(golden_.framebuffer());
   PassStats r;
   try {
@@ -88,13 +104,40 @@ PassStats Cosim::end_pass() {
     ++passes_;
     report_divergence(*scoreboard_.first());
   }
-  ++passes_;
-  compare_frames();
-  if (g.fragments_in != r.fragments_in || g.fragments_passed != r.fragments_passed ||
-      g.depth_reads != r.depth_reads || g.depth_writes != r.depth_writes ||
-      g.color_reads != r.color_reads || g.color_writes != r.color_writes)
-    report_counters(r, g);
+  check_group({r});
   return r;
+}
+
+void Cosim::run_group() {
+  if (!rtl_.pending()) return;
+  scoreboard_.arm(golden_.framebuffer());
+  std::vector<PassStats> r;
+  try {
+    r = rtl_.flush();
+  } catch (const RtlStopped&) {
+    passes_ += group_.size();
+    report_divergence(*scoreboard_.first());
+  }
+  check_group(r);
+}
+
+void Cosim::check_group(const std::vector<PassStats>& rtl) {
+  passes_ += rtl.size();
+  compare_frames();
+  for (size_t k = 0; k < rtl.size(); ++k) {
+    const PassStats &g = group_[k].golden, &r = rtl[k];
+    if (g.fragments_in != r.fragments_in || g.fragments_passed != r.fragments_passed ||
+        g.depth_reads != r.depth_reads || g.depth_writes != r.depth_writes ||
+        g.color_reads != r.color_reads || g.color_writes != r.color_writes) {
+      at_pass(k);
+      report_counters(r, g, k);
+    }
+  }
+}
+
+void Cosim::finish_frame(std::vector<PassStats>& stats) {
+  run_group();
+  rtl_.finish_frame(stats);
 }
 
 void Cosim::compare_frames() {
@@ -115,10 +158,11 @@ void Cosim::compare_frames() {
 }
 
 void Cosim::frame_op(const FrameOp& op) {
+  run_group();
   before_ = golden_.framebuffer();
   golden_.frame_op(op);
   rtl_.frame_op(op);
-  pass_name_ = std::string("frame op ") + to_string(op.kind);
+  op_name_ = std::string("frame op ") + to_string(op.kind);
   compare_frames();
 }
 
@@ -139,10 +183,16 @@ void Cosim::report_pixel(int x, int y, size_t differing) {
   const size_t i = gf.index(x, y);
   o << "  accumulation: rtl=" << accum_text(rf.accum_at(i), rf.reveal_at(i))
     << " golden=" << accum_text(gf.accum_at(i), gf.reveal_at(i)) << "\n";
-  o << "  before the pass: " << rgba(before_.color_at(x, y)) << " z=" << hex(before_.depth_at(x, y), zd)
+  o << "  before the " << (group_.size() > 1 ? "group" : "pass") << ": "
+    << rgba(before_.color_at(x, y)) << " z=" << hex(before_.depth_at(x, y), zd)
     << " cov=" << before_.coverage_at(x, y) << " "
     << accum_text(before_.accum_at(i), before_.reveal_at(i)) << "\n";
-  o << "  state: " << state_text(state_) << "\n";
+  if (group_.size() > 1 && op_name_.empty()) {
+    for (const GroupPass& p : group_)
+      o << "  state of pass " << p.in_frame << ": " << state_text(p.state) << "\n";
+  } else {
+    o << "  state: " << state_text(state_) << "\n";
+  }
   uint64_t lo = std::numeric_limits<uint64_t>::max(), hi = 0;
   o << pixel_history(x, y, lo, hi, 64);
   const TileRun* run = tile_run(x, y);
@@ -160,9 +210,9 @@ void Cosim::report_pixel(int x, int y, size_t differing) {
   throw MismatchError(o.str(), x, y, fst);
 }
 
-void Cosim::report_counters(const PassStats& r, const PassStats& g) {
+void Cosim::report_counters(const PassStats& r, const PassStats& g, size_t k) {
   std::ostringstream o;
-  o << "MISMATCH in " << pass_label() << ": counters differ (frame bits agree)\n";
+  o << "MISMATCH in " << pass_label(k) << ": counters differ (frame bits agree)\n";
   auto row = [&](const char* name, uint64_t a, uint64_t b) {
     if (a != b) o << "  counter " << name << " rtl=" << a << " golden=" << b << "\n";
   };
@@ -203,7 +253,9 @@ std::string Cosim::pixel_history(int x, int y, uint64_t& lo, uint64_t& hi, size_
     lo = std::min(lo, acc[i]);
     hi = std::max(hi, acc[i]);
     if (touching > limit) continue;
-    list << "    #" << i << " z=" << hex(f.z, zd) << " " << rgba(f.color)
+    list << "    #" << i;
+    if (group_.size() > 1) list << " (pass " << group_[rtl_.pass_of(uint32_t(i))].in_frame << ")";
+    list << " z=" << hex(f.z, zd) << " " << rgba(f.color)
          << " cov=" << int(f.coverage) << " prim=" << f.prim << " accepted at cycle " << acc[i]
          << "\n";
     if (!logged) continue;
@@ -223,7 +275,8 @@ std::string Cosim::pixel_history(int x, int y, uint64_t& lo, uint64_t& hi, size_
     list << "\n";
   }
   std::ostringstream o;
-  o << "  fragments of this pass at (" << x << "," << y << "), oldest first: " << touching
+  o << "  fragments of this " << (group_.size() > 1 ? "group" : "pass") << " at (" << x << ","
+    << y << "), oldest first: " << touching
     << "\n" << list.str();
   if (touching > limit) o << "    ... " << (touching - limit) << " more\n";
   if (later) o << "    (" << later << " younger fragments of this pixel not shown)\n";
@@ -288,12 +341,15 @@ std::string Cosim::waveform(int x, int y, const TileRun& run, uint64_t lo, uint6
 
 void Cosim::report_divergence(const Divergence& d) {
   const Retire& r = d.retire;
+  const size_t k = !d.store && r.fragment != Retire::kNoFragment ? rtl_.pass_of(r.fragment)
+                                                                  : group_.size() - 1;
+  at_pass(k);
   const TileRun* run = tile_run(r.x, r.y);
   const uint64_t cycle = (run ? run->load_begin : 0) + r.tile_cycle;
   const int zd = (golden_.framebuffer().depth_bits + 3) / 4;
   ++mismatches_;
   std::ostringstream o;
-  o << "LOCKSTEP MISMATCH in " << pass_label() << ": the first wrong write, at cycle " << cycle
+  o << "LOCKSTEP MISMATCH in " << pass_label(k) << ": the first wrong write, at cycle " << cycle
     << " (its rising edge at " << wave_rise_text(cycle) << ")\n";
   if (!d.store && r.fragment != Retire::kNoFragment) {
     const Fragment& f = rtl_.pass_fragments().at(r.fragment);
@@ -304,7 +360,8 @@ void Cosim::report_divergence(const Divergence& d) {
   }
   o << "  " << d.what << "\n";
   o << "  state: " << state_text(state_) << "\n";
-  o << "  before the pass: " << rgba(before_.color_at(r.x, r.y))
+  o << "  before the " << (group_.size() > 1 ? "group" : "pass") << ": "
+    << rgba(before_.color_at(r.x, r.y))
     << " z=" << hex(before_.depth_at(r.x, r.y), zd) << " cov=" << before_.coverage_at(r.x, r.y)
     << " " << accum_text(before_.accum_at(before_.index(r.x, r.y)),
                          before_.reveal_at(before_.index(r.x, r.y)))
@@ -321,7 +378,7 @@ void Cosim::report_divergence(const Divergence& d) {
   for (WaveMarker& m : accept_markers(r.x, r.y, last)) view.markers.push_back(std::move(m));
   view.mismatch = cycle;
   view.title = "the first wrong write at pixel (" + std::to_string(r.x) + "," +
-               std::to_string(r.y) + "), " + pass_label() + "; markers: it, then its pixel's accepts";
+               std::to_string(r.y) + "), " + pass_label(k) + "; markers: it, then its pixel's accepts";
   if (run) o << waveform(r.x, r.y, *run, lo, hi, view, fst);
   throw MismatchError(o.str(), r.x, r.y, fst);
 }

@@ -53,10 +53,13 @@ class Cosim final : public Backend {
   void begin_pass(const RopState& state) override;
   using Backend::draw;
   void draw(const Fragment* fragments, size_t count) override;
-  // Compares the frames and counters; returns the RTL's stats (with cycles).
+  // Compares the frames and counters; returns the RTL's stats (with cycles). Under the tile
+  // schedule the RTL runs the pass with its group (frame_op, finish_frame): zeros here.
   PassStats end_pass() override;
-  // Applies the frame operation on both sides and compares every plane after it.
+  // Runs the group waiting on the RTL, if any, compared; then applies the frame operation on
+  // both sides and compares every plane after it.
   void frame_op(const FrameOp& op) override;
+  void finish_frame(std::vector<PassStats>& stats) override;
   const Framebuffer& framebuffer() const override { return rtl_.framebuffer(); }
 
   void label_pass(const std::string& name) override { next_pass_name_ = name; }
@@ -87,16 +90,30 @@ class Cosim final : public Backend {
                        WaveView view, std::string& fst);
   // Compares every plane of the two frames; throws MismatchError on the first difference.
   void compare_frames();
-  [[noreturn]] void report_counters(const PassStats& rtl, const PassStats& golden);
-  std::string pass_label() const;
+  // The RTL's group (tile schedule) run and compared: writes, frames, each pass's counters.
+  void run_group();
+  // After the RTL ran the group: its frames and each pass's counters.
+  void check_group(const std::vector<PassStats>& rtl);
+  [[noreturn]] void report_counters(const PassStats& rtl, const PassStats& golden, size_t k);
+  // "frame F pass P "name"": the group's pass k, or (k = npos) the whole group.
+  std::string pass_label(size_t k = std::string::npos) const;
+  void at_pass(size_t k) { state_ = group_[k].state; }  // the reports' state line
 
   Scoreboard scoreboard_;
   CosimOptions opt_;
   GoldenRop golden_;
   RtlRop rtl_;
-  Framebuffer before_;  // the frame at the start of the pass (both sides agreed then)
+  Framebuffer before_;  // the frame at the start of the group (both sides agreed then)
   RopState state_;
-  std::string next_pass_name_, pass_name_;
+  // The passes the RTL runs together (one but under the tile schedule), in order.
+  struct GroupPass {
+    RopState state;
+    std::string name;
+    uint64_t in_frame = 0;  // its number in the frame, from 1
+    PassStats golden;
+  };
+  std::vector<GroupPass> group_;
+  std::string next_pass_name_, op_name_;
   uint64_t pass_in_frame_ = 0, frame_no_ = 0;
   uint64_t pixels_compared_ = 0, fragments_ = 0, mismatches_ = 0, passes_ = 0;
 };

@@ -35,6 +35,7 @@ struct Args {
   bool quiet = false;
   std::string defect = "blend";  // zblend_tb_bug: the injected defect
   int mutant = 0;                // zblend_tb_mut: the live mutant, 0 for none
+  std::string schedule = "pass";
 };
 
 // Progress on stderr: a line as each suite starts, then one every kEvery with the share done
@@ -153,6 +154,10 @@ void add_options(CLI::App& app, Config& c, Args& a) {
                  "probability of stall and of a valid gap")
       ->check(CLI::Range(0.0, 0.95));
   app.add_option("--waves", c.cosim.rtl.trace_path, "FST of the whole run (also +trace)");
+  app.add_option("--schedule", a.schedule,
+                 "pass (each pass loads and stores every tile it touches) or tile (the passes "
+                 "up to a frame operation on the resident tile)")
+      ->capture_default_str();
   app.add_option("--mismatch-fst", c.cosim.mismatch_fst, "FST written around the first mismatch")
       ->capture_default_str();
   app.add_option("--replay", a.replay, "replay a trace file (zblend trace) through the cosim");
@@ -196,6 +201,9 @@ void check_args(const CLI::App& app, Config& c, const Args& a) {
                                    "suite's default)", name, value));
   c.iterations = a.iterations;
   c.fragments = static_cast<uint64_t>(a.fragments);
+  if (!parse_schedule(a.schedule, c.cosim.rtl.schedule))
+    throw UsageError(
+        fmt::format("--schedule: unknown schedule '{}' (choose from pass, tile)", a.schedule));
   std::vector<std::string>& plusargs = c.cosim.rtl.plusargs;
   if (a.defect == "window") plusargs.push_back("+zb_bug_window");
   if (a.defect == "accum") plusargs.push_back("+zb_bug_accum");

@@ -18,6 +18,7 @@ std::vector<PassStats> run_plan(const PassPlan& plan, const Viewport& vp, Rgba8 
     stats.push_back(backend.end_pass());
   }
   for (const FrameOp& op : plan.final_ops) backend.frame_op(resolve_op(op, background));
+  backend.finish_frame(stats);
   return stats;
 }
 

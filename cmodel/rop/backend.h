@@ -53,6 +53,10 @@ class Backend {
   virtual PassStats end_pass() = 0;
   // A frame operation between passes (never inside one).
   virtual void frame_op(const FrameOp& op) = 0;
+  // The frame's last call, after its final frame operations: a backend that runs passes later
+  // than end_pass (the RTL's tile schedule) runs them here and puts their counters in `stats`
+  // (one a pass, end_pass's in order). Others leave `stats` as it is.
+  virtual void finish_frame(std::vector<PassStats>& /*stats*/) {}
   virtual const Framebuffer& framebuffer() const = 0;
 };
 

@@ -1,6 +1,6 @@
 // The cost model (lab/sizing_cost.h, behind `zblend plan`) against the RTL itself: on every
-// built-in scene x every pass plan, the streaming and tile cycles it predicts at the RTL's tile
-// size are the ones the Verilated zb_rop takes.
+// built-in scene x every pass plan, under both schedules, the streaming and tile cycles it
+// predicts at the RTL's tile size are the ones the Verilated zb_rop takes.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -23,17 +23,24 @@ TEST(CostModel, EqualsTheRtlOnEveryBuiltinSceneAndMethod) {
   for (const SceneInfo& info : builtin_scenes()) {
     const RasterizedScene rs =
         rasterize_scene(*builtin_scene(info.name), Viewport{160, 120, kRtlDepthBits});
-    for (const PassPlan& plan : pass_plans()) {
-      RtlRop rtl;
-      CostCounter counter(rtl);
-      const RenderResult r = render(rs, plan, counter);
-      uint64_t stream = 0;
-      for (const PassStats& s : r.passes) stream += s.cycles;
-      const TileCost& c = counter.cost().at(kRtlTileW);
-      const std::string what = std::string(info.name) + " x " + plan.name;
-      EXPECT_EQ(c.stream_cycles, stream) << what << ": streaming cycles";
-      EXPECT_EQ(c.tile_io_cycles, rtl.tile_io_cycles()) << what << ": tile cycles";
-    }
+    for (const PassPlan& plan : pass_plans())
+      for (const TileSchedule sched : {TileSchedule::kPass, TileSchedule::kTile}) {
+        RtlOptions o;
+        o.schedule = sched;
+        RtlRop rtl(o);
+        CostCounter counter(rtl);
+        const uint64_t start = rtl.total_cycles();  // reset and the first sweep
+        const RenderResult r = render(rs, plan, counter);
+        uint64_t stream = 0;
+        for (const PassStats& s : r.passes) stream += s.cycles;
+        const TileCost& c = counter.cost().at(kRtlTileW);
+        const std::string what =
+            std::string(info.name) + " x " + plan.name + " under the " + to_string(sched) + " schedule";
+        EXPECT_EQ(c.stream_cycles, stream) << what << ": streaming cycles";
+        EXPECT_EQ(c.io_cycles(sched), rtl.tile_io_cycles()) << what << ": tile cycles";
+        EXPECT_EQ(stream + rtl.tile_io_cycles(), rtl.total_cycles() - start)
+            << what << ": every cycle is a stream's or the tile port's";
+      }
   }
 }
 
