@@ -310,6 +310,7 @@ void run_lab(const LabCommandOptions& o) {
   if (!o.quiet) {
     fmt::print(stderr, "zblend lab: {}\n", lab::tile_share_text(in.rows, kRtlBeat));
     fmt::print(stderr, "zblend lab: {}\n", lab::stream_share_text(in.rows, kRtlBeat));
+    fmt::print(stderr, "zblend lab: {}", lab::schedule_text(in.rows));
   }
   write(dir / "report.md", lab::report_markdown(in));
   write(dir / "report.html", lab::report_html(in));

@@ -129,13 +129,35 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
         row.model_stream_2buf[k] = c.two_buffer_stream;
         row.model_cycles_2buf[k] = c.two_buffer_cycles;
       }
-      row.model_pipe_2buf = counters[0]->cost().at(kRtlTileW).two_buffer_pipe;
-      row.model_stream_cycles = counters[0]->cost().at(kRtlTileW).stream_cycles;
+      const MethodCost& mc = counters[0]->cost();
+      row.model_pipe_2buf = mc.at(kRtlTileW).two_buffer_pipe;
+      row.model_stream_cycles = mc.at(kRtlTileW).stream_cycles;
+      const size_t beat_at =  // zb_rop's BEAT among kLabBeats
+          size_t(std::find(kLabBeats.begin(), kLabBeats.end(), kRtlBeat) - kLabBeats.begin());
+      const TileCost& at_rtl = counters.at(beat_at)->cost().at(kRtlTileW);
+      row.model_tile_cycles_resident = at_rtl.resident.io_cycles;
+      row.port_bytes_pass = at_rtl.port_bytes(TileSchedule::kPass, vp.depth_bits, vp.coverage_samples, vp.wboit);
+      row.port_bytes_tile = at_rtl.port_bytes(TileSchedule::kTile, vp.depth_bits, vp.coverage_samples, vp.wboit);
+      row.frame_op_pixels = mc.frame_op_pixels;
+      row.pixels = uint64_t(vp.width) * uint64_t(vp.height);
       if (rtl) {
         row.rtl_stream_cycles = sum_passes(rr).cycles;
         row.rtl_tile_cycles = rtl->tile_io_cycles();
         row.rtl_cycles = row.rtl_stream_cycles + row.rtl_tile_cycles;
         row.rtl_mismatch_pixels = differing_pixels(rr.framebuffer, image);
+        // The same frame under the tile schedule: its bits, and its cycles against the model's.
+        RtlOptions ro;
+        ro.schedule = TileSchedule::kTile;
+        RtlRop resident(ro);
+        const RenderResult rt = render(rs, *plan, resident);
+        row.rtl_resident_tile_cycles = resident.tile_io_cycles();
+        row.rtl_resident_mismatch_pixels = differing_pixels(rt.framebuffer, image);
+        if (sum_passes(rt).cycles != row.rtl_stream_cycles ||
+            *row.rtl_resident_tile_cycles != row.model_tile_cycles_resident)
+          throw std::runtime_error(fmt::format(
+              "lab: {} {} under the tile schedule: the RTL took {} streaming and {} tile cycles, "
+              "the cost model says {} and {}", ls.name, m, sum_passes(rt).cycles,
+              *row.rtl_resident_tile_cycles, row.rtl_stream_cycles, row.model_tile_cycles_resident));
       }
     } else if (m == kReferenceMethod) {
       image = run.reference;
@@ -177,7 +199,9 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
   for (const int beat : kLabBeats) csv += fmt::format(",tile_cycles_beat{}", beat);
   for (const int beat : kLabBeats) csv += fmt::format(",stream_cycles_2buf_beat{}", beat);
   for (const int beat : kLabBeats) csv += fmt::format(",cycles_2buf_beat{}", beat);
-  csv += ",edge_pixels,hidden_drawn,visible_missing,hidden_drawn_share,visible_missing_share\n";
+  csv += ",edge_pixels,hidden_drawn,visible_missing,hidden_drawn_share,visible_missing_share";
+  csv += ",tile_cycles_tile_schedule,rtl_tile_cycles_tile_schedule,rtl_mismatch_pixels_tile_schedule,"
+         "port_bytes_pass,port_bytes_tile,frame_op_pixels\n";
   for (const LabRow& r : rows) {
     const PassStats& s = r.golden;
     const std::string cost =
@@ -203,10 +227,16 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
                               r.lines->hidden_drawn, r.lines->visible_missing,
                               r.lines->hidden_drawn_share(), r.lines->visible_missing_share())
                 : ",,,,";
-    csv += fmt::format("{},{},{},{},{:.3f},{},{},{},{},{:.4f},{:.4f},{},{}\n", r.scene, r.family,
+    const std::string sched =
+        r.has_cost ? fmt::format("{},{},{},{},{},{}", r.model_tile_cycles_resident,
+                                 r.rtl_resident_tile_cycles ? std::to_string(*r.rtl_resident_tile_cycles) : "",
+                                 r.rtl_resident_tile_cycles ? std::to_string(r.rtl_resident_mismatch_pixels) : "",
+                                 r.port_bytes_pass, r.port_bytes_tile, r.frame_op_pixels)
+                   : ",,,,,";
+    csv += fmt::format("{},{},{},{},{:.3f},{},{},{},{},{:.4f},{:.4f},{},{},{}\n", r.scene, r.family,
                        r.method, cost, r.host_ms, rtl, error_cells(r.error),
                        error_cells(r.error_ss), to_string(r.fair), r.fair_error().delta_e_mean,
-                       r.fair_error().rmse, model, lines);
+                       r.fair_error().rmse, model, lines, sched);
   }
   return csv;
 }
@@ -273,6 +303,63 @@ std::string stream_share_text(const std::vector<LabRow>& rows, int beat) {
                        "beat: {:.4f} with one buffer, {:.4f} with two (worst run {:.3f}, {})",
                        beat, all_one.overall(), all_two.overall(), all_two.worst,
                        all_two.worst_run.empty() ? "none" : all_two.worst_run);
+  return out;
+}
+
+std::string schedule_text(const std::vector<LabRow>& rows) {
+  static const size_t kRtlBeatAt =
+      size_t(std::find(kLabBeats.begin(), kLabBeats.end(), kRtlBeat) - kLabBeats.begin());
+  static_assert(kLabBeats.size() > 0);
+  struct Sum {
+    uint64_t fragments = 0, stream = 0, io[2] = {0, 0}, bytes[2] = {0, 0}, host = 0, pixels = 0,
+             mismatch[2] = {0, 0}, runs = 0;
+    void add(const LabRow& r) {
+      fragments += r.golden.fragments_in;
+      stream += r.model_stream_cycles;
+      io[0] += r.model_tile_cycles[kRtlBeatAt];
+      io[1] += r.model_tile_cycles_resident;
+      bytes[0] += r.port_bytes_pass;
+      bytes[1] += r.port_bytes_tile;
+      host += r.frame_op_pixels;
+      pixels += r.pixels;
+      mismatch[0] += r.rtl_mismatch_pixels;
+      mismatch[1] += r.rtl_resident_mismatch_pixels;
+      ++runs;
+    }
+    double per(uint64_t c) const { return fragments ? double(c) / double(fragments) : 0.0; }
+  };
+  Sum all;
+  std::vector<std::pair<std::string, Sum>> methods;
+  bool rtl = false;
+  for (const LabRow& r : rows) {
+    if (!r.has_cost || r.golden.fragments_in == 0) continue;
+    rtl = rtl || r.rtl_resident_tile_cycles.has_value();
+    all.add(r);
+    auto it = std::find_if(methods.begin(), methods.end(), [&](const auto& m) { return m.first == r.method; });
+    if (it == methods.end()) it = methods.insert(methods.end(), {r.method, Sum{}});
+    it->second.add(r);
+  }
+  auto line = [](const std::string& what, const Sum& s, int i) {
+    return fmt::format("{} {}: all cycles per fragment {:.4f} (streaming {:.4f}, tile port {:.4f}), "
+                       "{:.4f} with the host's frame operations at a pixel a clock; tile-port "
+                       "bytes per pixel {:.1f}",
+                       what, i ? "tile" : "pass", s.per(s.stream + s.io[i]), s.per(s.stream),
+                       s.per(s.io[i]), s.per(s.stream + s.io[i] + s.host),
+                       s.pixels ? double(s.bytes[i]) / double(s.pixels) : 0.0);
+  };
+  std::string out;
+  for (int i = 0; i < 2; ++i) {
+    out += line("schedule", all, i);
+    if (rtl) out += fmt::format("; {} mismatching pixels on the RTL", all.mismatch[i]);
+    out += "\n";
+  }
+  for (const auto& [name, m] : methods)
+    out += fmt::format("  {:<16} pass: {:.4f} cycles/fragment, {:7.1f} B/pixel; tile: {:.4f}, "
+                       "{:7.1f} B/pixel; host frame operations {:.4f} cycles/fragment\n",
+                       name, m.per(m.stream + m.io[0]),
+                       m.pixels ? double(m.bytes[0]) / double(m.pixels) : 0.0,
+                       m.per(m.stream + m.io[1]),
+                       m.pixels ? double(m.bytes[1]) / double(m.pixels) : 0.0, m.per(m.host));
   return out;
 }
 

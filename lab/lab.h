@@ -69,6 +69,17 @@ struct LabRow {
   // cycles, the tile port's included.
   std::array<uint64_t, kLabBeats.size()> model_stream_2buf{}, model_cycles_2buf{};
   uint64_t model_pipe_2buf = 0;  // its streaming cycles with a port of no cycles (TileCost)
+  // The tile schedule (docs/rtl.md "Schedules"; the fields above are the pass schedule's): the
+  // cost model's tile cycles at zb_rop's BEAT, and, with the RTL, its run under that schedule:
+  // tile cycles and pixels differing from the golden frame.
+  uint64_t model_tile_cycles_resident = 0;
+  std::optional<uint64_t> rtl_resident_tile_cycles;
+  uint64_t rtl_resident_mismatch_pixels = 0;
+  // Tile-port bytes per frame (loads and stores, each plane its width), per schedule, and the
+  // pixels the host's frame operations touch (a pixel a clock on a tile port).
+  uint64_t port_bytes_pass = 0, port_bytes_tile = 0;
+  uint64_t frame_op_pixels = 0;
+  uint64_t pixels = 0;           // the frame's
   ImageError error;               // against the exact reference
   ImageError error_ss;            // against the supersampled reference
   FairReference fair = FairReference::kExact;
@@ -110,6 +121,10 @@ std::string tile_share_text(const std::vector<LabRow>& rows, int beat);
 // the worst run, the runs above 1.01; and all cycles per fragment, tile port included, with one
 // buffer and with two at `beat` (one of kLabBeats; otherwise left out).
 std::string stream_share_text(const std::vector<LabRow>& rows, int beat);
+// Per schedule (pass, tile) over the rows with a cost: all cycles per fragment (streaming and
+// the tile port; then with the host's frame operations at a pixel a clock), tile-port bytes per
+// pixel, and the RTL's mismatching pixels; a line each, then one per method (its scenes' sums).
+std::string schedule_text(const std::vector<LabRow>& rows);
 
 // The non-dominated points when both coordinates are to be minimised: indices of the points
 // that no other point matches or beats in both and beats in one, in order of x, then y.
