@@ -112,7 +112,7 @@ function(zblend_verilate target)
   endif()
   if(V_BUG)
     list(APPEND args +define+ZB_INJECT_BLEND_BUG +define+ZB_INJECT_WINDOW_BUG
-         +define+ZB_INJECT_ACCUM_BUG)
+         +define+ZB_INJECT_ACCUM_BUG +define+ZB_INJECT_TILEOP_BUG)
   endif()
   set(kind "")
   if(V_SYSTEMC)

@@ -139,6 +139,7 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
       row.port_bytes_pass = at_rtl.port_bytes(TileSchedule::kPass, vp.depth_bits, vp.coverage_samples, vp.wboit);
       row.port_bytes_tile = at_rtl.port_bytes(TileSchedule::kTile, vp.depth_bits, vp.coverage_samples, vp.wboit);
       row.frame_op_pixels = mc.frame_op_pixels;
+      row.host_op_pixels_tile = at_rtl.resident.host_op_pixels;
       row.pixels = uint64_t(vp.width) * uint64_t(vp.height);
       if (rtl) {
         row.rtl_stream_cycles = sum_passes(rr).cycles;
@@ -201,7 +202,7 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
   for (const int beat : kLabBeats) csv += fmt::format(",cycles_2buf_beat{}", beat);
   csv += ",edge_pixels,hidden_drawn,visible_missing,hidden_drawn_share,visible_missing_share";
   csv += ",tile_cycles_tile_schedule,rtl_tile_cycles_tile_schedule,rtl_mismatch_pixels_tile_schedule,"
-         "port_bytes_pass,port_bytes_tile,frame_op_pixels\n";
+         "port_bytes_pass,port_bytes_tile,frame_op_pixels,host_op_pixels_tile_schedule\n";
   for (const LabRow& r : rows) {
     const PassStats& s = r.golden;
     const std::string cost =
@@ -228,11 +229,12 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
                               r.lines->hidden_drawn_share(), r.lines->visible_missing_share())
                 : ",,,,";
     const std::string sched =
-        r.has_cost ? fmt::format("{},{},{},{},{},{}", r.model_tile_cycles_resident,
+        r.has_cost ? fmt::format("{},{},{},{},{},{},{}", r.model_tile_cycles_resident,
                                  r.rtl_resident_tile_cycles ? std::to_string(*r.rtl_resident_tile_cycles) : "",
                                  r.rtl_resident_tile_cycles ? std::to_string(r.rtl_resident_mismatch_pixels) : "",
-                                 r.port_bytes_pass, r.port_bytes_tile, r.frame_op_pixels)
-                   : ",,,,,";
+                                 r.port_bytes_pass, r.port_bytes_tile, r.frame_op_pixels,
+                                 r.host_op_pixels_tile)
+                   : ",,,,,,";
     csv += fmt::format("{},{},{},{},{:.3f},{},{},{},{},{:.4f},{:.4f},{},{},{}\n", r.scene, r.family,
                        r.method, cost, r.host_ms, rtl, error_cells(r.error),
                        error_cells(r.error_ss), to_string(r.fair), r.fair_error().delta_e_mean,
@@ -311,7 +313,7 @@ std::string schedule_text(const std::vector<LabRow>& rows) {
       size_t(std::find(kLabBeats.begin(), kLabBeats.end(), kRtlBeat) - kLabBeats.begin());
   static_assert(kLabBeats.size() > 0);
   struct Sum {
-    uint64_t fragments = 0, stream = 0, io[2] = {0, 0}, bytes[2] = {0, 0}, host = 0, pixels = 0,
+    uint64_t fragments = 0, stream = 0, io[2] = {0, 0}, bytes[2] = {0, 0}, host[2] = {0, 0}, pixels = 0,
              mismatch[2] = {0, 0}, runs = 0;
     void add(const LabRow& r) {
       fragments += r.golden.fragments_in;
@@ -320,7 +322,8 @@ std::string schedule_text(const std::vector<LabRow>& rows) {
       io[1] += r.model_tile_cycles_resident;
       bytes[0] += r.port_bytes_pass;
       bytes[1] += r.port_bytes_tile;
-      host += r.frame_op_pixels;
+      host[0] += r.frame_op_pixels;
+      host[1] += r.host_op_pixels_tile;
       pixels += r.pixels;
       mismatch[0] += r.rtl_mismatch_pixels;
       mismatch[1] += r.rtl_resident_mismatch_pixels;
@@ -344,7 +347,7 @@ std::string schedule_text(const std::vector<LabRow>& rows) {
                        "{:.4f} with the host's frame operations at a pixel a clock; tile-port "
                        "bytes per pixel {:.1f}",
                        what, i ? "tile" : "pass", s.per(s.stream + s.io[i]), s.per(s.stream),
-                       s.per(s.io[i]), s.per(s.stream + s.io[i] + s.host),
+                       s.per(s.io[i]), s.per(s.stream + s.io[i] + s.host[i]),
                        s.pixels ? double(s.bytes[i]) / double(s.pixels) : 0.0);
   };
   std::string out;
@@ -354,12 +357,12 @@ std::string schedule_text(const std::vector<LabRow>& rows) {
     out += "\n";
   }
   for (const auto& [name, m] : methods)
-    out += fmt::format("  {:<16} pass: {:.4f} cycles/fragment, {:7.1f} B/pixel; tile: {:.4f}, "
-                       "{:7.1f} B/pixel; host frame operations {:.4f} cycles/fragment\n",
+    out += fmt::format("  {:<16} pass: {:.4f} cycles/fragment, {:5.1f} B/pixel, host frame "
+                       "operations {:.4f}; tile: {:.4f}, {:5.1f} B/pixel, host {:.4f}\n",
                        name, m.per(m.stream + m.io[0]),
-                       m.pixels ? double(m.bytes[0]) / double(m.pixels) : 0.0,
+                       m.pixels ? double(m.bytes[0]) / double(m.pixels) : 0.0, m.per(m.host[0]),
                        m.per(m.stream + m.io[1]),
-                       m.pixels ? double(m.bytes[1]) / double(m.pixels) : 0.0, m.per(m.host));
+                       m.pixels ? double(m.bytes[1]) / double(m.pixels) : 0.0, m.per(m.host[1]));
   return out;
 }
 

@@ -79,6 +79,7 @@ struct LabRow {
   // pixels the host's frame operations touch (a pixel a clock on a tile port).
   uint64_t port_bytes_pass = 0, port_bytes_tile = 0;
   uint64_t frame_op_pixels = 0;
+  uint64_t host_op_pixels_tile = 0;  // of those, left on the host under the tile schedule
   uint64_t pixels = 0;           // the frame's
   ImageError error;               // against the exact reference
   ImageError error_ss;            // against the supersampled reference

@@ -67,6 +67,9 @@ void CostCounter::begin_frame(int width, int height, int depth_bits, Rgba8 clear
   cost_ = MethodCost{};
   cost_.wboit = wboit;
   pass_states_.clear();
+  group_steps_.clear();
+  group_passes_ = 0;
+  group_resolve_ = false;
   grids_.clear();
   for (const int size : kAnalysisTileSizes) {
     Grid g;
@@ -75,6 +78,7 @@ void CostCounter::begin_frame(int width, int height, int depth_bits, Rgba8 clear
     g.stream.assign(size_t(g.columns) * size_t((height + size - 1) / size), {});
     g.states = TileStates(width, height, size, depth_bits, clear_color);
     g.resident_states = g.states;
+    g.group_start = g.states;
     grids_.push_back(std::move(g));
     cost_.tiles.push_back(TileCost{});
     cost_.tiles.back().tile = size;
@@ -84,6 +88,11 @@ void CostCounter::begin_frame(int width, int height, int depth_bits, Rgba8 clear
 void CostCounter::begin_pass(const RopState& state) {
   inner_.begin_pass(state);
   state_ = state;
+  if (group_resolve_) end_group();  // its store resolved: closed
+  if (group_passes_ == 0)
+    for (Grid& g : grids_) g.group_start = g.resident_states;
+  group_steps_.push_back(TileStates::GroupStep{true, false, state, FrameOp{}});
+  ++group_passes_;
 }
 
 // The driver streams each tile's fragments in pass order (a stable binning).
@@ -137,48 +146,61 @@ PassStats CostCounter::end_pass() {
     c.two_buffer_pipe += schedule_.run_two_buffers(overlapped).stream;
     for (const uint32_t t : g.touched) g.stream[t].clear();
     c.tiles_loaded += g.touched.size();
-    g.group.emplace_back(state_, std::move(g.touched));
+    g.group.push_back(std::move(g.touched));
     g.touched.clear();
   }
   return s;
 }
 
 // As the RTL driver's tile schedule (rtlmodel/rtl_rop.cpp): per tile the group's passes that
-// touch it, each a setup cycle and its loads (TileStates::plan_group), then one store.
+// touch it and the operations on the resident tile (TileStates::plan_tile, from the tile states
+// at the group's start): a copy or sweep before a pass, its setup cycle and loads, one store.
 void CostCounter::end_group() {
+  if (group_passes_ == 0) return;
   for (size_t k = 0; k < grids_.size(); ++k) {
     Grid& g = grids_[k];
-    if (g.group.empty()) continue;
     ResidentTraffic& r = cost_.tiles[k].resident;
     const uint64_t beats = tile_beats(g.size, g.size, beat_);
     std::vector<uint32_t> all;
-    for (const auto& p : g.group) all.insert(all.end(), p.second.begin(), p.second.end());
+    for (const auto& p : g.group) all.insert(all.end(), p.begin(), p.end());
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
-    std::vector<RopState> states;
     for (const uint32_t t : all) {
-      states.clear();
-      for (const auto& p : g.group)
-        if (std::binary_search(p.second.begin(), p.second.end(), t)) states.push_back(p.first);
-      uint8_t store = 0;
-      const std::vector<TileIo> ios = g.resident_states.plan_group(t, states.data(), states.size(), store);
-      g.resident_states.stored(t, store);
+      size_t pass = 0;
+      for (TileStates::GroupStep& st : group_steps_)
+        if (st.pass) st.touches = std::binary_search(g.group[pass].begin(), g.group[pass].end(), t), ++pass;
+      const TileStates::RunPlan run = g.group_start.plan_tile(t, group_steps_.data(), group_steps_.size());
+      g.resident_states.stored(t, run.store);
       const int x0 = int(t % uint32_t(g.columns)) * g.size;
       const int y0 = int(t / uint32_t(g.columns)) * g.size;
       const uint64_t pixels = uint64_t(std::min(g.size, width_ - x0)) *
                               uint64_t(std::min(g.size, height_ - y0));
       ++r.tile_runs;
-      for (const TileIo& io : ios) {
-        r.io_cycles += kRtlTileSetup + (io.load ? beats : 0);
-        r.beats += io.load ? beats : 0;
-        for (int p = 0; p < kTilePlanes; ++p) r.plane_pixels[size_t(p)] += pixels * (io.load >> p & 1);
+      auto reads = [&](bool copy, bool sweep) {
+        return copy ? beats + kRtlCopyTail : sweep ? beats : 0;
+      };
+      auto load = [&](uint8_t planes) {
+        if (!planes) return;
+        r.io_cycles += beats;
+        r.beats += beats;
+        for (int p = 0; p < kTilePlanes; ++p) r.plane_pixels[size_t(p)] += pixels * (planes >> p & 1);
+      };
+      for (const TileStates::RunPlan::Step& st : run.steps) {
+        load(st.preload);
+        r.io_cycles += reads(st.copy, st.sweep) + kRtlTileSetup;
+        load(st.io.load);
       }
-      r.io_cycles += store ? beats : 0;
-      r.beats += store ? beats : 0;
-      for (int p = 0; p < kTilePlanes; ++p) r.plane_pixels[size_t(p)] += pixels * (store >> p & 1);
+      load(run.preload_after);
+      r.io_cycles += reads(run.copy_after, run.sweep_after && !run.store);
+      r.io_cycles += run.store ? beats : 0;
+      r.beats += run.store ? beats : 0;
+      for (int p = 0; p < kTilePlanes; ++p) r.plane_pixels[size_t(p)] += pixels * (run.store >> p & 1);
     }
     g.group.clear();
   }
+  group_steps_.clear();
+  group_passes_ = 0;
+  group_resolve_ = false;
 }
 
 // A backend that ran its passes only now (the RTL's tile schedule) gave zeros at end_pass: the
@@ -196,9 +218,21 @@ void CostCounter::finish_frame(std::vector<PassStats>& stats) {
   }
 }
 
+// Under the tile schedule an operation runs on the resident tiles when passes wait and it is not
+// the accumulation's resolve (RtlRop::on_tile); else the group ends, and a copy or a resolve
+// costs the host a pixel a clock (a clear is a fast clear wherever it is).
 void CostCounter::frame_op(const FrameOp& op) {
   inner_.frame_op(op);
-  end_group();
+  if (group_passes_ > 0 && !group_resolve_ && op.kind != FrameOpKind::kResolveWboit) {
+    if (op.kind == FrameOpKind::kResolveUnder)
+      group_resolve_ = true;
+    else
+      group_steps_.push_back(TileStates::GroupStep{false, false, RopState{}, op});
+  } else {
+    end_group();
+    if (op.kind != FrameOpKind::kClearColor && op.kind != FrameOpKind::kClearDepth)
+      for (TileCost& c : cost_.tiles) c.resident.host_op_pixels += uint64_t(width_) * uint64_t(height_);
+  }
   for (Grid& g : grids_) {
     g.states.frame_op(op);
     g.resident_states.frame_op(op);

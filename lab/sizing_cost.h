@@ -15,13 +15,17 @@
 namespace zb {
 
 // The tile port's traffic of the tile schedule (TileSchedule::kTile): a run per tile and group
-// of passes (the passes between two host frame operations), its setup cycle per pass, its
-// loads as each plane is first needed, one store.
+// of passes (up to a frame operation left on the host), per pass a copy or sweep before it when
+// the frame operations on the resident tile need one, its setup cycle, its loads as each plane
+// is first needed; one store.
 struct ResidentTraffic {
   uint64_t tile_runs = 0;       // tiles loaded (once a group)
   uint64_t io_cycles = 0;
   uint64_t beats = 0;
   std::array<uint64_t, kTilePlanes> plane_pixels{};
+  // Pixels of the frame operations left on the host (a copy or resolve with no group waiting,
+  // the accumulation's resolve): a pixel a clock on a tile port. Clears are fast clears.
+  uint64_t host_op_pixels = 0;
 };
 
 // A method's cost with square tiles of one size. The fields without a schedule in their name
@@ -113,11 +117,14 @@ class CostCounter final : public Backend {
     TileStates states;
     // The tile schedule's: the frame's planes per tile, and the group's passes with the tiles
     // each touches (sorted).
-    TileStates resident_states;
-    std::vector<std::pair<RopState, std::vector<uint32_t>>> group;
+    TileStates resident_states, group_start;
+    std::vector<std::vector<uint32_t>> group;  // per pass of the group: its tiles, sorted
   };
   void end_group();  // the tile schedule's group ends: its traffic
   std::vector<RopState> pass_states_;  // the frame's, for finish_frame's counters
+  std::vector<TileStates::GroupStep> group_steps_;  // the tile schedule's group
+  size_t group_passes_ = 0;
+  bool group_resolve_ = false;
   Backend& inner_;
   int beat_;
   RopState state_;

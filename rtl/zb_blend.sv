@@ -142,13 +142,16 @@ module zb_blend
 
 `ifdef ZB_INJECT_BLEND_BUG
     // Deliberate defect for checker tests: alpha blend, odd source alpha (k = 255 - a even),
-    // red bit 0 flipped. The flag rides the pipeline with the fragment. On unless the plusarg
-    // +zb_bug_window or +zb_bug_accum picks another defect (zb_issue_window, zb_accum).
+    // red bit 0 flipped. The flag rides the pipeline with the fragment. On unless a plusarg
+    // picks another defect: +zb_bug_window, +zb_bug_accum, +zb_bug_copy or +zb_bug_resolve
+    // (zb_issue_window, zb_accum, zb_depth, zb_resolve).
     if (c == 0) begin : g_bug
       logic [4:1] bug_q;
       logic       bug_on;
       initial bug_on = $test$plusargs("zb_bug_window") == 0
-                       && $test$plusargs("zb_bug_accum") == 0;
+                       && $test$plusargs("zb_bug_accum") == 0
+                       && $test$plusargs("zb_bug_copy") == 0
+                       && $test$plusargs("zb_bug_resolve") == 0;
       always_ff @(posedge clk_i) begin
         bug_q <= {bug_q[3:1], bug_on && mode_i == zb_pkg::BlendAlpha && !k_i[0]};
       end

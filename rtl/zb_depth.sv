@@ -22,6 +22,7 @@ module zb_depth #(
   input  logic                                tile_req_i,
   input  logic                                tile_we_i,
   input  logic                                tile_clear_i,
+  input  logic                                tile_copy_i,  // with a tile read: depth to peel
   input  zb_pkg::planes_t                     tile_planes_i,
   input  logic [$clog2(WORDS / BEAT)-1:0]     tile_addr_i,
   input  logic [BEAT*DEPTH_BITS-1:0]          tile_wdepth_i,
@@ -108,6 +109,32 @@ module zb_depth #(
     .rdata_o     (vmem_rdata)
   );
 
+  // Copy depth to peel (docs/rtl.md "Tile operations"): a tile read with tile_copy_i loads the
+  // depth beat it read, as the port shows it the next cycle (fresh words as the clear value),
+  // into the peel plane at that cycle's edge.
+  logic                            copy_q;
+  logic [$clog2(WORDS / BEAT)-1:0] copy_addr_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      copy_q <= 1'b0;
+    end else begin
+      copy_q <= tile_req_i & ~tile_we_i & tile_copy_i;
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    copy_addr_q <= tile_addr_i;
+  end
+  logic [BEAT*DEPTH_BITS-1:0] copy_data;
+`ifdef ZB_INJECT_TILEOP_BUG
+  // Deliberate defect for checker tests, on with the plusarg +zb_bug_copy: the copy flips bit 0
+  // of each beat's lane 0.
+  logic bug_copy;
+  initial bug_copy = $test$plusargs("zb_bug_copy") != 0;
+  assign copy_data = tile_rdepth_o ^ (BEAT*DEPTH_BITS)'(bug_copy);
+`else
+  assign copy_data = tile_rdepth_o;
+`endif
+
   zb_plane #(
     .WIDTH    (DEPTH_BITS),
     .WORDS    (WORDS),
@@ -116,12 +143,12 @@ module zb_depth #(
   ) u_peel_plane (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
-    .tile_req_i  (tile_req_i),
-    .tile_we_i   (tile_we_i),
-    .tile_en_i   (tile_planes_i.peel),
+    .tile_req_i  (tile_req_i | copy_q),
+    .tile_we_i   (tile_we_i | copy_q),
+    .tile_en_i   (tile_planes_i.peel | copy_q),
     .tile_clear_i(tile_clear_i),
-    .tile_addr_i (tile_addr_i),
-    .tile_wdata_i(tile_wpeel_i),
+    .tile_addr_i (copy_q ? copy_addr_q : tile_addr_i),
+    .tile_wdata_i(copy_q ? copy_data : tile_wpeel_i),
     .tile_rdata_o(tile_rpeel_o),
     .pipe_re_i   (issue_i),
     .pipe_raddr_i(m_addr_i),

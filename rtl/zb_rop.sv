@@ -32,6 +32,7 @@ module zb_rop
   parameter int ACC_BITS   = 16,   // accumulation channel, 8..32
   parameter int REV_BITS   = 8,    // revealage, 8..16
   parameter int WEIGHT_BITS = 4,   // depth weight's range, 0..16
+  parameter bit TILE_OPS   = 1'b1, // the tile operations copy and resolve (docs/rtl.md)
   localparam int AddrW     = $clog2(TILE_W * TILE_H),
   localparam int BeatAW    = $clog2(TILE_W * TILE_H / BEAT),
   localparam int CovW      = $clog2(COV_SAMPLES + 1),  // coverage count 0..N
@@ -54,10 +55,14 @@ module zb_rop
   // Tile port (docs/rtl.md "Tile port"): a beat of BEAT pixels of a row a clock, lane b at
   // [b*width +: width]. tile_req_i with tile_we_i loads the beat at tile_addr_i into the planes
   // of tile_planes_i; without, reads it (the data next clock). tile_clear_i fast-clears the
-  // planes of tile_planes_i to lane 0 of the write data: no beat moves.
+  // planes of tile_planes_i to lane 0 of the write data: no beat moves. With a read,
+  // tile_copy_i also loads the depth beat read into the peel plane at the next edge, and
+  // tile_resolve_i shows the colour beat resolved under lane 0 of tile_wcolor_i (TILE_OPS).
   input  logic                       tile_req_i,
   input  logic                       tile_we_i,
   input  logic                       tile_clear_i,
+  input  logic                       tile_copy_i,
+  input  logic                       tile_resolve_i,
   input  zb_pkg::planes_t            tile_planes_i,
   input  logic [BeatAW-1:0]          tile_addr_i,
   input  logic [BEAT*32-1:0]         tile_wcolor_i,
@@ -294,6 +299,7 @@ module zb_rop
     .tile_req_i   (tile_req_i),
     .tile_we_i    (tile_we_i),
     .tile_clear_i (tile_clear_i),
+    .tile_copy_i  (TILE_OPS ? tile_copy_i : 1'b0),
     .tile_planes_i(tile_planes_i),
     .tile_addr_i  (tile_addr_i),
     .tile_wdepth_i(tile_wdepth_i),
@@ -365,8 +371,37 @@ module zb_rop
   );
 
   // ---------------------------------------------------------------------------------------
-  // X5..X11: colour (zb_color).
+  // X5..X11: colour (zb_color), and the resolve on the store's way out (zb_resolve): a read
+  // with tile_resolve_i resolves the beat under the background its cycle's lane 0 carries.
   // ---------------------------------------------------------------------------------------
+  logic [BEAT*32-1:0] color_lanes;
+  if (TILE_OPS) begin : g_resolve
+    logic        resolve_q;
+    logic [31:0] bg_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        resolve_q <= 1'b0;
+      end else begin
+        resolve_q <= tile_req_i & ~tile_we_i & tile_resolve_i;
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      bg_q <= tile_wcolor_i[31:0];
+    end
+    zb_resolve #(
+      .BEAT(BEAT)
+    ) u_resolve (
+      .en_i   (resolve_q),
+      .bg_i   (bg_q),
+      .color_i(color_lanes),
+      .color_o(tile_rcolor_o)
+    );
+  end else begin : g_no_resolve
+    assign tile_rcolor_o = color_lanes;
+    logic unused_ops;
+    assign unused_ops = ^{tile_copy_i, tile_resolve_i};
+  end
+
   zb_color #(
     .WORDS      (Words),
     .BEAT       (BEAT),
@@ -383,7 +418,7 @@ module zb_rop
     .tile_en_i    (tile_planes_i.color),
     .tile_addr_i  (tile_addr_i),
     .tile_wcolor_i(tile_wcolor_i),
-    .tile_rcolor_o(tile_rcolor_o),
+    .tile_rcolor_o(color_lanes),
     .x5_valid_i   (x_valid_q[5]),
     .x6_valid_i   (x_valid_q[6]),
     .x10_valid_i  (x_valid_q[10]),
@@ -562,6 +597,11 @@ module zb_rop
       m_valid_q |-> !depth_older);
   ColorReadAfterWrite: assert property (@(posedge clk_i) disable iff (!rst_ni)
       x_valid_q[5] |-> !color_older);
+  // The tile operations ride on a tile read (docs/rtl.md "Tile operations").
+  TileOpOnRead: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (tile_copy_i || tile_resolve_i) |-> (tile_req_i && !tile_we_i));
+  TileOpsPresent: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      !TILE_OPS |-> !(tile_copy_i || tile_resolve_i));
   // Only the six blend codes are loaded.
   BlendCodeValid: assert property (@(posedge clk_i) disable iff (!rst_ni)
       state_we_i |-> (state_i.blend <= zb_pkg::BlendAccumulate));

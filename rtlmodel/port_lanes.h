@@ -97,17 +97,18 @@ void put_accum(Writer<Port>& p, const AccumWord& w) {
 
 }  // namespace lanes
 
-// The beat the tile port read at the last edge (colour, depth, coverage, accumulation; peel is
-// never stored).
+// The beat the tile port read at the last edge (colour, depth, coverage, peel, accumulation).
 template <class Model>
 BeatWords read_beat(const Model& t) {
   using lanes::Reader;
   BeatWords w{};
-  Reader color(t.tile_rcolor_o), depth(t.tile_rdepth_o), cov(t.tile_rcov_o), acc(t.tile_racc_o);
+  Reader color(t.tile_rcolor_o), depth(t.tile_rdepth_o), cov(t.tile_rcov_o),
+      peel(t.tile_rpeel_o), acc(t.tile_racc_o);
   for (unsigned l = 0; l < unsigned(kRtlBeat); ++l) {
     w[0][l] = color.get(lanes::kColor);
     w[1][l] = depth.get(lanes::kDepth);
     w[2][l] = cov.get(lanes::kCov);
+    w[3][l] = peel.get(lanes::kDepth);
     w.accum[l] = lanes::get_accum(acc);
   }
   return w;

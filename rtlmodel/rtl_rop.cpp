@@ -23,12 +23,11 @@ struct RtlRop::Impl {
     std::vector<uint32_t> tile_first; // per tile, start in `binned`; one extra at the end
     std::vector<Streamed> binned;
   };
-  // A tile's run: which passes touch it, each one's traffic, the planes stored after them.
+  // A tile's run: which passes touch it (indices in `group`), what runs before each, the store.
   struct Plan {
     size_t tile = 0;
-    std::vector<size_t> passes;       // indices in `group`
-    std::vector<TileIo> ios;
-    uint8_t store = 0;
+    std::vector<size_t> passes;
+    TileStates::RunPlan run;
   };
 
   RtlOptions opt;
@@ -36,6 +35,16 @@ struct RtlRop::Impl {
   std::vector<std::unique_ptr<Sim>> helpers;  // the other models of a tile-parallel run
   Framebuffer fb;
   std::vector<Pass> group;          // the passes run together (one pass under kPass)
+  // The group's passes and the frame operations run on its resident tiles, in order; the
+  // frame's tile states at its start; whether its store resolves colour (then it is closed:
+  // the next pass begins another group).
+  std::vector<TileStates::GroupStep> steps;
+  TileStates group_start;
+  // The frame at the group's start, kept once an operation joins the group (the host applies
+  // it to `fb` at once): the group's loads read it, its stores write `fb`.
+  std::unique_ptr<Framebuffer> start_fb;
+  bool resolve = false;
+  Rgba8 background;
   bool ran = false;                 // the group has run (its records stay for reports)
   std::vector<Fragment> frags;      // the group's fragments, pass after pass
   std::vector<uint64_t> accepted;   // accept cycle per fragment
@@ -62,15 +71,24 @@ struct RtlRop::Impl {
     j.y0 = int(plan.tile / size_t(tiles_x())) * kRtlTileH;
     for (size_t k = 0; k < plan.passes.size(); ++k) {
       const Pass& p = group[plan.passes[k]];
+      const TileStates::RunPlan::Step& rs = plan.run.steps[k];
       TileStep st;
       st.state = pack_state(p.state);
-      st.io = plan.ios[k];
+      st.io = rs.io;
+      st.preload = rs.preload;
+      st.copy = rs.copy;
+      st.sweep = rs.sweep;
       st.stream = p.binned.data() + p.tile_first[plan.tile];
       st.n = p.tile_first[plan.tile + 1] - p.tile_first[plan.tile];
       st.seed = tile_seed(opt.seed, p.number, plan.tile);
       j.steps.push_back(st);
     }
-    j.store = plan.store;
+    j.store = plan.run.store;
+    j.preload_after = plan.run.preload_after;
+    j.copy_after = plan.run.copy_after;
+    j.sweep_after = plan.run.sweep_after;
+    j.resolve = resolve;
+    j.background = pack_rgba(background);
     j.src = &src;
     j.dst = &dst;
     j.pass = frags.data();
@@ -87,23 +105,23 @@ struct RtlRop::Impl {
   std::vector<PassStats> run_group();
 };
 
-// The group's touched tiles in tile order, each with the passes that touch it and their traffic
-// on the resident tile (TileStates::plan_group).
+// The group's touched tiles in tile order, each with the passes that touch it and what runs on
+// the resident tile (TileStates::plan_tile, from the frame's tile states at the group's start).
 void RtlRop::Impl::plan_group() {
   plans.clear();
   const size_t ntiles = group.front().tile_first.size() - 1;
-  std::vector<RopState> states;
   for (size_t t = 0; t < ntiles; ++t) {
     Plan plan;
     plan.tile = t;
-    states.clear();
-    for (size_t k = 0; k < group.size(); ++k)
-      if (group[k].tile_first[t] != group[k].tile_first[t + 1]) {
-        plan.passes.push_back(k);
-        states.push_back(group[k].state);
-      }
+    size_t k = 0;
+    for (TileStates::GroupStep& st : steps) {
+      if (!st.pass) continue;
+      st.touches = group[k].tile_first[t] != group[k].tile_first[t + 1];
+      if (st.touches) plan.passes.push_back(k);
+      ++k;
+    }
     if (plan.passes.empty()) continue;
-    plan.ios = tiles.plan_group(t, states.data(), states.size(), plan.store);
+    plan.run = group_start.plan_tile(t, steps.data(), steps.size());
     plans.push_back(std::move(plan));
   }
 }
@@ -123,7 +141,7 @@ size_t RtlRop::Impl::run_tiles(std::vector<TileResult>& out, bool& stopped) {
     s.wave.pass_no = uint32_t(group.back().number);
     try {
       for (size_t j; !failed && !stop && (j = next++) < plans.size();) {
-        out[j] = run_tile(s, job(plans[j], fb, fb, accepted.data()));
+        out[j] = run_tile(s, job(plans[j], start_fb ? *start_fb : fb, fb, accepted.data()));
         if (!out[j].go) stop = true;
       }
     } catch (...) {
@@ -157,7 +175,7 @@ std::vector<PassStats> RtlRop::Impl::rebase(const std::vector<TileResult>& out, 
     r.stream_end = at(r.stream_end);
     r.store_end = at(r.store_end);
     cycles = r.store_end;
-    tiles.stored(plan.tile, plan.store);
+    tiles.stored(plan.tile, plan.run.store);
     io_cycles += (r.store_end - r.load_begin) - r.stream_cycles;
     stalls += r.stall_cycles;
   }
@@ -174,6 +192,7 @@ std::vector<PassStats> RtlRop::Impl::run_group() {
   bool stopped = false;
   const size_t done = run_tiles(out, stopped);
   std::vector<PassStats> stats = rebase(out, done);
+  start_fb.reset();
   if (stopped) throw RtlStopped();
   frame_stats.insert(frame_stats.end(), stats.begin(), stats.end());
   return stats;
@@ -219,6 +238,7 @@ void RtlRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_colo
   impl_->tiles = TileStates(width, height, kRtlTileW, depth_bits, clear_color, wboit);
   impl_->in_pass = false;
   impl_->group.clear();
+  impl_->steps.clear();
   impl_->frags.clear();
   impl_->frame_stats.clear();
 }
@@ -226,11 +246,17 @@ void RtlRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_colo
 void RtlRop::begin_pass(const RopState& state) {
   Impl& m = *impl_;
   if (m.fb.width == 0) fail<std::logic_error>("rtl backend: begin_pass before begin_frame");
-  if (m.ran) {  // a new group: the last one's records go
+  if (m.pending() && m.resolve) m.run_group();  // its store resolved: closed
+  if (m.ran || m.group.empty()) {  // a new group: the last one's records go
     m.group.clear();
+    m.steps.clear();
     m.frags.clear();
+    m.resolve = false;
     m.ran = false;
+    m.group_start = m.tiles;
+    m.start_fb.reset();
   }
+  m.steps.push_back(TileStates::GroupStep{true, false, state, FrameOp{}});
   Impl::Pass p;
   p.state = state;
   p.base = m.frags.size();
@@ -279,15 +305,34 @@ void RtlRop::finish_frame(std::vector<PassStats>& stats) {
   if (impl_->opt.schedule == TileSchedule::kTile) stats = impl_->frame_stats;
 }
 
-// The host's frame operation on the driver's frame copy, after the passes before it have run;
-// the next pass loads it into the tile memory (colour, depth, coverage, peel and accumulation
-// planes).
+bool RtlRop::on_tile(const FrameOp& op) const {
+  const Impl& m = *impl_;
+  if (m.opt.schedule != TileSchedule::kTile || !m.pending() || m.resolve) return false;
+  return op.kind != FrameOpKind::kResolveWboit;
+}
+
+// On the resident tiles (on_tile), the operation joins the group: a clear and a copy run there
+// before the next pass, a resolve on the group's store, which it closes. The host applies it to
+// its frame copy as well: there it stands where the group's stores do not write (tiles no pass
+// of the group touches, planes the group does not make). Otherwise the passes waiting run
+// first and the host applies it; the next pass loads what it needs from the host's frame.
 void RtlRop::frame_op(const FrameOp& op) {
-  if (impl_->fb.width == 0) fail<std::logic_error>("rtl backend: frame_op before begin_frame");
-  if (impl_->in_pass) fail<std::logic_error>("rtl backend: frame_op inside a pass");
-  flush();
-  apply_frame_op(impl_->fb, op);
-  impl_->tiles.frame_op(op);
+  Impl& m = *impl_;
+  if (m.fb.width == 0) fail<std::logic_error>("rtl backend: frame_op before begin_frame");
+  if (m.in_pass) fail<std::logic_error>("rtl backend: frame_op inside a pass");
+  if (on_tile(op)) {
+    if (!m.start_fb) m.start_fb = std::make_unique<Framebuffer>(m.fb);
+    if (op.kind == FrameOpKind::kResolveUnder) {
+      m.resolve = true;
+      m.background = op.value;
+    } else {
+      m.steps.push_back(TileStates::GroupStep{false, false, RopState{}, op});
+    }
+  } else {
+    flush();
+  }
+  apply_frame_op(m.fb, op);
+  m.tiles.frame_op(op);
 }
 
 const Framebuffer& RtlRop::framebuffer() const {

@@ -48,19 +48,34 @@ class TileRunner {
   }
 
   TileResult run() {
-    TileRun& r = out_.run;
+      TileRun& r = out_.run;
     r.x0 = job_.x0;
     r.y0 = job_.y0;
     r.load_begin = s_.cycle;
     for (size_t i = 0; i < job_.steps.size(); ++i) step(i);
     r.io.store = job_.store;
+    const uint64_t beats = uint64_t(sweep_.beats());
+    uint64_t reads = job_.store ? beats : 0, loads = 0;
+    if (!job_.steps.empty() && job_.steps.back().io.load) loads += beats;
+    if (job_.preload_after) {
+      load(job_.preload_after);
+      loads += beats;
+      r.load_beats += beats;
+      r.io.load |= job_.preload_after;
+    }
+    if (job_.copy_after) {
+      read_all(true);
+      reads += beats;
+    } else if (job_.sweep_after && !job_.store) {
+      read_all(false);
+      reads += beats;
+    }
     store();
     r.store_beats = t_.cnt_tile_stores_o;
-    const uint64_t beats = uint64_t(sweep_.beats());
-    // The tile counters were cleared at the last step's setup: its loads, then the store.
-    audit_beats(counted(t_.cnt_tile_loads_o, r.store_beats),
-                job_.steps.empty() || !job_.steps.back().io.load ? 0 : beats,
-                job_.store ? beats : 0);
+    // The tile counters were cleared at the last step's setup: its loads, then the reads (a
+    // copy or sweep and the store may pass the counter's width, TileCntW: it saturates).
+    audit_beats(counted(t_.cnt_tile_loads_o, r.store_beats), std::min(loads, 2 * beats - 1),
+                std::min(reads, 2 * beats - 1));
     r.store_end = s_.cycle;
     if (!stored_.empty() && out_.go) reread();
     return out_;
@@ -103,8 +118,9 @@ class TileRunner {
   }
 
   void step(size_t i);
+  void read_all(bool copy);
   void setup();
-  void load();
+  void load(uint8_t planes);
   void stream();
   void drain();
   void count(TileRun& r);
@@ -135,9 +151,11 @@ void TileRunner::step(size_t i) {
   r.y0 = job_.y0;
   r.io = st.io;
   r.load_begin = out_.run.load_begin;
+  if (st.preload) load(st.preload);
+  if (st.copy || st.sweep) read_all(st.copy);
   s_.feed.begin_tile(job_.x0, job_.y0, st.stream, st.n);
   setup();
-  load();
+  load(st.io.load);
   idle_tile_port();
   r.stream_begin = s_.cycle;
   if (i == 0) out_.run.stream_begin = r.stream_begin;
@@ -153,13 +171,32 @@ void TileRunner::step(size_t i) {
   count(r);
   TileIo& io = out_.run.io;  // the run's: every plane cleared, with its value, and loaded
   io.clear |= st.io.clear;
-  io.load |= st.io.load;
+  io.load |= st.io.load | st.preload;
   for (size_t p = 0; p < kWordPlanes; ++p)
     if (st.io.clear >> p & 1) io.clear_value[p] = st.io.clear_value[p];
   if (st.io.clear & kPlaneAccum) io.accum_clear = st.io.accum_clear;
-  out_.run.load_beats += t_.cnt_tile_loads_o;
+  // The counters count from the setup: a load before it (a copy's), the driver's.
+  out_.run.load_beats += t_.cnt_tile_loads_o + (st.preload ? uint64_t(sweep_.beats()) : 0);
   if (i + 1 < job_.steps.size())
     audit_beats(counted(t_.cnt_tile_loads_o, 0), st.io.load ? uint64_t(sweep_.beats()) : 0, 0);
+}
+
+// A read of every beat, the data unused: with `copy` (tile_copy_i) the depth beats go to the
+// peel plane, the last a cycle after its read; else a sweep, which leaves every plane whole at
+// its epoch so that a fast clear may follow (zb_plane's FastClearWhole).
+void TileRunner::read_all(bool copy) {
+  t_.tile_req_i = 1;
+  t_.tile_we_i = 0;
+  t_.tile_copy_i = copy;
+  for (int b = 0; b < sweep_.beats(); ++b) {
+    t_.tile_addr_i = b;
+    tick_watched(0);
+    refuses(copy ? "tile_req_i (a copy)" : "tile_req_i (a sweep)");
+  }
+  t_.tile_req_i = 0;
+  t_.tile_copy_i = 0;
+  idle_tile_port();
+  if (copy) tick_watched(0);  // the last beat's load into peel
 }
 
 // Pass state, counter clear, tile origin and the fast clear of the planes io.clear names.
@@ -181,8 +218,7 @@ void TileRunner::setup() {
   t_.tile_clear_i = 0;
 }
 
-void TileRunner::load() {
-  const uint8_t planes = step_->io.load;
+void TileRunner::load(uint8_t planes) {
   if (!planes) return;
   t_.tile_req_i = 1;
   t_.tile_we_i = 1;
@@ -294,17 +330,25 @@ void TileRunner::store() {
   if (!planes) return;
   t_.tile_req_i = 1;
   t_.tile_we_i = 0;
+  t_.tile_resolve_i = job_.resolve;
   for (int b = 0; b < sweep_.beats(); ++b) {
     t_.tile_addr_i = b;
+    if (job_.resolve) {  // the background in the write data's lane 0, the rest unread
+      BeatWords w;
+      scramble(w, 0, [this](unsigned n) { return bits(n); });
+      w[0][0] = job_.background;
+      put_beat(t_, w);
+    }
     tick_watched(0);
     refuses("tile_req_i (a store)");
     const BeatWords w = read_beat(t_);
     sweep_.store(w, planes, *job_.dst, b);
-    if (job_.reread_stores) stored_.push_back(w);
+    if (job_.reread_stores && !job_.resolve) stored_.push_back(w);
     const uint64_t at = s_.cycle - 1 - out_.run.load_begin;
     out_.go = s_.feed.store(StoreBeat{job_.x0, job_.y0, b, planes, at, &w}) && out_.go;
   }
   t_.tile_req_i = 0;
+  t_.tile_resolve_i = 0;
   idle_tile_port();
 }
 

@@ -26,6 +26,9 @@ struct TileStep {
   const Streamed* stream = nullptr;
   size_t n = 0;
   uint64_t seed = 0;                  // tile_seed: back-pressure and idle inputs
+  uint8_t preload = 0;                // before the setup: planes loaded for the copy
+  bool copy = false;                  // then: copy depth to peel (tile_copy_i)
+  bool sweep = false;                 // before the setup: a read of every beat
 };
 
 // One tile's run: its passes on the resident tile (docs/rtl.md "Schedules"), one after the
@@ -34,8 +37,14 @@ struct TileJob {
   int x0 = 0, y0 = 0;                 // tile origin, pixels
   std::vector<TileStep> steps;
   uint8_t store = 0;                  // planes stored after the last step
-  const Framebuffer* src = nullptr;   // the planes loaded from here
-  Framebuffer* dst = nullptr;         // and stored here (src, or a replay's copy)
+  uint8_t preload_after = 0;          // after the last step, before the store: as a step's
+  bool copy_after = false;
+  bool sweep_after = false;           // the same (a store is a sweep itself)
+  bool resolve = false;               // the store resolves colour under `background`
+  uint32_t background = 0;            // pack_rgba
+  const Framebuffer* src = nullptr;   // the planes loaded from here (the group's start)
+  Framebuffer* dst = nullptr;         // and stored here (src; the host's frame, the group's
+                                      // operations applied; a replay's copy)
   const Fragment* pass = nullptr;     // the run's fragments, by Streamed::index (the probe's)
   uint64_t* accepted = nullptr;       // the run's accept cycles, by Streamed::index: written
   double backpressure = 0;            // RtlOptions'

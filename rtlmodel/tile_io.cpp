@@ -98,6 +98,7 @@ void TileSweep::store(const BeatWords& w, uint8_t planes, Framebuffer& fb, int k
     if (planes & kPlaneColor) fb.color[size_t(i)] = unpack_rgba(w[0][size_t(l)]);
     if (planes & kPlaneDepth) fb.depth[size_t(i)] = w[1][size_t(l)];
     if (planes & kPlaneCoverage) fb.coverage[size_t(i)] = uint8_t(w[2][size_t(l)]);
+    if (planes & kPlanePeel) fb.peel[size_t(i)] = w[3][size_t(l)];
     if (planes & kPlaneAccum) {
       fb.accum[size_t(i)] = w.accum[size_t(l)].acc;
       fb.reveal[size_t(i)] = w.accum[size_t(l)].reveal;
@@ -129,31 +130,37 @@ TileStates::TileStates(int width, int height, int tile, int depth_bits, Rgba8 cl
   planes_.assign(n, fresh);
 }
 
-void TileStates::frame_op(const FrameOp& op) {
-  for (auto& t : planes_) switch (op.kind) {
-      case FrameOpKind::kClearColor: t[0] = {true, pack_rgba(op.value)}; break;
-      case FrameOpKind::kClearDepth: t[1] = {true, std::min(op.depth, depth_max(depth_bits_))}; break;
-      case FrameOpKind::kCopyDepthToPeel: t[3] = t[1]; break;
-      case FrameOpKind::kResolveUnder:
-        if (t[0].cleared) {  // a uniform colour resolves to a uniform colour
-          const Rgba8 c = unpack_rgba(t[0].value);
-          t[0].value = pack_rgba({resolve_under(c.r, op.value.r, c.a), resolve_under(c.g, op.value.g, c.a),
-                             resolve_under(c.b, op.value.b, c.a), resolve_under(c.a, op.value.a, c.a)});
-        }
-        break;
-      case FrameOpKind::kResolveWboit:  // colour made per pixel from the accumulation; a
-        // cleared accumulation (acc_A = 0, r = 1.0) leaves a uniform colour as it is
-        if (!t[4].cleared) t[0].cleared = false;
-        break;
-    }
+void TileStates::apply(std::array<Plane, kTilePlanes>& t, const FrameOp& op) const {
+  switch (op.kind) {
+    case FrameOpKind::kClearColor: t[0] = {true, pack_rgba(op.value)}; break;
+    case FrameOpKind::kClearDepth: t[1] = {true, std::min(op.depth, depth_max(depth_bits_))}; break;
+    case FrameOpKind::kCopyDepthToPeel: t[3] = t[1]; break;
+    case FrameOpKind::kResolveUnder:
+      if (t[0].cleared) {  // a uniform colour resolves to a uniform colour
+        const Rgba8 c = unpack_rgba(t[0].value);
+        t[0].value = pack_rgba({resolve_under(c.r, op.value.r, c.a), resolve_under(c.g, op.value.g, c.a),
+                                resolve_under(c.b, op.value.b, c.a), resolve_under(c.a, op.value.a, c.a)});
+      }
+      break;
+    case FrameOpKind::kResolveWboit:  // colour made per pixel from the accumulation; a
+      // cleared accumulation (acc_A = 0, r = 1.0) leaves a uniform colour as it is
+      if (!t[4].cleared) t[0].cleared = false;
+      break;
+  }
 }
 
-TileIo TileStates::plan(size_t tile, const RopState& s) const {
+void TileStates::frame_op(const FrameOp& op) {
+  for (auto& t : planes_) apply(t, op);
+}
+
+TileIo TileStates::plan(size_t tile, const RopState& s) const { return plan(planes_.at(tile), s); }
+
+TileIo TileStates::plan(const std::array<Plane, kTilePlanes>& t, const RopState& s) const {
   TileIo io;
   const uint8_t needed = planes_read(s) | planes_written(s);
   for (int p = 0; p < kTilePlanes; ++p) {
     if (!(needed >> p & 1)) continue;
-    const Plane& pl = planes_.at(tile)[size_t(p)];
+    const Plane& pl = t[size_t(p)];
     if (pl.cleared) {
       io.clear |= uint8_t(1u << p);
       if (p == kAccumPlane)
@@ -168,21 +175,74 @@ TileIo TileStates::plan(size_t tile, const RopState& s) const {
   return io;
 }
 
-std::vector<TileIo> TileStates::plan_group(size_t tile, const RopState* s, size_t n,
-                                           uint8_t& store) const {
-  std::vector<TileIo> ios(n);
-  uint8_t resident = 0;
-  store = 0;
+// Per plane: resident (in the tile memory, loaded or fast-cleared this run), made (written or
+// copied in the tile since its last clear: stored at the end), mixed (fast-cleared this run and
+// written since, with no tile read between: zb_plane's FastClearWhole forbids clearing it
+// again before a read of every beat, a sweep; a copy is one too).
+TileStates::RunPlan TileStates::plan_tile(size_t tile, const GroupStep* steps, size_t n) const {
+  RunPlan out;
+  std::array<Plane, kTilePlanes> t = planes_.at(tile);
+  uint8_t resident = 0, made = 0, mixed = 0;
+  uint8_t fresh = 0;                 // fast-cleared this run, no load or tile read since
+  bool copy = false, sweep = false;  // pending before the next pass
+  uint8_t preload = 0;
   for (size_t k = 0; k < n; ++k) {
-    TileIo& io = ios[k];
-    io = plan(tile, s[k]);
-    io.clear &= uint8_t(~resident);
-    io.load &= uint8_t(~resident);
-    store |= io.store;
-    io.store = 0;
-    resident |= planes_read(s[k]) | planes_written(s[k]);
+    const GroupStep& st = steps[k];
+    if (!st.pass) {
+      const FrameOp& op = st.op;
+      if (op.kind == FrameOpKind::kCopyDepthToPeel) {
+        if (!(resident & kPlaneDepth) && !t[1].cleared) {  // the frame's depth, for the copy
+          preload |= kPlaneDepth;
+          resident |= kPlaneDepth;
+          fresh &= uint8_t(~kPlaneDepth);
+        }
+        if (resident & kPlaneDepth) {  // the tile's depth into peel
+          copy = true;
+          sweep = false;
+          mixed = fresh = 0;
+          resident |= kPlanePeel;
+          made |= kPlanePeel;
+        } else {  // depth is cleared: so is peel, to its value (apply below)
+          resident &= uint8_t(~kPlanePeel);
+          made &= uint8_t(~kPlanePeel);
+        }
+      } else {  // a clear: the host's frame holds the value; the next pass needing it clears it
+        const uint8_t p = op.kind == FrameOpKind::kClearColor ? kPlaneColor : kPlaneDepth;
+        if (mixed & p) {
+          if (!copy) sweep = true;
+          mixed = fresh = 0;
+        }
+        resident &= uint8_t(~p);
+        made &= uint8_t(~p);
+      }
+      apply(t, op);
+      continue;
+    }
+    if (!st.touches) continue;
+    RunPlan::Step s;
+    s.step = k;
+    s.io = plan(t, st.state);
+    s.io.clear &= uint8_t(~resident);
+    s.io.load &= uint8_t(~resident);
+    s.io.store = 0;
+    s.preload = preload;
+    s.copy = copy;
+    s.sweep = sweep;
+    copy = sweep = false;
+    preload = 0;
+    const uint8_t written = planes_written(st.state);
+    // A plane fast-cleared this run and written since is mixed until a read of every beat.
+    fresh = uint8_t((fresh | s.io.clear) & ~s.io.load);
+    mixed |= written & fresh;
+    resident |= planes_read(st.state) | written;
+    made |= written;
+    out.steps.push_back(s);
   }
-  return ios;
+  out.preload_after = preload;
+  out.copy_after = copy;
+  out.sweep_after = sweep;
+  out.store = made;
+  return out;
 }
 
 const char* to_string(TileSchedule s) { return s == TileSchedule::kTile ? "tile" : "pass"; }

@@ -78,8 +78,11 @@ bool parse_schedule(const std::string& name, TileSchedule& out);
 // the plane's (zb_plane), so none may be left behind.
 uint64_t tile_beats(int w, int h, int beat);
 // The tile's cycles at the port, beside its streaming (IssueSchedule): one setup cycle (pass
-// state, counter clear and fast clear), then its load beats, later its store beats.
+// state, counter clear and fast clear), then its load beats, later its store beats. On a
+// resident tile a copy of depth to peel takes a read a beat and one cycle more (the last beat's
+// load), a sweep a read a beat.
 constexpr uint64_t kRtlTileSetup = 1;
+constexpr uint64_t kRtlCopyTail = 1;
 uint64_t tile_io_cycles(uint64_t beats, const TileIo& io);
 
 // One beat at the built model's port: per word plane (kPlane* bit order) and lane, the word
@@ -108,7 +111,7 @@ class TileSweep {
   int beats() const { return int(tile_beats(kRtlTileW, kRtlTileH, kRtlBeat)); }
   // Beat k's words from `fb`: lanes beyond the frame's edge 0.
   BeatWords load(const Framebuffer& fb, int k) const;
-  // Beat k's words of `planes` (colour, depth, coverage, accumulation) into `fb`, lanes within
+  // Beat k's words of `planes` (colour, depth, coverage, peel, accumulation) into `fb`, lanes within
   // the frame. Tiles store on several threads at once, so a store allocates nothing: a plane
   // missing or of another size (the frame replaced under the pass) is std::logic_error, a fault
   // of the host, never reported as the RTL's mismatch. prepare_stores allocates them first.
@@ -133,10 +136,31 @@ class TileStates {
 
   void frame_op(const FrameOp& op);
   TileIo plan(size_t tile, const RopState& s) const;
-  // A resident tile's passes `s[0..n)`: per pass what its setup fast-clears and its load brings
-  // in (the planes it needs that no earlier pass of them brought), and in `store` the planes
-  // stored after the last (every plane one of them writes).
-  std::vector<TileIo> plan_group(size_t tile, const RopState* s, size_t n, uint8_t& store) const;
+  // A resident tile's group (docs/rtl.md "Schedules"), planned from the tile's planes as the
+  // frame holds them at the group's start (this object's state then): per step, a pass (when
+  // it touches the tile) or a frame operation run on the tile. Loads read the frame as it was
+  // at the group's start: a plane an operation changed is never loaded after it (a cleared one
+  // is fast-cleared; a copy runs on the tile, the frame's depth loaded for it if need be).
+  struct GroupStep {
+    bool pass = false;
+    bool touches = false;  // a pass with fragments in the tile
+    RopState state;        // a pass's
+    FrameOp op;            // else: a clear or a copy of depth to peel
+  };
+  struct RunPlan {
+    struct Step {
+      size_t step = 0;      // the pass's index in the group's steps
+      TileIo io;            // its setup's fast clear and its loads (io.store unused)
+      uint8_t preload = 0;  // before it: planes loaded for a copy (the frame's depth)
+      bool copy = false;    // then a read of every beat copying depth to peel
+      bool sweep = false;   // or a read of every beat (a fast clear may follow)
+    };
+    std::vector<Step> steps;        // the passes that touch the tile
+    uint8_t preload_after = 0;      // after the last, before the store: as a Step's
+    bool copy_after = false, sweep_after = false;
+    uint8_t store = 0;              // planes stored (made in the tile since their last clear)
+  };
+  RunPlan plan_tile(size_t tile, const GroupStep* steps, size_t n) const;
   void stored(size_t tile, uint8_t planes);  // the pass stored these planes of the tile
 
  private:
@@ -147,6 +171,8 @@ class TileStates {
   int depth_bits_ = 24;
   AccumWord accum_clear_;
   std::vector<std::array<Plane, kTilePlanes>> planes_;
+  void apply(std::array<Plane, kTilePlanes>& t, const FrameOp& op) const;
+  TileIo plan(const std::array<Plane, kTilePlanes>& t, const RopState& s) const;
 };
 
 }  // namespace zb

@@ -158,6 +158,12 @@ void Cosim::compare_frames() {
 }
 
 void Cosim::frame_op(const FrameOp& op) {
+  if (rtl_.on_tile(op)) {  // with the RTL's group: compared at its end
+    golden_.frame_op(op);
+    rtl_.frame_op(op);
+    if (op.kind == FrameOpKind::kResolveUnder) run_group();  // on its store: the group ends
+    return;
+  }
   run_group();
   before_ = golden_.framebuffer();
   golden_.frame_op(op);

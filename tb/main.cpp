@@ -174,8 +174,10 @@ void add_options(CLI::App& app, Config& c, Args& a) {
   app.add_option("--defect", a.defect,
                  "the injected defect: blend (alpha blend with an odd source alpha flips red "
                  "bit 0), window (the issue window lets a fragment pass an older one to its "
-                 "pixel) or accum (the accumulation word's bypass is never taken)")
-      ->check(CLI::IsMember({"blend", "window", "accum"}))
+                 "pixel), accum (the accumulation word's bypass is never taken), copy (the tile's copy "
+                 "of depth to peel flips a bit) or resolve (the store's resolve does not "
+                 "saturate)")
+      ->check(CLI::IsMember({"blend", "window", "accum", "copy", "resolve"}))
       ->capture_default_str();
 #endif
 #ifdef ZB_TB_MUT  // zblend_tb_mut: the RTL is Yosys's mutant netlist (docs/mutation.md)
@@ -207,6 +209,8 @@ void check_args(const CLI::App& app, Config& c, const Args& a) {
   std::vector<std::string>& plusargs = c.cosim.rtl.plusargs;
   if (a.defect == "window") plusargs.push_back("+zb_bug_window");
   if (a.defect == "accum") plusargs.push_back("+zb_bug_accum");
+  if (a.defect == "copy") plusargs.push_back("+zb_bug_copy");
+  if (a.defect == "resolve") plusargs.push_back("+zb_bug_resolve");
   if (a.mutant) plusargs.push_back(fmt::format("+zb_mutant={}", a.mutant));
   // The mismatch waveform's directory is made only if a mismatch writes it.
   cli::check_outputs({{"--mismatch-fst", c.cosim.mismatch_fst, ".fst"}});

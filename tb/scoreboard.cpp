@@ -89,7 +89,7 @@ bool Scoreboard::store(const StoreBeat& b) {
   if (!golden_) return true;
   const TileSweep sweep(golden_->width, golden_->height, b.tile_x0, b.tile_y0);
   const BeatWords want = sweep.load(*golden_, b.beat);
-  static constexpr const char* kNames[] = {"colour", "depth", "coverage"};
+  static constexpr const char* kNames[] = {"colour", "depth", "coverage", "peel"};
   for (int l = 0; l < kRtlBeat; ++l) {
     const int64_t i = sweep.pixel(*golden_, b.beat, l);
     if (i < 0) continue;
@@ -101,7 +101,7 @@ bool Scoreboard::store(const StoreBeat& b) {
     d.retire.tile_y0 = b.tile_y0;
     d.retire.tile_cycle = b.tile_cycle;
     d.retire.stage = RetireStage::kX11;  // after every retire of the tile
-    for (int p = 0; p < 3; ++p) {
+    for (int p = 0; p < kWordPlanes; ++p) {
       if (!(b.planes & (1u << p))) continue;
       const uint32_t got = (*b.words)[size_t(p)][size_t(l)], exp = want[size_t(p)][size_t(l)];
       if (got == exp) continue;

@@ -44,7 +44,9 @@ module zb_rop_harness #(
   localparam int unsigned IReq     = IStall + 1;
   localparam int unsigned IWe      = IReq + 1;
   localparam int unsigned IClear   = IWe + 1;
-  localparam int unsigned IPlanes  = IClear + 1;
+  localparam int unsigned ICopy    = IClear + 1;
+  localparam int unsigned IResolve = ICopy + 1;
+  localparam int unsigned IPlanes  = IResolve + 1;
   localparam int unsigned IAddr    = IPlanes + 5;
   localparam int unsigned IWColor  = IAddr + BeatAW;
   localparam int unsigned IWDepth  = IWColor + BEAT * 32;
@@ -115,6 +117,8 @@ module zb_rop_harness #(
     .tile_req_i        (in_q[IReq]),
     .tile_we_i         (in_q[IWe]),
     .tile_clear_i      (in_q[IClear]),
+    .tile_copy_i       (in_q[ICopy]),
+    .tile_resolve_i    (in_q[IResolve]),
     .tile_planes_i     (in_q[IPlanes +: 5]),
     .tile_addr_i       (in_q[IAddr +: BeatAW]),
     .tile_wcolor_i     (in_q[IWColor +: BEAT * 32]),
