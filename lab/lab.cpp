@@ -201,7 +201,7 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
   for (const int beat : kLabBeats) csv += fmt::format(",cycles_2buf_beat{}", beat);
   csv += ",edge_pixels,hidden_drawn,visible_missing,hidden_drawn_share,visible_missing_share";
   csv += ",tile_cycles_tile_schedule,rtl_tile_cycles_tile_schedule,rtl_mismatch_pixels_tile_schedule,"
-         "port_bytes_pass,port_bytes_tile,frame_op_pixels\n";
+         "port_bytes_pass,port_bytes_tile,frame_op_pixels,frame_pixels\n";
   for (const LabRow& r : rows) {
     const PassStats& s = r.golden;
     const std::string cost =
@@ -228,11 +228,12 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
                               r.lines->hidden_drawn_share(), r.lines->visible_missing_share())
                 : ",,,,";
     const std::string sched =
-        r.has_cost ? fmt::format("{},{},{},{},{},{}", r.model_tile_cycles_resident,
+        r.has_cost ? fmt::format("{},{},{},{},{},{},{}", r.model_tile_cycles_resident,
                                  r.rtl_resident_tile_cycles ? std::to_string(*r.rtl_resident_tile_cycles) : "",
                                  r.rtl_resident_tile_cycles ? std::to_string(r.rtl_resident_mismatch_pixels) : "",
-                                 r.port_bytes_pass, r.port_bytes_tile, r.frame_op_pixels)
-                   : ",,,,,";
+                                 r.port_bytes_pass, r.port_bytes_tile, r.frame_op_pixels,
+                                 r.pixels)
+                   : ",,,,,,";
     csv += fmt::format("{},{},{},{},{:.3f},{},{},{},{},{:.4f},{:.4f},{},{},{}\n", r.scene, r.family,
                        r.method, cost, r.host_ms, rtl, error_cells(r.error),
                        error_cells(r.error_ss), to_string(r.fair), r.fair_error().delta_e_mean,
