@@ -274,12 +274,8 @@ std::string body(const ReportInput& in, Format f) {
                    "docs/rtl.md \"Schedules\"): the external bandwidth a method costs, where the "
                    "chart of memory traffic above counts the datapath's accesses to the resident "
                    "tile.");
-    std::string text = schedule_text(in.rows);  // its two schedule lines; the methods follow
-    size_t cut = text.find('\n');
-    if (cut != std::string::npos) cut = text.find('\n', cut + 1);
-    for (const std::string& line : {text.substr(0, text.find('\n')),
-                                    text.substr(text.find('\n') + 1, cut - text.find('\n') - 1)})
-      if (!line.empty()) out += para(f, line + ".");
+    std::istringstream lines(schedule_text(in.rows, false));
+    for (std::string line; std::getline(lines, line);) out += para(f, line + ".");
   }
 
   out += heading(f, 2, "Scene families");
