@@ -290,6 +290,7 @@ void run_lab(const LabCommandOptions& o) {
   }
   std::vector<std::string> candidates = {lab::main_chart_path(), lab::main_bytes_chart_path(),
                                          lab::tile_beat_chart_path(),
+                                         lab::port_bytes_chart_path(),
                                          lab::hidden_line_chart_path()};
   for (const lab::ReportScene& s : in.scenes) candidates.push_back(lab::family_chart_path(s.family));
   for (const std::string& c : candidates) {

@@ -132,9 +132,7 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
       const MethodCost& mc = counters[0]->cost();
       row.model_pipe_2buf = mc.at(kRtlTileW).two_buffer_pipe;
       row.model_stream_cycles = mc.at(kRtlTileW).stream_cycles;
-      const size_t beat_at =  // zb_rop's BEAT among kLabBeats
-          size_t(std::find(kLabBeats.begin(), kLabBeats.end(), kRtlBeat) - kLabBeats.begin());
-      const TileCost& at_rtl = counters.at(beat_at)->cost().at(kRtlTileW);
+      const TileCost& at_rtl = counters[lab_beat_index(kRtlBeat)]->cost().at(kRtlTileW);
       row.model_tile_cycles_resident = at_rtl.resident.io_cycles;
       row.port_bytes_pass = at_rtl.port_bytes(TileSchedule::kPass, vp.depth_bits, vp.coverage_samples, vp.wboit);
       row.port_bytes_tile = at_rtl.port_bytes(TileSchedule::kTile, vp.depth_bits, vp.coverage_samples, vp.wboit);
@@ -202,7 +200,8 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
   for (const int beat : kLabBeats) csv += fmt::format(",cycles_2buf_beat{}", beat);
   csv += ",edge_pixels,hidden_drawn,visible_missing,hidden_drawn_share,visible_missing_share";
   csv += ",tile_cycles_tile_schedule,rtl_tile_cycles_tile_schedule,rtl_mismatch_pixels_tile_schedule,"
-         "port_bytes_pass,port_bytes_tile,frame_op_pixels,host_op_pixels_tile_schedule\n";
+         "port_bytes_pass,port_bytes_tile,frame_op_pixels,host_op_pixels_tile_schedule,"
+         "frame_pixels\n";
   for (const LabRow& r : rows) {
     const PassStats& s = r.golden;
     const std::string cost =
@@ -229,12 +228,12 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
                               r.lines->hidden_drawn_share(), r.lines->visible_missing_share())
                 : ",,,,";
     const std::string sched =
-        r.has_cost ? fmt::format("{},{},{},{},{},{},{}", r.model_tile_cycles_resident,
+        r.has_cost ? fmt::format("{},{},{},{},{},{},{},{}", r.model_tile_cycles_resident,
                                  r.rtl_resident_tile_cycles ? std::to_string(*r.rtl_resident_tile_cycles) : "",
                                  r.rtl_resident_tile_cycles ? std::to_string(r.rtl_resident_mismatch_pixels) : "",
                                  r.port_bytes_pass, r.port_bytes_tile, r.frame_op_pixels,
-                                 r.host_op_pixels_tile)
-                   : ",,,,,,";
+                                 r.host_op_pixels_tile, r.pixels)
+                   : ",,,,,,,";
     csv += fmt::format("{},{},{},{},{:.3f},{},{},{},{},{:.4f},{:.4f},{},{},{}\n", r.scene, r.family,
                        r.method, cost, r.host_ms, rtl, error_cells(r.error),
                        error_cells(r.error_ss), to_string(r.fair), r.fair_error().delta_e_mean,
@@ -266,8 +265,8 @@ std::string tile_share_text(const std::vector<LabRow>& rows, int beat) {
 }
 
 std::string stream_share_text(const std::vector<LabRow>& rows, int beat) {
-  const auto at = std::find(kLabBeats.begin(), kLabBeats.end(), beat);
-  const size_t k = size_t(at - kLabBeats.begin());
+  const size_t k = lab_beat_index(beat);
+  const bool at_beat = k < kLabBeats.size();
   struct Tally {
     uint64_t cycles = 0, fragments = 0, above = 0, runs = 0;
     double worst = 0;
@@ -293,14 +292,14 @@ std::string stream_share_text(const std::vector<LabRow>& rows, int beat) {
     const uint64_t stream = r.rtl_cycles ? r.rtl_stream_cycles : r.model_stream_cycles;
     one.add(r, stream);
     two.add(r, r.model_pipe_2buf);
-    if (at == kLabBeats.end()) continue;
+    if (!at_beat) continue;
     all_one.add(r, r.rtl_cycles ? *r.rtl_cycles : stream + r.model_tile_cycles[k]);
     all_two.add(r, r.model_cycles_2buf[k]);
   }
   std::string out = fmt::format(
       "streaming cycles per fragment: {}; with a second tile buffer (cost model of the "
       "proposed design; its fill and drain once a pass): {}", one.text(), two.text());
-  if (at != kLabBeats.end())
+  if (at_beat)
     out += fmt::format(". All cycles per fragment, the tile port's included, at {} pixels a "
                        "beat: {:.4f} with one buffer, {:.4f} with two (worst run {:.3f}, {})",
                        beat, all_one.overall(), all_two.overall(), all_two.worst,
@@ -308,17 +307,14 @@ std::string stream_share_text(const std::vector<LabRow>& rows, int beat) {
   return out;
 }
 
-std::string schedule_text(const std::vector<LabRow>& rows) {
-  static const size_t kRtlBeatAt =
-      size_t(std::find(kLabBeats.begin(), kLabBeats.end(), kRtlBeat) - kLabBeats.begin());
-  static_assert(kLabBeats.size() > 0);
+std::string schedule_text(const std::vector<LabRow>& rows, bool per_method) {
   struct Sum {
     uint64_t fragments = 0, stream = 0, io[2] = {0, 0}, bytes[2] = {0, 0}, host[2] = {0, 0}, pixels = 0,
              mismatch[2] = {0, 0}, runs = 0;
     void add(const LabRow& r) {
       fragments += r.golden.fragments_in;
       stream += r.model_stream_cycles;
-      io[0] += r.model_tile_cycles[kRtlBeatAt];
+      io[0] += r.model_tile_cycles[lab_beat_index(kRtlBeat)];
       io[1] += r.model_tile_cycles_resident;
       bytes[0] += r.port_bytes_pass;
       bytes[1] += r.port_bytes_tile;
@@ -356,6 +352,7 @@ std::string schedule_text(const std::vector<LabRow>& rows) {
     if (rtl) out += fmt::format("; {} mismatching pixels on the RTL", all.mismatch[i]);
     out += "\n";
   }
+  if (!per_method) return out;
   for (const auto& [name, m] : methods)
     out += fmt::format("  {:<16} pass: {:.4f} cycles/fragment, {:5.1f} B/pixel, host frame "
                        "operations {:.4f}; tile: {:.4f}, {:5.1f} B/pixel, host {:.4f}\n",

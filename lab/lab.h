@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rop/backend.h"
+#include "rtl_params.h"
 #include "rop/framebuffer.h"
 #include "geometry/geometry.h"
 #include "metrics/line_metrics.h"
@@ -44,6 +45,13 @@ FairReference fair_reference(const std::string& method);
 // Tile port widths (pixels a beat) the lab's cost model prices every method at, zb_rop's BEAT
 // among them: the width's effect on tile cycles (charts/tile-beat.png).
 inline constexpr std::array<int, 5> kLabBeats{2, 4, 8, 16, 32};
+// The index of `beat` in kLabBeats, or kLabBeats.size() when it is not one of them.
+constexpr size_t lab_beat_index(int beat) {
+  size_t k = 0;
+  while (k < kLabBeats.size() && kLabBeats[k] != beat) ++k;
+  return k;
+}
+static_assert(lab_beat_index(kRtlBeat) < kLabBeats.size(), "zb_rop's BEAT is among the lab's");
 
 // One method on one scene.
 struct LabRow {
@@ -124,8 +132,9 @@ std::string tile_share_text(const std::vector<LabRow>& rows, int beat);
 std::string stream_share_text(const std::vector<LabRow>& rows, int beat);
 // Per schedule (pass, tile) over the rows with a cost: all cycles per fragment (streaming and
 // the tile port; then with the host's frame operations at a pixel a clock), tile-port bytes per
-// pixel, and the RTL's mismatching pixels; a line each, then one per method (its scenes' sums).
-std::string schedule_text(const std::vector<LabRow>& rows);
+// pixel, and the RTL's mismatching pixels; a line each, then (`per_method`) one per method
+// (its scenes' sums).
+std::string schedule_text(const std::vector<LabRow>& rows, bool per_method = true);
 
 // The non-dominated points when both coordinates are to be minimised: indices of the points
 // that no other point matches or beats in both and beats in one, in order of x, then y.

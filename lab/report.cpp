@@ -266,6 +266,18 @@ std::string body(const ReportInput& in, Format f) {
                        "buffer meanwhile (docs/rtl.md \"A second tile buffer\").");
   }
 
+  if (has(in.charts, port_bytes_chart_path())) {
+    out += heading(f, 2, "Error against the tile port's bandwidth", "port-bytes");
+    out += para(f, image(f, port_bytes_chart_path(), "error against tile-port bytes per pixel", 800));
+    out += para(f, "Bytes the tile port moves per pixel of the frame (loads and stores, each plane "
+                   "its width), under the pass schedule (open) and the tile schedule (filled; "
+                   "docs/rtl.md \"Schedules\"): the external bandwidth a method costs, where the "
+                   "chart of memory traffic above counts the datapath's accesses to the resident "
+                   "tile.");
+    std::istringstream lines(schedule_text(in.rows, false));
+    for (std::string line; std::getline(lines, line);) out += para(f, line + ".");
+  }
+
   out += heading(f, 2, "Scene families");
   for (const std::string& family : families_of(in)) {
     out += heading(f, 3, family, "family-" + family);
@@ -339,6 +351,7 @@ std::string reference_ss_path(const std::string& scene) {
 std::string main_chart_path() { return "charts/main.png"; }
 std::string main_bytes_chart_path() { return "charts/main-bytes.png"; }
 std::string tile_beat_chart_path() { return "charts/tile-beat.png"; }
+std::string port_bytes_chart_path() { return "charts/main-port-bytes.png"; }
 std::string hidden_line_chart_path() { return "charts/hidden-line.png"; }
 std::string family_chart_path(const std::string& family) {
   return "charts/family-" + path_name(family) + ".png";

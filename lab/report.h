@@ -43,6 +43,7 @@ std::string reference_ss_path(const std::string& scene);
 std::string main_chart_path();        // delta E against cost, every scene
 std::string main_bytes_chart_path();  // delta E against bytes, every scene
 std::string tile_beat_chart_path();   // tile cycles against the tile port's width
+std::string port_bytes_chart_path();  // error against tile-port bytes per pixel, per schedule
 std::string hidden_line_chart_path(); // the hidden-line methods against the line reference
 std::string family_chart_path(const std::string& family);
 

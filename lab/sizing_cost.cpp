@@ -19,13 +19,25 @@ uint64_t tile_pixel_bits(int depth_bits, int coverage_samples, const WboitFormat
          uint64_t(accum_word_bits(wboit));
 }
 
-uint64_t MethodCost::traffic_bytes(int tile, int depth_bits, int coverage_samples) const {
-  const uint64_t word = uint64_t(accum_word_bits(wboit));
+namespace {
+
+// Bits the tile port moves for `pixels` per plane, each plane its width.
+uint64_t port_bits(const std::array<uint64_t, kTilePlanes>& pixels, int depth_bits,
+                   int coverage_samples, const WboitFormat& wboit) {
   const std::array<uint64_t, kTilePlanes> bits{32, uint64_t(depth_bits),
                                                uint64_t(coverage_bits(coverage_samples)),
-                                               uint64_t(depth_bits), word};
+                                               uint64_t(depth_bits),
+                                               uint64_t(accum_word_bits(wboit))};
   uint64_t io = 0;
-  for (size_t p = 0; p < bits.size(); ++p) io += at(tile).plane_pixels[p] * bits[p];
+  for (size_t p = 0; p < bits.size(); ++p) io += pixels[p] * bits[p];
+  return io;
+}
+
+}  // namespace
+
+uint64_t MethodCost::traffic_bytes(int tile, int depth_bits, int coverage_samples) const {
+  const uint64_t word = uint64_t(accum_word_bits(wboit));
+  const uint64_t io = port_bits(at(tile).plane_pixels, depth_bits, coverage_samples, wboit);
   const uint64_t access = 32 * (totals.color_reads + totals.color_writes - accum_accesses) +
                           word * accum_accesses +
                           uint64_t(depth_bits) * (totals.depth_reads + totals.depth_writes);
@@ -34,14 +46,8 @@ uint64_t MethodCost::traffic_bytes(int tile, int depth_bits, int coverage_sample
 
 uint64_t TileCost::port_bytes(TileSchedule s, int depth_bits, int coverage_samples,
                               const WboitFormat& wboit) const {
-  const std::array<uint64_t, kTilePlanes> bits{32, uint64_t(depth_bits),
-                                               uint64_t(coverage_bits(coverage_samples)),
-                                               uint64_t(depth_bits),
-                                               uint64_t(accum_word_bits(wboit))};
   const auto& pixels = s == TileSchedule::kTile ? resident.plane_pixels : plane_pixels;
-  uint64_t io = 0;
-  for (size_t p = 0; p < bits.size(); ++p) io += pixels[p] * bits[p];
-  return (io + 7) / 8;
+  return (port_bits(pixels, depth_bits, coverage_samples, wboit) + 7) / 8;
 }
 
 int MethodCost::best_tile(int depth_bits, int coverage_samples) const {

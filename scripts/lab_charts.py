@@ -5,7 +5,8 @@ Usage: lab_charts.py LAB_SUMMARY_CSV OUT_DIR [BEAT]
 
 Reads the per-family means `zblend lab` writes (lab_summary.csv, Pareto flags included: the
 front is computed and tested in C++, lab/lab.cpp) and writes OUT_DIR/main.png (every scene,
-error against cycles or fragments), OUT_DIR/main-bytes.png (against memory bytes) and
+error against cycles or fragments), OUT_DIR/main-bytes.png (against memory bytes),
+OUT_DIR/main-port-bytes.png (against the tile port's bytes per pixel, per schedule) and
 OUT_DIR/family-FAMILY.png for each family. From lab.csv beside the summary, OUT_DIR/tile-beat.png:
 tile cycles as a share of streaming cycles against the tile port's width, over every scene, per
 method (BEAT, zb_rop's width, is marked). From lab_lines.csv, OUT_DIR/hidden-line.png: the
@@ -159,6 +160,48 @@ def tile_beat_chart(lab_csv, beat, out_path):
     save(fig, out_path)
 
 
+def port_bytes_chart(lab_csv, out_path):
+    """Each method's mean error (against its fair reference) against the tile port's bytes per
+    pixel, under the pass schedule (open marker) and the tile schedule (filled), an arrow
+    between: the external bandwidth a method costs, where main-bytes.png counts the datapath's
+    accesses to the resident tile."""
+    with open(lab_csv, newline="") as f:
+        rows = [r for r in csv.DictReader(f) if r.get("port_bytes_tile")]
+    if not rows:
+        return
+    methods = []
+    for r in rows:
+        if r["method"] not in methods:
+            methods.append(r["method"])
+    fig, ax = plt.subplots(figsize=(9, 6), dpi=110)
+    colours = plt.get_cmap("tab20").colors
+    for k, m in enumerate(methods):
+        sel = [r for r in rows if r["method"] == m]
+        px = len(sel)  # every run counts once
+        err = max(ERROR_FLOOR, sum(float(r["fair_delta_e_mean"]) for r in sel) / px)
+        per_px = {s: sum(float(r[f"port_bytes_{s}"]) / float(r["frame_pixels"]) for r in sel) / px
+                  for s in ("pass", "tile")}
+        c = colours[k % len(colours)]
+        ax.scatter([per_px["pass"]], [err], facecolors="none", edgecolors=[c], s=46)
+        ax.scatter([per_px["tile"]], [err], color=c, s=46, label=m)
+        if per_px["pass"] != per_px["tile"]:
+            ax.annotate("", xy=(per_px["tile"], err), xytext=(per_px["pass"], err),
+                        arrowprops=dict(arrowstyle="->", color=c, lw=1))
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.xaxis.set_major_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
+    ax.xaxis.set_minor_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
+    ax.set_xlabel("tile-port bytes per pixel (loads and stores; open: pass schedule, "
+                  "filled: tile schedule), log")
+    ax.set_ylabel("mean delta E 2000 against the fair reference, log")
+    scenes = len({r["scene"] for r in rows})
+    ax.set_title(f"Error against external bandwidth ({scenes} scenes)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7, ncol=2)
+    fig.tight_layout()
+    save(fig, out_path)
+
+
 def hidden_line_chart(lines_csv, out_path):
     """Left: per scene, each hidden-line method's hidden edge pixels drawn and visible ones
     missing (shares of the reference's edge pixels). Right: their means against cost."""
@@ -240,6 +283,7 @@ def main(argv):
     if os.path.exists(lab_csv):
         tile_beat_chart(lab_csv, int(argv[3]) if len(argv) == 4 else 0,
                         os.path.join(out_dir, "tile-beat.png"))
+        port_bytes_chart(lab_csv, os.path.join(out_dir, "main-port-bytes.png"))
     return 0
 
 

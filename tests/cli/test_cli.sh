@@ -167,6 +167,7 @@ if "$tb" -q "${tiny[@]}" --waves "$tmp/new5/sub/x.fst" >/dev/null && [[ -s "$tmp
 # ---- options that would do nothing are refused ----------------------------------------------
 expect_zblend_error "backpressure on golden" "--backpressure: needs --backend rtl or both" render --backpressure 0.3 --out "$tmp/out/a.png"
 expect_zblend_error "seed on golden" "--seed: needs --backend rtl or both" render --seed 5 --out "$tmp/out/a.png"
+expect_zblend_error "schedule on golden" "--schedule: needs --backend rtl or both" render --schedule pass --out "$tmp/out/a.png"
 expect_zblend_error "no-lockstep on rtl" "--no-lockstep: needs --backend both" render --backend rtl --no-lockstep --out "$tmp/out/a.png"
 expect_zblend_error "negative seed" "--seed: -1 is out of range" render --backend rtl --seed -1 --out "$tmp/out/a.png"
 expect_zblend_error "threads above the maximum" "--threads: 1000 is out of range \(1 to 256\)" render --threads 1000 --out "$tmp/out/a.png"
