@@ -20,6 +20,9 @@ usage: scripts/synth.sh [options]
                       RAMs; 2 takes 31 and some 600 logic cells more, which the HX8K lacks)
   --depth-bits N      DEPTH_BITS (default 24)
   --cov-samples N     COV_SAMPLES (default 16)
+  --tile-ops N        TILE_OPS (default 0: zb_resolve's multipliers between the colour RAM's
+                      read and the port take the HX8K to 45 MHz and 99 % of its cells; the
+                      lab configuration takes 1, zb_rop's default)
   --set NAME=VALUE    another zb_rop parameter (ACC_BITS, WINDOW, CNT_W, ...), repeatable
   --freq MHZ          nextpnr target clock (default 100)
   --seeds "S1 S2..."  nextpnr placement seeds; the first is the reported one, all give the
@@ -27,6 +30,9 @@ usage: scripts/synth.sh [options]
   --require-mhz N     exit 3 when the first seed's maximum frequency is below N MHz
                       (default: report a missed target, do not fail)
   --no-pnr            stop after Yosys (no nextpnr)
+  --keep-mem          generic synthesis keeps the tile memories as memory cells (counted
+                      apart) instead of mapping them to flip-flops: for the lab configuration
+                      (64x64, BEAT 8), whose planes are too large to map bit by bit
   -h, --help          this text
 Exit status: 0 done; 1 a tool failed (synthesis error, check -assert, a latch); 2 usage;
 3 below --require-mhz; 4 the harness needs more logic cells than the HX8K has (nextpnr's
@@ -41,10 +47,12 @@ tile_h=16
 beat=1
 depth_bits=24
 cov_samples=16
+tile_ops=0
 freq=100
 seeds="1 2 3"
 require_mhz=""
 pnr=1
+keep_mem=0
 extra=""
 extra_args=""
 while [[ $# -gt 0 ]]; do
@@ -55,17 +63,19 @@ while [[ $# -gt 0 ]]; do
     --beat) beat=${2:?}; shift 2 ;;
     --depth-bits) depth_bits=${2:?}; shift 2 ;;
     --cov-samples) cov_samples=${2:?}; shift 2 ;;
+    --tile-ops) tile_ops=${2:?}; shift 2 ;;
     --set) [[ ${2:-} =~ ^[A-Z_]+=[0-9]+$ ]] || { echo "synth.sh: --set needs NAME=NUMBER" >&2; exit 2; }
            extra+=" -set ${2%%=*} ${2#*=}"; extra_args+=" --set $2"; shift 2 ;;
     --freq) freq=${2:?}; shift 2 ;;
     --seeds) seeds=${2:?}; shift 2 ;;
     --require-mhz) require_mhz=${2:?}; shift 2 ;;
     --no-pnr) pnr=0; shift ;;
+    --keep-mem) keep_mem=1; shift ;;
     -h|--help) usage; exit 0 ;;
     *) echo "synth.sh: unknown option '$1'" >&2; usage >&2; exit 2 ;;
   esac
 done
-for v in "$tile" "$tile_h" "$beat" "$depth_bits" "$cov_samples" "$freq" ${require_mhz:+"$require_mhz"} $seeds; do
+for v in "$tile" "$tile_h" "$beat" "$depth_bits" "$cov_samples" "$tile_ops" "$freq" ${require_mhz:+"$require_mhz"} $seeds; do
   [[ $v =~ ^[0-9]+$ ]] || { echo "synth.sh: '$v' is not a number" >&2; exit 2; }
 done
 
@@ -76,7 +86,7 @@ done
 cd "$root"
 mkdir -p "$out"
 rtl="rtl/zb_pkg.sv $(ls rtl/*.sv | grep -v '/zb_pkg.sv$' | tr '\n' ' ')"  # the package first
-params="-set TILE_W $tile -set TILE_H $tile_h -set BEAT $beat -set DEPTH_BITS $depth_bits -set COV_SAMPLES $cov_samples$extra"
+params="-set TILE_W $tile -set TILE_H $tile_h -set BEAT $beat -set DEPTH_BITS $depth_bits -set COV_SAMPLES $cov_samples -set TILE_OPS $tile_ops$extra"
 latch_types='t:$dlatch t:$adlatch t:$dlatchsr t:$_DLATCH_* t:$_DLATCHSR_*'
 t0=$SECONDS
 step() { printf 'synth: [%4ds] %s\n' $((SECONDS - t0)) "$*"; }
@@ -85,13 +95,17 @@ fail() { echo "synth: FAILED: $*" >&2; exit 1; }
 # Cell count of a `stat` type line ("     SB_LUT4    123"); 0 when absent. Last stat wins.
 count() { awk -v t="$2" '$1 == t { n = $2 } END { print n + 0 }' "$1"; }
 
-step "yosys: generic synthesis of zb_rop (TILE ${tile}x$tile_h, BEAT $beat, DEPTH_BITS $depth_bits, COV_SAMPLES $cov_samples)"
+step "yosys: generic synthesis of zb_rop (TILE ${tile}x$tile_h, BEAT $beat, DEPTH_BITS $depth_bits, COV_SAMPLES $cov_samples, TILE_OPS $tile_ops)"
+generic="synth -top zb_rop"
+# synth up to its fine label, then its fine steps without memory_map.
+[[ $keep_mem == 1 ]] && generic="synth -top zb_rop -run :fine; opt -fast -full; techmap; opt -fast; abc -fast; opt -fast"
 yosys -l "$out/yosys_generic.log" -q -p "read_verilog -sv $rtl; chparam $params zb_rop;
-  synth -top zb_rop; check -assert; tee -o $out/latches_generic.txt select -list $latch_types;
+  $generic; check -assert; tee -o $out/latches_generic.txt select -list $latch_types;
   select -assert-none $latch_types; tee -o $out/stat_generic.txt stat" >/dev/null \
   || fail "generic synthesis (see $out/yosys_generic.log)"
 cells=$(awk '/Number of cells:/ { n = $4 } END { print n + 0 }' "$out/stat_generic.txt")
-step "  $cells cells, check -assert clean, no latch"
+mem_cells=$(count "$out/stat_generic.txt" '$mem_v2')
+step "  $cells cells ($mem_cells of them memories), check -assert clean, no latch"
 
 step "yosys: synth_ice40 of zb_rop"
 # hierarchy derives the parametrised top under a $paramod name: rename -top gives it its own.
@@ -106,22 +120,25 @@ rams=$(count "$s" SB_RAM40_4K)
 ffs=$(awk '$1 ~ /^SB_DFF/ { n += $2 } END { print n + 0 }' "$s")
 step "  $luts SB_LUT4, $carries SB_CARRY, $rams SB_RAM40_4K, $ffs flip-flops"
 
-step "yosys: synth_ice40 of the harness rtl/fpga/zb_rop_harness.sv"
-yosys -l "$out/yosys_harness.log" -q -p "read_verilog -sv $rtl rtl/fpga/zb_rop_harness.sv;
-  chparam $params zb_rop_harness; synth_ice40 -top zb_rop_harness -json $out/harness.json;
-  check -assert; tee -o $out/stat_harness.txt stat" >/dev/null \
-  || fail "synth_ice40 of the harness (see $out/yosys_harness.log)"
-h_luts=$(count "$out/stat_harness.txt" SB_LUT4)
-h_carries=$(count "$out/stat_harness.txt" SB_CARRY)
-h_rams=$(count "$out/stat_harness.txt" SB_RAM40_4K)
-h_ffs=$(awk '$1 ~ /^SB_DFF/ { n += $2 } END { print n + 0 }' "$out/stat_harness.txt")
-step "  harness: $h_luts SB_LUT4, $h_carries SB_CARRY, $h_ffs flip-flops (zb_rop alone: $luts, $carries, $ffs)"
-# The harness must keep all of zb_rop: its RAMs, flops and (within 5 %) LUTs and carries.
 kept=yes
-if [[ $h_rams -ne $rams || $h_ffs -lt $ffs || $((h_luts * 100)) -lt $((luts * 95)) ||
-      $((h_carries * 100)) -lt $((carries * 95)) ]]; then
-  kept=no
-  echo "synth: WARNING: the harness has less logic than zb_rop alone: part was optimised away" >&2
+h_luts="" h_carries="" h_rams="" h_ffs=""
+if [[ $pnr == 1 ]]; then  # the harness is only for place and route
+  step "yosys: synth_ice40 of the harness rtl/fpga/zb_rop_harness.sv"
+  yosys -l "$out/yosys_harness.log" -q -p "read_verilog -sv $rtl rtl/fpga/zb_rop_harness.sv;
+    chparam $params zb_rop_harness; synth_ice40 -top zb_rop_harness -json $out/harness.json;
+    check -assert; tee -o $out/stat_harness.txt stat" >/dev/null \
+    || fail "synth_ice40 of the harness (see $out/yosys_harness.log)"
+  h_luts=$(count "$out/stat_harness.txt" SB_LUT4)
+  h_carries=$(count "$out/stat_harness.txt" SB_CARRY)
+  h_rams=$(count "$out/stat_harness.txt" SB_RAM40_4K)
+  h_ffs=$(awk '$1 ~ /^SB_DFF/ { n += $2 } END { print n + 0 }' "$out/stat_harness.txt")
+  step "  harness: $h_luts SB_LUT4, $h_carries SB_CARRY, $h_ffs flip-flops (zb_rop alone: $luts, $carries, $ffs)"
+  # The harness must keep all of zb_rop: its RAMs, flops and (within 5 %) LUTs and carries.
+  if [[ $h_rams -ne $rams || $h_ffs -lt $ffs || $((h_luts * 100)) -lt $((luts * 95)) ||
+        $((h_carries * 100)) -lt $((carries * 95)) ]]; then
+    kept=no
+    echo "synth: WARNING: the harness has less logic than zb_rop alone: part was optimised away" >&2
+  fi
 fi
 
 fmax_list=()
@@ -206,17 +223,28 @@ rep=$out/report.md
 {
   echo "# zb_rop synthesis report"
   echo
-  echo "Command: \`scripts/synth.sh --tile $tile --tile-h $tile_h --beat $beat$extra_args --depth-bits $depth_bits --cov-samples $cov_samples --freq $freq --seeds \"$seeds\"\`"
+  echo "Command: \`scripts/synth.sh --tile $tile --tile-h $tile_h --beat $beat$extra_args --depth-bits $depth_bits --cov-samples $cov_samples --tile-ops $tile_ops --freq $freq --seeds \"$seeds\"$([[ $keep_mem == 1 ]] && echo " --keep-mem")$([[ $pnr == 0 && $fits == yes ]] && echo " --no-pnr")\`"
   echo "($(yosys -V | head -1); $(nextpnr-ice40 --version 2>&1 | head -1))."
   echo
   echo "| figure | value | source |"
   echo "|---|---|---|"
-  echo "| generic cells | $cells | \`synth -top zb_rop; check -assert; stat\` |"
+  if [[ $keep_mem == 1 ]]; then
+    echo "| generic cells | $cells, of them $mem_cells memories kept whole | \`synth -top zb_rop -run :fine\`, then its fine steps without \`memory_map\`; \`check -assert; stat\` |"
+  else
+    echo "| generic cells | $cells | \`synth -top zb_rop; check -assert; stat\` |"
+  fi
   echo "| SB_LUT4 | $luts | \`synth_ice40 -top zb_rop; stat\` |"
   echo "| SB_CARRY | $carries | same |"
   echo "| SB_RAM40_4K | $rams | same |"
   echo "| flip-flops (SB_DFF*) | $ffs | same |"
   echo "| latches | 0 (asserted) | \`select -assert-none\` latch cells |"
+  if [[ -z $lc ]]; then
+    # Not placed (--no-pnr): each logic cell holds one LUT4 and one flip-flop, so the larger
+    # count is a lower bound on the cells; the HX8K has 7680 and 32 RAM blocks.
+    need=$(( luts > ffs ? luts : ffs ))
+    if (( need > 7680 || rams > 32 )); then verdict="**does not fit the HX8K**"; else verdict="not placed"; fi
+    echo "| HX8K fit | $verdict: at least $need of 7680 logic cells (the larger of LUT4 and flip-flops), $rams of 32 RAM blocks | the counts above |"
+  fi
   if [[ $fits == no ]]; then
     echo "| ICESTORM_LC (harness) | $lc / $lc_total: **does not fit** | nextpnr-ice40 --hx8k --pack-only |"
     echo "| ICESTORM_RAM | $ram_used / $ram_total | same |"
@@ -243,7 +271,7 @@ rep=$out/report.md
     echo '```'
   fi
   echo
-  echo "Logs: $out/yosys_*.log, $out/nextpnr_seed*.log."
+  echo "Logs: $out/yosys_*.log$([[ -n $lc ]] && echo ", $out/nextpnr_*.log")."
 } >"$rep"
 
 echo

@@ -18,7 +18,8 @@ module zb_rop_harness #(
   parameter int unsigned BEAT        = 1,   // scripts/synth.sh --beat
   parameter int unsigned ACC_BITS    = 16,
   parameter int unsigned REV_BITS    = 8,
-  parameter int unsigned WEIGHT_BITS = 4
+  parameter int unsigned WEIGHT_BITS = 4,
+  parameter bit          TILE_OPS    = 1'b0   // scripts/synth.sh --tile-ops (docs/rtl.md "Synthesis")
 ) (
   input  logic clk_i,
   input  logic rst_ni,
@@ -98,7 +99,8 @@ module zb_rop_harness #(
     .BEAT       (BEAT),
     .ACC_BITS   (ACC_BITS),
     .REV_BITS   (REV_BITS),
-    .WEIGHT_BITS(WEIGHT_BITS)
+    .WEIGHT_BITS(WEIGHT_BITS),
+    .TILE_OPS   (TILE_OPS)
   ) u_rop (
     .clk_i,
     .rst_ni            (rst_n_q),

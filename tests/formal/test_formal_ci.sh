@@ -12,7 +12,7 @@ rows=$(tail -n +2 "$out/summary.csv")
 [[ -n $rows ]] || fail "summary.csv lists no job: nothing was checked"
 bad=$(awk -F, 'NR > 1 && $4 != "proven" && $4 != "bounded" && $4 != "reached"' "$out/summary.csv")
 [[ -z $bad ]] || fail "jobs not passed: $bad"
-for group in mul8 premul blend skid stream raw covers; do
+for group in mul8 premul blend resolve skid stream raw covers; do
   grep -q "^$group" "$out/summary.csv" || fail "group $group missing from the CI set"
 done
 echo "ok: $(wc -l <<<"$rows") formal jobs passed ($out/summary.csv)"
