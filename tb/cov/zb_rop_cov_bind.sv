@@ -28,6 +28,8 @@ bind zb_rop zb_rop_cov #(
   .tile_req_i   (tile_req_i),
   .tile_we_i    (tile_we_i),
   .tile_clear_i (tile_clear_i),
+  .tile_copy_i  (tile_copy_i),
+  .tile_resolve_i(tile_resolve_i),
   .tile_planes_i(tile_planes_i),
   .tile_addr_i  (tile_addr_i),
   .win_valid    (u_window.valid_q),
