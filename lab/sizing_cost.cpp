@@ -185,22 +185,22 @@ void CostCounter::end_group() {
       auto reads = [&](bool copy, bool sweep) {
         return copy ? beats + kRtlCopyTail : sweep ? beats : 0;
       };
-      auto load = [&](uint8_t planes) {
+      // A load or the store of these planes through the port: a beat a cycle, every plane's
+      // pixels moved.
+      auto move = [&](uint8_t planes) {
         if (!planes) return;
         r.io_cycles += beats;
         r.beats += beats;
         for (int p = 0; p < kTilePlanes; ++p) r.plane_pixels[size_t(p)] += pixels * (planes >> p & 1);
       };
       for (const TileStates::RunPlan::Step& st : run.steps) {
-        load(st.preload);
+        move(st.preload);
         r.io_cycles += reads(st.copy, st.sweep) + kRtlTileSetup;
-        load(st.io.load);
+        move(st.io.load);
       }
-      load(run.preload_after);
+      move(run.preload_after);
       r.io_cycles += reads(run.copy_after, run.sweep_after && !run.store);
-      r.io_cycles += run.store ? beats : 0;
-      r.beats += run.store ? beats : 0;
-      for (int p = 0; p < kTilePlanes; ++p) r.plane_pixels[size_t(p)] += pixels * (run.store >> p & 1);
+      move(run.store);
     }
     g.group.clear();
   }
@@ -229,7 +229,7 @@ void CostCounter::finish_frame(std::vector<PassStats>& stats) {
 // costs the host a pixel a clock (a clear is a fast clear wherever it is).
 void CostCounter::frame_op(const FrameOp& op) {
   inner_.frame_op(op);
-  if (group_passes_ > 0 && !group_resolve_ && op.kind != FrameOpKind::kResolveWboit) {
+  if (group_passes_ > 0 && !group_resolve_ && runs_on_tile(op.kind)) {
     if (op.kind == FrameOpKind::kResolveUnder)
       group_resolve_ = true;
     else

@@ -308,7 +308,7 @@ void RtlRop::finish_frame(std::vector<PassStats>& stats) {
 bool RtlRop::on_tile(const FrameOp& op) const {
   const Impl& m = *impl_;
   if (m.opt.schedule != TileSchedule::kTile || !m.pending() || m.resolve) return false;
-  return op.kind != FrameOpKind::kResolveWboit;
+  return runs_on_tile(op.kind);
 }
 
 // On the resident tiles (on_tile), the operation joins the group: a clear and a copy run there

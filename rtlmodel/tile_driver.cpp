@@ -48,7 +48,7 @@ class TileRunner {
   }
 
   TileResult run() {
-      TileRun& r = out_.run;
+    TileRun& r = out_.run;
     r.x0 = job_.x0;
     r.y0 = job_.y0;
     r.load_begin = s_.cycle;

@@ -72,6 +72,10 @@ enum class TileSchedule : uint8_t { kPass, kTile };
 const char* to_string(TileSchedule s);
 // "pass" or "tile"; false for anything else.
 bool parse_schedule(const std::string& name, TileSchedule& out);
+// Whether the tile schedule runs a frame operation on the resident tiles of the passes waiting
+// for it (docs/rtl.md "Tile operations"): all but the resolve of the accumulation, which needs a
+// divider a lane and stays on the host.
+inline bool runs_on_tile(FrameOpKind k) { return k != FrameOpKind::kResolveWboit; }
 
 // Beats of a w x h tile: a beat is `beat` neighbours of one row. Loads and stores move the
 // whole tile also where the frame clips it: every word's fast-clear generation must follow
