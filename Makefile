@@ -73,6 +73,7 @@ regress: build ## Run GROUP (default nightly) of tb/regressions.json: out/regres
 BASELINE ?= d91dc3f
 
 bench: build ## Benchmarks: datapath, golden vs llvmpipe, memory, RTL (beside BASELINE's and PGO's), cost growth: out/bench/
+	@scripts/setup.sh bench
 	@cmake --build $(BUILD) -j $(JOBS) --target zblend_bench zblend_bench_rtl zblend_bench_rtl_assert zblend_window_sweep
 	@$(if $(BASELINE),scripts/bench_baseline.sh $(BASELINE) build-baseline -j $(JOBS))
 	@scripts/pgo.sh -j $(JOBS) -d build-pgo

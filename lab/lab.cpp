@@ -134,6 +134,8 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
       row.model_stream_cycles = mc.at(kRtlTileW).stream_cycles;
       const TileCost& at_rtl = counters[lab_beat_index(kRtlBeat)]->cost().at(kRtlTileW);
       row.model_tile_cycles_resident = at_rtl.resident.io_cycles;
+      row.model_cycles_2buf_resident = at_rtl.resident.two_buffer_cycles;
+      row.model_cycles_2buf_renamed = at_rtl.resident.two_buffer_renamed_cycles;
       row.port_bytes_pass = at_rtl.port_bytes(TileSchedule::kPass, vp.depth_bits, vp.coverage_samples, vp.wboit);
       row.port_bytes_tile = at_rtl.port_bytes(TileSchedule::kTile, vp.depth_bits, vp.coverage_samples, vp.wboit);
       row.frame_op_pixels = mc.frame_op_pixels;
@@ -201,7 +203,7 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
   csv += ",edge_pixels,hidden_drawn,visible_missing,hidden_drawn_share,visible_missing_share";
   csv += ",tile_cycles_tile_schedule,rtl_tile_cycles_tile_schedule,rtl_mismatch_pixels_tile_schedule,"
          "port_bytes_pass,port_bytes_tile,frame_op_pixels,host_op_pixels_tile_schedule,"
-         "frame_pixels\n";
+         "frame_pixels,cycles_2buf_tile_schedule,cycles_2buf_renamed_tile_schedule\n";
   for (const LabRow& r : rows) {
     const PassStats& s = r.golden;
     const std::string cost =
@@ -228,12 +230,13 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
                               r.lines->hidden_drawn_share(), r.lines->visible_missing_share())
                 : ",,,,";
     const std::string sched =
-        r.has_cost ? fmt::format("{},{},{},{},{},{},{},{}", r.model_tile_cycles_resident,
+        r.has_cost ? fmt::format("{},{},{},{},{},{},{},{},{},{}", r.model_tile_cycles_resident,
                                  r.rtl_resident_tile_cycles ? std::to_string(*r.rtl_resident_tile_cycles) : "",
                                  r.rtl_resident_tile_cycles ? std::to_string(r.rtl_resident_mismatch_pixels) : "",
                                  r.port_bytes_pass, r.port_bytes_tile, r.frame_op_pixels,
-                                 r.host_op_pixels_tile, r.pixels)
-                   : ",,,,,,,";
+                                 r.host_op_pixels_tile, r.pixels, r.model_cycles_2buf_resident,
+                                 r.model_cycles_2buf_renamed)
+                   : ",,,,,,,,,";
     csv += fmt::format("{},{},{},{},{:.3f},{},{},{},{},{:.4f},{:.4f},{},{},{}\n", r.scene, r.family,
                        r.method, cost, r.host_ms, rtl, error_cells(r.error),
                        error_cells(r.error_ss), to_string(r.fair), r.fair_error().delta_e_mean,
@@ -310,7 +313,7 @@ std::string stream_share_text(const std::vector<LabRow>& rows, int beat) {
 std::string schedule_text(const std::vector<LabRow>& rows, bool per_method) {
   struct Sum {
     uint64_t fragments = 0, stream = 0, io[2] = {0, 0}, bytes[2] = {0, 0}, host[2] = {0, 0}, pixels = 0,
-             mismatch[2] = {0, 0}, runs = 0;
+             mismatch[2] = {0, 0}, runs = 0, two_buffers = 0, renamed = 0;
     void add(const LabRow& r) {
       fragments += r.golden.fragments_in;
       stream += r.model_stream_cycles;
@@ -323,6 +326,8 @@ std::string schedule_text(const std::vector<LabRow>& rows, bool per_method) {
       pixels += r.pixels;
       mismatch[0] += r.rtl_mismatch_pixels;
       mismatch[1] += r.rtl_resident_mismatch_pixels;
+      two_buffers += r.model_cycles_2buf_resident;
+      renamed += r.model_cycles_2buf_renamed;
       ++runs;
     }
     double per(uint64_t c) const { return fragments ? double(c) / double(fragments) : 0.0; }
@@ -352,14 +357,21 @@ std::string schedule_text(const std::vector<LabRow>& rows, bool per_method) {
     if (rtl) out += fmt::format("; {} mismatching pixels on the RTL", all.mismatch[i]);
     out += "\n";
   }
+  out += fmt::format("schedule tile with two tile buffers (cost model of the proposed design): "
+                     "all cycles per fragment {:.4f}, {:.4f} with the host's frame operations; "
+                     "with copies of depth to peel as a renaming of banks too {:.4f}, {:.4f}\n",
+                     all.per(all.two_buffers), all.per(all.two_buffers + all.host[1]),
+                     all.per(all.renamed), all.per(all.renamed + all.host[1]));
   if (!per_method) return out;
   for (const auto& [name, m] : methods)
     out += fmt::format("  {:<16} pass: {:.4f} cycles/fragment, {:5.1f} B/pixel, host frame "
-                       "operations {:.4f}; tile: {:.4f}, {:5.1f} B/pixel, host {:.4f}\n",
+                       "operations {:.4f}; tile: {:.4f}, {:5.1f} B/pixel, host {:.4f}; "
+                       "two buffers {:.4f}\n",
                        name, m.per(m.stream + m.io[0]),
                        m.pixels ? double(m.bytes[0]) / double(m.pixels) : 0.0, m.per(m.host[0]),
                        m.per(m.stream + m.io[1]),
-                       m.pixels ? double(m.bytes[1]) / double(m.pixels) : 0.0, m.per(m.host[1]));
+                       m.pixels ? double(m.bytes[1]) / double(m.pixels) : 0.0, m.per(m.host[1]),
+                       m.per(m.two_buffers));
   return out;
 }
 

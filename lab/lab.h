@@ -81,6 +81,10 @@ struct LabRow {
   // cost model's tile cycles at zb_rop's BEAT, and, with the RTL, its run under that schedule:
   // tile cycles and pixels differing from the golden frame.
   uint64_t model_tile_cycles_resident = 0;
+  // Its every cycle, streaming included, with two tile buffers (cost model of the proposed
+  // design, ResidentTraffic::two_buffer_cycles).
+  uint64_t model_cycles_2buf_resident = 0;
+  uint64_t model_cycles_2buf_renamed = 0;  // and with copies free (two_buffer_renamed_cycles)
   std::optional<uint64_t> rtl_resident_tile_cycles;
   uint64_t rtl_resident_mismatch_pixels = 0;
   // Tile-port bytes per frame (loads and stores, each plane its width), per schedule, and the
@@ -132,8 +136,8 @@ std::string tile_share_text(const std::vector<LabRow>& rows, int beat);
 std::string stream_share_text(const std::vector<LabRow>& rows, int beat);
 // Per schedule (pass, tile) over the rows with a cost: all cycles per fragment (streaming and
 // the tile port; then with the host's frame operations at a pixel a clock), tile-port bytes per
-// pixel, and the RTL's mismatching pixels; a line each, then (`per_method`) one per method
-// (its scenes' sums).
+// pixel, and the RTL's mismatching pixels; a line each, then the tile schedule with two tile
+// buffers (the cost model's), then (`per_method`) one per method (its scenes' sums).
 std::string schedule_text(const std::vector<LabRow>& rows, bool per_method = true);
 
 // The non-dominated points when both coordinates are to be minimised: indices of the points

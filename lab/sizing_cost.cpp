@@ -129,6 +129,7 @@ PassStats CostCounter::end_pass() {
     // The driver runs the touched tiles in tile order; the two-buffer schedule depends on it.
     std::sort(g.touched.begin(), g.touched.end());
     std::vector<TileStream> overlapped;
+    std::vector<uint64_t> streams;
     for (const uint32_t t : g.touched) {
       const int x0 = int(t % uint32_t(g.columns)) * g.size;
       const int y0 = int(t / uint32_t(g.columns)) * g.size;
@@ -136,7 +137,8 @@ PassStats CostCounter::end_pass() {
       const uint64_t beats = tile_beats(g.size, g.size, beat_), pixels = uint64_t(w) * uint64_t(h);
       const TileIo io = g.states.plan(t, state_);
       g.states.stored(t, io.store);
-      c.stream_cycles += schedule_.run(g.stream[t].data(), g.stream[t].size());
+      streams.push_back(schedule_.run(g.stream[t].data(), g.stream[t].size()));
+      c.stream_cycles += streams.back();
       c.tile_io_cycles += tile_io_cycles(beats, io);
       c.tile_beats += (io.load ? beats : 0) + (io.store ? beats : 0);
       for (int p = 0; p < kTilePlanes; ++p)
@@ -153,9 +155,20 @@ PassStats CostCounter::end_pass() {
     for (const uint32_t t : g.touched) g.stream[t].clear();
     c.tiles_loaded += g.touched.size();
     g.group.push_back(std::move(g.touched));
+    g.group_stream.push_back(std::move(streams));
     g.touched.clear();
   }
   return s;
+}
+
+// The stream cycles of tile t in the group's step `step` (a pass that touches it).
+uint64_t CostCounter::stream_of(const Grid& g, size_t step, uint32_t t) const {
+  size_t pass = 0;
+  for (size_t k = 0; k < step; ++k) pass += group_steps_[k].pass;
+  const std::vector<uint32_t>& tiles = g.group[pass];
+  const auto it = std::lower_bound(tiles.begin(), tiles.end(), t);
+  if (it == tiles.end() || *it != t) throw std::logic_error("cost model: a step without its tile");
+  return g.group_stream[pass][size_t(it - tiles.begin())];
 }
 
 // As the RTL driver's tile schedule (rtlmodel/rtl_rop.cpp): per tile the group's passes that
@@ -171,6 +184,7 @@ void CostCounter::end_group() {
     for (const auto& p : g.group) all.insert(all.end(), p.begin(), p.end());
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
+    std::vector<ResidentRun> runs, renamed;
     for (const uint32_t t : all) {
       size_t pass = 0;
       for (TileStates::GroupStep& st : group_steps_)
@@ -182,27 +196,40 @@ void CostCounter::end_group() {
       const uint64_t pixels = uint64_t(std::min(g.size, width_ - x0)) *
                               uint64_t(std::min(g.size, height_ - y0));
       ++r.tile_runs;
+      ResidentRun two;  // with two buffers: the loads ahead, the rest in the buffer's work
+      uint64_t copies = 0;
       auto reads = [&](bool copy, bool sweep) {
-        return copy ? beats + kRtlCopyTail : sweep ? beats : 0;
+        const uint64_t c = copy ? beats + kRtlCopyTail : sweep ? beats : 0;
+        two.work += c;
+        copies += copy ? c : 0;
+        return c;
       };
       // A load or the store of these planes through the port: a beat a cycle, every plane's
       // pixels moved.
-      auto move = [&](uint8_t planes) {
+      auto move = [&](uint8_t planes, uint64_t& port) {
         if (!planes) return;
         r.io_cycles += beats;
         r.beats += beats;
+        port += beats;
         for (int p = 0; p < kTilePlanes; ++p) r.plane_pixels[size_t(p)] += pixels * (planes >> p & 1);
       };
       for (const TileStates::RunPlan::Step& st : run.steps) {
-        move(st.preload);
+        move(st.preload, two.load);
         r.io_cycles += reads(st.copy, st.sweep) + kRtlTileSetup;
-        move(st.io.load);
+        move(st.io.load, two.load);
+        two.work += kRtlTileSetup + stream_of(g, st.step, t);
       }
-      move(run.preload_after);
+      move(run.preload_after, two.load);
       r.io_cycles += reads(run.copy_after, run.sweep_after && !run.store);
-      move(run.store);
+      move(run.store, two.store);
+      runs.push_back(two);
+      renamed.push_back(two);
+      renamed.back().work -= copies;
     }
+    r.two_buffer_cycles += two_buffer_group(runs);
+    r.two_buffer_renamed_cycles += two_buffer_group(renamed);
     g.group.clear();
+    g.group_stream.clear();
   }
   group_steps_.clear();
   group_passes_ = 0;

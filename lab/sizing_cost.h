@@ -26,6 +26,12 @@ struct ResidentTraffic {
   // Pixels of the frame operations left on the host (a copy or resolve with no group waiting,
   // the accumulation's resolve): a pixel a clock on a tile port. Clears are fast clears.
   uint64_t host_op_pixels = 0;
+  // The same runs with two tile buffers (two_buffer_group, rtl_timing.h): every cycle of the
+  // groups, streaming included, with the port's loads and stores beside the other buffer's work.
+  uint64_t two_buffer_cycles = 0;
+  // And with each copy of depth to peel free (the planes' banks renamed: the built-in plans
+  // clear depth right after every copy), the rest as two_buffer_cycles.
+  uint64_t two_buffer_renamed_cycles = 0;
 };
 
 // A method's cost with square tiles of one size. The fields without a schedule in their name
@@ -119,8 +125,10 @@ class CostCounter final : public Backend {
     // each touches (sorted).
     TileStates resident_states, group_start;
     std::vector<std::vector<uint32_t>> group;  // per pass of the group: its tiles, sorted
+    std::vector<std::vector<uint64_t>> group_stream;  // and each one's stream cycles
   };
   void end_group();  // the tile schedule's group ends: its traffic
+  uint64_t stream_of(const Grid& g, size_t step, uint32_t t) const;
   std::vector<RopState> pass_states_;  // the frame's, for finish_frame's counters
   std::vector<TileStates::GroupStep> group_steps_;  // the tile schedule's group
   size_t group_passes_ = 0;

@@ -163,6 +163,29 @@ OverlapCycles IssueSchedule::run_two_buffers(const std::vector<TileStream>& tile
   return out;
 }
 
+uint64_t two_buffer_group(const std::vector<ResidentRun>& runs) {
+  const size_t n = runs.size();
+  std::vector<uint64_t> load_end(n), store_end(n);
+  uint64_t port = 0, pipe = 0;  // free from these cycles
+  auto load = [&](size_t k) {
+    port = std::max(port, k >= 2 ? store_end[k - 2] : 0) + runs[k].load;
+    load_end[k] = port;
+  };
+  auto work_and_store = [&](size_t k) {
+    pipe = std::max(pipe, load_end[k]) + runs[k].work;
+    port = std::max(port, pipe) + runs[k].store;
+    store_end[k] = port;
+  };
+  if (n == 0) return 0;
+  load(0);
+  for (size_t k = 1; k < n; ++k) {
+    load(k);  // runs k - 1's work meanwhile; its store follows on the port
+    work_and_store(k - 1);
+  }
+  work_and_store(n - 1);
+  return port;
+}
+
 uint64_t IssueSchedule::run_tile(const TileBins& bins, size_t tile, const Fragment* f, int width,
                                  uint64_t* issue) {
   tile_pixels_.clear();

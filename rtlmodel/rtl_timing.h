@@ -38,6 +38,22 @@ struct OverlapCycles {
   uint64_t total = 0;   // the first port cycle to the end of the last store (or drain)
 };
 
+// One tile's run under the tile schedule (TileSchedule::kTile) for the two-buffer timing: its
+// port cycles before its first pass (every load and preload of the group, moved ahead: loads
+// read the frame as it was at the group's start), the cycles its buffer is busy (per pass: the
+// setup, a copy's or sweep's reads on the buffer's own memories, the stream with its fill and
+// drain), and its store's port cycles.
+struct ResidentRun {
+  uint64_t load = 0, work = 0, store = 0;
+};
+
+// A group's cycles with two tile buffers under the tile schedule (the proposed RTL of docs/rtl.md
+// "A second tile buffer"): run k works in buffer k % 2 once its load has ended and run k - 1's
+// work has; the one port runs load 0, load 1, store 0, load 2, store 1, ..., each when the port
+// is free, a store once its run's work has ended, a load once its buffer's run before it is
+// stored. Returns the end of the last store (0 for no runs).
+uint64_t two_buffer_group(const std::vector<ResidentRun>& runs);
+
 // The issue schedule of a tile's stream, cycle for cycle as zb_rop issues it.
 class IssueSchedule {
  public:

@@ -3,8 +3,13 @@ zb_rop against Verilator's ceiling, the RTL against the golden model in CPU time
 every figure, the same runs of a baseline build (scripts/bench_baseline.sh) and of the speed build
 with PGO (scripts/pgo.sh) in the same bench: ratios measured side by side, never against
 figures of another day."""
+import json
 import os
+import re
+import shlex
+import shutil
 import statistics
+import subprocess
 import time
 
 CAD = ["--scene", "cad", "-W", "640", "-H", "480"]
@@ -16,6 +21,28 @@ def hazard(b, exe, reps):
     med = {name.split("/")[0]: r for name, r in med.items()}
     return (med["BM_RtlHazard"]["cycles_per_second"] / 1e6,
             med["BM_VerilatorCeiling"]["cycles_per_second"] / 1e6, cmd)
+
+
+def instructions(b, exe):
+    """Instructions one iteration of BM_RtlHazard takes under valgrind's cachegrind (its
+    whole process), and its fragments per clock: a count that does not move with the machine's
+    load, so two builds' ratio is exact where their wall clocks are not. None without
+    valgrind."""
+    if not shutil.which("valgrind"):
+        return None
+    cmd = ["valgrind", "--tool=cachegrind", "--cache-sim=no", "--cachegrind-out-file=/dev/null",
+           exe, "--benchmark_filter=BM_RtlHazard", "--benchmark_min_time=0",
+           "--benchmark_format=json"]
+    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    refs = re.search(r"I\s+refs:\s+([\d,]+)", proc.stderr)
+    if proc.returncode != 0 or not refs:
+        raise SystemExit(f"bench: error: `{shlex.join(cmd)}` exited {proc.returncode}:\n"
+                         f"{proc.stderr[-2000:]}")
+    run = json.loads(proc.stdout)["benchmarks"][0]
+    if run["iterations"] != 1:
+        raise SystemExit(f"bench: error: `{shlex.join(cmd)}` ran {run['iterations']} iterations, "
+                         "not one")
+    return int(refs.group(1).replace(",", "")), run["fragments_per_clock"], cmd
 
 
 def cpu_seconds(b, cmd, reps):
@@ -64,6 +91,19 @@ def speed(b, reps, baseline, pgo):
         for name in ours:
             b.add(f"RTL simulation, hazard stream: {name} / {base}", cycles[name] / cycles[base],
                   "x", ">= 3.5", "the rows above")
+        # The same stimulus and cycles on both builds: their instructions' ratio is the ratio
+        # per simulated cycle, free of the machine's load.
+        this_count, base_count = instructions(b, builds[0][1]), instructions(b, builds[-1][1])
+        if this_count and base_count:
+            if this_count[1] != base_count[1]:
+                raise SystemExit(f"bench: error: the hazard stream takes {1 / this_count[1]:.4f} "
+                                 f"cycles a fragment on the {this}, {1 / base_count[1]:.4f} on "
+                                 f"{base}: instructions per cycle need the same cycles")
+            for (name, count) in ((this, this_count), (base, base_count)):
+                b.add(f"RTL simulation, hazard stream, {name}: instructions, one iteration "
+                      "(valgrind, whole process)", count[0] / 1e9, "G", "", count[2])
+            b.add(f"RTL simulation, hazard stream: instructions per simulated cycle, {this} / "
+                  f"{base}", this_count[0] / base_count[0], "x", "<= 1", "the rows above")
 
     out = ["--out", os.path.join(b.out, "cpu.png")]
     # The golden render takes a few tens of ms of CPU, start-up included: its ratio moves from

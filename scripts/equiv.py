@@ -11,6 +11,9 @@ proves the views equal there with Yosys: both views elaborated through the modul
 (formal/), `equiv_make` pairing their signals by name, `equiv_simple`, `equiv_induct`,
 `equiv_status -assert`: from equal states, equal forever.
   zb_mul8: the harness drives k3_i as zb_rop does; every register and output is paired.
+  zb_resolve: combinational; the simulation view computes the products only when en_i
+    resolves the beat. Both views' products are the same cells on the same inputs, merged
+    before the proof (MERGE), which is then of the choice around them.
   zb_plane: the views keep different state (banks, one array), so the harness builds the state
     they must agree on from each view's own registers (taps this script connects after
     flattening) and pairs that; the tile port is compared after tile reads, where zb_rop looks.
@@ -22,7 +25,7 @@ READ_ONLY and FORWARDED of the lint sets, at the narrowest WIDTH zb_rop gives it
 views' logic is the same in every bit of a word; the widest take minutes, in `make formal`).
 
 --defect plants a difference in the simulation view of each module (one bit of an internal
-signal tied to 0) and requires the proof to fail: the check can fail.
+signal tied to 0, or a constant edited) and requires the proof to fail: the check can fail.
 Writes OUT/summary.csv and each proof's Yosys log; exit 0 when every proof passed (with
 --defect: every planted difference was caught), 1 otherwise, 2 on usage errors.
 """
@@ -38,12 +41,19 @@ import time
 
 from zbscript import ROOT
 
-# module: (how, harness module in formal/<harness>.sv, the modules it reads besides, planted
-# difference in the simulation view)
+# module: (harness module in formal/<harness>.sv, the modules it reads besides, planted
+# difference in the simulation view: a signal tied to 0, or ("edit", text, replacement) for a
+# view whose signals are all ports or a function's)
 VIEWS = {
     "zb_mul8": ("zb_mul8_views", [], "u_mul.pair_d[0]"),
     "zb_plane": ("zb_plane_views", ["zb_tile_mem"], "u_plane.rd_fresh"),
+    "zb_resolve": ("zb_resolve_views", [], ("edit", "17'h80", "17'h7f")),  # the rounding
 }
+# Modules whose views compute the same products in different places (zb_resolve: every lane's
+# product in the synthesis view, only under en_i in the simulation view): opt_merge shares the
+# $mul cells both views build on the same inputs, so that equiv_simple proves the choice around
+# them instead of two multipliers equal bit by bit, which it does not finish.
+MERGE = {"zb_resolve"}
 # Signals of one name in both views that differ where zb_rop does not look, so not paired: the
 # tile port between tile reads (the harness pairs tile_beat_o), the fresh flags but at W2
 # (inv_fresh2).
@@ -106,7 +116,8 @@ def instances(lint_set, out):
     os.unlink(js)
     found = {}
     for mname, m in modules.items():
-        base = mname.rsplit("\\", 1)[-1]
+        # zb_mul8, $paramod$HASH\zb_mul8, $paramod\zb_resolve\BEAT=s32'...: the module's name
+        base = re.match(r"(?:\$paramod(?:\$[0-9a-f]+)?\\)?([^\\]+)", mname).group(1)
         if base in VIEWS:
             values = tuple(sorted((k, int(v, 2)) for k, v in
                                   m.get("parameter_default_values", {}).items()))
@@ -137,12 +148,16 @@ def equiv_script(module, values, defect, out):
                        [f"formal/{harness}.sv"])
     def view(tag, sim):
         reg_taps, mem_taps = plane_taps(values, sim) if module == "zb_plane" else ("", "")
-        read = sources.replace(f"rtl/{module}.sv", f"rtl/sim/{module}.sv") if sim else sources
+        view_file = f"rtl/sim/{module}.sv"
+        if sim and defect and isinstance(planted, tuple):
+            view_file = planted_view(module, planted[1:], out)
+        read = sources.replace(f"rtl/{module}.sv", view_file) if sim else sources
         return (f"read_verilog -sv -DSYNTHESIS {'-DZB_VIEW_SIM' if sim else ''} {read}\n"
                 f"chparam {chparam} {harness}\n"
                 f"hierarchy -check -top {harness}\nproc\nflatten\n{reg_taps}"
                 f"memory -nomap\nmemory_map\n{mem_taps}"
-                + (f"connect -set {planted} 1'b0\n" if sim and defect else "") +
+                + (f"connect -set {planted} 1'b0\n"
+                   if sim and defect and isinstance(planted, str) else "") +
                 f"opt_clean\ncheck -assert\nrename {harness} {tag}\ndesign -stash {tag}\n")
     unpaired = ""
     if module in UNPAIRED:
@@ -153,7 +168,21 @@ def equiv_script(module, values, defect, out):
     return (view("gold", False) + view("gate", True) +
             "design -copy-from gold -as gold gold\ndesign -copy-from gate -as gate gate\n"
             f"equiv_make {unpaired}gold gate equiv\nhierarchy -top equiv\nasync2sync\n"
+            + ("opt_merge\n" if module in MERGE else "") +
             "equiv_simple -seq 2\nequiv_induct -seq 1\nequiv_status -assert\n")
+
+
+def planted_view(module, edit, out):
+    """A copy of the simulation view with one text edited (its first occurrence), in out."""
+    with open(os.path.join(ROOT, "rtl", "sim", f"{module}.sv")) as f:
+        text = f.read()
+    if edit[0] not in text:
+        sys.exit(f"equiv: error: rtl/sim/{module}.sv no longer holds '{edit[0]}', the planted "
+                 "difference of VIEWS in scripts/equiv.py")
+    path = os.path.join(os.path.abspath(out), f"{module}_planted.sv")
+    with open(path, "w") as f:
+        f.write(text.replace(edit[0], edit[1], 1))
+    return path
 
 
 def plane_taps(values, sim):

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages zblend needs, only those missing. Quiet when all are present.
-# Usage: setup.sh [run|test|kit|synth|profile|view]
+# Usage: setup.sh [run|test|kit|synth|profile|bench|view]
 #   run:     what `make run` needs to build zblend and render: a compiler, CMake, Verilator and
 #            the libraries zblend links (GLM, stb, CLI11, nlohmann-json, fmt, OpenSSL's
 #            libcrypto for the conformance signatures' SHA-256, tinyobjloader, tinygltf).
@@ -16,6 +16,8 @@
 #            and zlib, and Python 3 with NumPy (the kit's Python module, conformance/python).
 #   synth:   test's, and nextpnr-ice40 and IceStorm (`make synth`).
 #   profile: test's, and perf (`make profile-rtl`).
+#   bench:   test's, and valgrind (`make bench`: the RTL's instructions per simulated cycle,
+#            counted, beside a baseline build).
 #   view:    test's, and Chromium and ImageMagick (HTML reports and waves, headless, screenshots).
 # A system sshd that the openssh-server package starts on install is stopped and disabled again:
 # nothing here needs it, and this machine should not gain an open ssh port from a setup script.
@@ -48,9 +50,10 @@ case $group in
   kit) packages+=(python3 python3-numpy) ;;
   synth) packages+=(nextpnr-ice40 fpga-icestorm) ;;
   profile) packages+=(linux-perf) ;;
+  bench) packages+=(valgrind) ;;
   view) packages+=(chromium imagemagick) ;;
   *)
-    echo "setup: error: unknown group '$group' (choose run, test, kit, synth, profile or view)" >&2
+    echo "setup: error: unknown group '$group' (choose run, test, kit, synth, profile, bench or view)" >&2
     exit 2
     ;;
 esac

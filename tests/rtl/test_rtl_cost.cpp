@@ -40,6 +40,12 @@ TEST(CostModel, EqualsTheRtlOnEveryBuiltinSceneAndMethod) {
         EXPECT_EQ(c.io_cycles(sched), rtl.tile_io_cycles()) << what << ": tile cycles";
         EXPECT_EQ(stream + rtl.tile_io_cycles(), rtl.total_cycles() - start)
             << what << ": every cycle is a stream's or the tile port's";
+        // Two buffers (the proposed design) hide port cycles, never streaming ones, and never
+        // add any: between the streams alone and the one-buffer run.
+        if (sched == TileSchedule::kTile) {
+          EXPECT_GE(c.resident.two_buffer_cycles, stream) << what << ": two buffers";
+          EXPECT_LE(c.resident.two_buffer_cycles, stream + c.resident.io_cycles) << what << ": two buffers";
+        }
       }
   }
 }

@@ -149,6 +149,22 @@ TEST(TwoBuffers, OneTileIsTheOneBufferRun) {
   EXPECT_THROW(schedule.run_two_buffers({{k, 0, 1, 0}}), std::invalid_argument);
 }
 
+// The tile schedule's group with two buffers, by hand: three runs, each 4 port cycles of load,
+// 10 of work, 3 of store. Load 0 [0,4), load 1 [4,8); work 0 [4,14), store 0 [14,17); load 2
+// [17,21) (its buffer is free once run 0 is stored); work 1 [14,24), store 1 [24,27); work 2
+// [24,34) (after run 1's), store 2 [34,37). One buffer: 3 * 17 = 51.
+TEST(TwoBuffers, TileScheduleGroupByHand) {
+  EXPECT_EQ(two_buffer_group({{4, 10, 3}, {4, 10, 3}, {4, 10, 3}}), 37u);
+  // A port-bound group: work 1 each, so each run waits for its load, and run 2's load for
+  // run 0's store. Load 0 [0,6), load 1 [6,12); work 0 [6,7), store 0 [12,17); load 2 [17,23);
+  // work 1 [12,13), store 1 [23,28); work 2 [23,24), store 2 [28,33).
+  EXPECT_EQ(two_buffer_group({{6, 1, 5}, {6, 1, 5}, {6, 1, 5}}), 33u);
+  // One run is the one-buffer run; none is nothing; no load or store is the work alone.
+  EXPECT_EQ(two_buffer_group({{4, 10, 3}}), 17u);
+  EXPECT_EQ(two_buffer_group({}), 0u);
+  EXPECT_EQ(two_buffer_group({{0, 5, 0}, {0, 7, 0}}), 12u);
+}
+
 Fragment at(int x, int y) {
   Fragment f;
   f.x = static_cast<uint16_t>(x);
