@@ -272,6 +272,10 @@ module zb_depth #(
       issue_i && x4_dwe && m_addr_i == x4_addr_i);
   CovForwardPath: cover property (@(posedge clk_i) disable iff (!rst_ni)
       issue_i && x4_vwe && m_addr_i == x4_addr_i);
+  // The copy's peel write takes the peel plane's port in the cycle after its read: a fast clear
+  // then would clear peel too (its enable is the copy's), and a load of peel is not taken.
+  CopyThenNoClear: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      copy_q |-> !(tile_clear_i || (tile_req_i && tile_we_i && tile_planes_i.peel)));
   // The coverage plane holds counts 0..N: a coverage-mode fragment never reads more.
   StoredCoverageInRange: assert property (@(posedge clk_i) disable iff (!rst_ni)
       (x_valid_i[2] && cov_mode_i) |-> (x2_cs_q <= CovW'(COV_SAMPLES)));

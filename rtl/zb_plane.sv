@@ -202,6 +202,11 @@ module zb_plane #(
   // current with the old clear value: the driver never clears twice in a row (one setup cycle).
   WriteBackBeforeClear: assert property (@(posedge clk_i) disable iff (!rst_ni)
       (tile_clear && wb2_current) |-> !all_fresh_q);
+  // The write-back of a read beat's fresh words lands two edges after the read (W2): a load of
+  // that beat in the cycle between (W1) would be overwritten by it. The driver never loads
+  // right after a read (a setup cycle comes between); the contract forbids it.
+  LoadAfterReadOfBeat: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (tile_load && wback_q) |-> tile_addr_i != wback_addr_q);
   // Written since a fast clear and not stored since: some words fresh, some current. A fast
   // clear then would make the fresh ones current (the driver stores every plane a pass writes).
   logic mixed_q;

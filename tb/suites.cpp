@@ -17,7 +17,7 @@ CosimOptions cosim_options(const Config& c, uint64_t seed) {
 
 // The failure's last lines: the iteration, and the one command that runs it again alone with
 // the whole run's waveform and its save file (docs/testbench.md "Waves").
-static void fail(const char* suite, const Config& c, uint64_t seed) {
+void report_failure(const char* suite, const Config& c, uint64_t seed) {
   std::printf("FAIL suite %s iteration seed %llu\n", suite, (unsigned long long)seed);
   const std::string fst = fmt::format("out/waves/{}-{}.fst", suite, seed);
   std::printf("reproduce with waves: %s --suite %s --seed %llu --iterations 1 --waves %s\n",
@@ -35,13 +35,13 @@ bool run_iteration(const char* suite, const Config& c, uint64_t seed, Tally& t,
     cosim.finish_frame(passes);
   } catch (const MismatchError& e) {
     std::printf("%s", e.what());
-    fail(suite, c, seed);
+    report_failure(suite, c, seed);
     t.failed = true;
     ok = false;
     if (cosim.mismatches() == 0) ++t.mismatches;  // a counter mismatch
   } catch (const std::runtime_error& e) {  // a check of the driver's: counts, port, timing
     std::printf("suite %s: error: %s\n", suite, e.what());
-    fail(suite, c, seed);
+    report_failure(suite, c, seed);
     t.failed = true;
     ok = false;
   }
@@ -89,6 +89,11 @@ const std::vector<Suite>& suites() {
        "alpha and additive over all 2^24 (s, a, d), 2^16 (a, d) on A; coverage over all "
        "(k, s, d)",
        suite_blend},
+      {"port",
+       "the tile port alone, stressed: random fast clears, loads, reads (copies, resolves under "
+       "any background) and counter clears in orders the driver never makes, against a model of "
+       "the planes",
+       suite_port},
       {"states",
        "every pass state: depth test off or each function x depth write x blend x colour mask "
        "x peel test, a short pass each",

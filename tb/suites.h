@@ -35,6 +35,7 @@ struct Tally {
   uint64_t iterations = 0, fragments = 0, pixels = 0, mismatches = 0;
   uint64_t stream_cycles = 0, io_cycles = 0;
   bool failed = false;
+  bool port_only = false;  // drives no fragment (port): its words compared are its pixels
   std::string note;
 };
 
@@ -61,6 +62,10 @@ class WorkCounter {
 bool run_iteration(const char* suite, const Config& c, uint64_t seed, Tally& t,
                    const std::function<void(Cosim&)>& body);
 
+// A failed iteration's last lines: the suite and seed, and the command that runs it again alone
+// with the whole run's waveform.
+void report_failure(const char* suite, const Config& c, uint64_t seed);
+
 // One labelled pass: begin, draw `f`, end (compares).
 void draw_pass(Cosim& cs, const std::string& name, const RopState& st,
                const std::vector<Fragment>& f);
@@ -75,6 +80,7 @@ Tally suite_clears(const Config& c);  // a store's write-back meeting the next c
 Tally suite_accum(const Config& c);   // accumulate mode at same-pixel distances 4..7
 Tally suite_blend(const Config& c);   // the blend unit, exhaustively, through the pipeline
 Tally suite_states(const Config& c);  // every pass state of the coverage plan's cross
+Tally suite_port(const Config& c);    // the tile port alone against a model of the planes
 
 struct Suite {
   const char* name;

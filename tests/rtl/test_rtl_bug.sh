@@ -52,3 +52,14 @@ rc=$?
 [[ $rc -ne 0 ]] || fail "window: the RTL with assertions passed"
 grep -q 'u_window.*HitExact.*failed' "$tmp/out.txt" || fail "window: no HitExact assertion failure"
 echo "ok: window stopped by $(grep -o 'u_window[^:]*HitExact' "$tmp/out.txt" | head -1)"
+
+# The port stress mode checks the tile operations against its model of the planes on its own,
+# with no golden model: the copy's and the resolve's defects each stop it at a read.
+for d in copy:peel resolve:colour; do
+  "$tb" --defect "${d%%:*}" --suite port --seed 1 -q --mismatch-fst "" >"$tmp/out.txt" 2>&1
+  rc=$?
+  [[ $rc -eq 1 ]] || fail "${d%%:*}: the port suite exit $rc, want 1"
+  grep -qE "^port stress: mismatch at op [0-9]+: read of beat [0-9]+.*: ${d#*:} lane [0-9]+: rtl 0x[0-9a-f]+, model 0x[0-9a-f]+$" "$tmp/out.txt" ||
+    fail "${d%%:*}: no 'port stress: mismatch ... ${d#*:} lane L: rtl ..., model ...' line"
+  echo "ok: ${d%%:*}: $(grep -m1 '^port stress' "$tmp/out.txt")"
+done
