@@ -251,7 +251,7 @@ class Stress {
     const uint64_t n = out_.ops - 1;
     // The beat's history: its loads and reads, and every fast clear (they touch all beats).
     auto& h = s.op == Op::kClear ? clears_ : beat_history_[size_t(s.beat)];
-    if (s.op != Op::kIdle) h.push_back({n, s});
+    if (s.op != Op::kIdle) h.push_back({n, sim_.cycle - 1, s});
     if (h.size() > 8) h.pop_front();
     // The counters after this edge: a clear's cycle counts nothing.
     cycles_ = s.count_clear ? 0 : cycles_ + 1;
@@ -303,13 +303,22 @@ class Stress {
     std::string text = fmt::format("{} (cycle {}): {}\n  the beat's last operations and the "
                                    "last fast clears before it:",
                                    step_text(n, r), sim_.cycle - 1, what);
-    std::vector<std::pair<uint64_t, Step>> before(clears_.begin(), clears_.end());
+    std::vector<Past> before(clears_.begin(), clears_.end());
     const auto& mine = beat_history_[size_t(r.beat)];
     before.insert(before.end(), mine.begin(), mine.end());
-    std::sort(before.begin(), before.end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (const auto& [k, s] : before)
-      if (k < n) text += "\n    " + step_text(k, s);
+    std::sort(before.begin(), before.end(), [](const Past& a, const Past& b) { return a.op < b.op; });
+    // The waveform's save file: a marker at the read that differs and at each of these.
+    sim_.view.title = "port stress: " + step_text(n, r) + " differs";
+    sim_.view.mismatch = sim_.cycle - 1;
+    sim_.view.from = sim_.cycle > 24 ? sim_.cycle - 24 : 0;  // zoomed to the last cycles
+    sim_.view.to = sim_.cycle + 2;
+    sim_.view.markers.push_back({sim_.cycle - 1, "read that differs"});
+    for (const Past& p : before) {
+      if (p.op >= n) continue;
+      text += "\n    " + step_text(p.op, p.step);
+      if (sim_.view.markers.size() < 26)
+        sim_.view.markers.push_back({p.cycle, step_text(p.op, p.step)});
+    }
     out_.mismatch = text;
   }
 
@@ -321,9 +330,12 @@ class Stress {
   Step last_;
   std::deque<Step> sweep_;  // the rest of a sweep under way
   uint64_t loads_ = 0, stores_ = 0, cycles_ = 0;
-  std::vector<std::deque<std::pair<uint64_t, Step>>> beat_history_ =
-      std::vector<std::deque<std::pair<uint64_t, Step>>>(kBeats);
-  std::deque<std::pair<uint64_t, Step>> clears_;
+  struct Past {
+    uint64_t op, cycle;
+    Step step;
+  };
+  std::vector<std::deque<Past>> beat_history_ = std::vector<std::deque<Past>>(kBeats);
+  std::deque<Past> clears_;
   PortStressResult out_;
 };
 

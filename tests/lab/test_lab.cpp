@@ -166,6 +166,29 @@ TEST(LabSummary, StreamShareByHand) {
   EXPECT_EQ(zb::lab::stream_share_text(rows, 1).find("All cycles"), std::string::npos);
 }
 
+// The tile schedule's lines by hand: two runs of 100 fragments, 110 and 130 cycles with two
+// buffers (1.2000 a fragment), 105 and 115 with copies renamed (1.1000), 20 host pixels (0.1
+// a fragment more).
+TEST(LabSummary, TwoBuffersByHand) {
+  std::vector<zb::lab::LabRow> rows(2);
+  const uint64_t two[2] = {110, 130}, renamed[2] = {105, 115};
+  for (size_t k = 0; k < 2; ++k) {
+    rows[k].scene = k ? "b" : "a";
+    rows[k].method = "m";
+    rows[k].has_cost = true;
+    rows[k].golden.fragments_in = 100;
+    rows[k].model_stream_cycles = 100;
+    rows[k].model_cycles_2buf_resident = two[k];
+    rows[k].model_cycles_2buf_renamed = renamed[k];
+    rows[k].host_op_pixels_tile = 10;
+  }
+  const std::string text = zb::lab::schedule_text(rows, false);
+  EXPECT_NE(text.find("schedule tile with two tile buffers (cost model of the proposed design): "
+                      "all cycles per fragment 1.2000, 1.3000 with the host's frame operations; "
+                      "with copies of depth to peel as a renaming of banks too 1.1000, 1.2000"),
+            std::string::npos) << text;
+}
+
 TEST(LabRun, TinyCaseCsv) {
   zb::lab::LabScene scene{"quads", "built-in", "three quads",
                           [] { return *zb::builtin_scene("quads"); }};
