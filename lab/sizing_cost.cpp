@@ -161,16 +161,6 @@ PassStats CostCounter::end_pass() {
   return s;
 }
 
-// The stream cycles of tile t in the group's step `step` (a pass that touches it).
-uint64_t CostCounter::stream_of(const Grid& g, size_t step, uint32_t t) const {
-  size_t pass = 0;
-  for (size_t k = 0; k < step; ++k) pass += group_steps_[k].pass;
-  const std::vector<uint32_t>& tiles = g.group[pass];
-  const auto it = std::lower_bound(tiles.begin(), tiles.end(), t);
-  if (it == tiles.end() || *it != t) throw std::logic_error("cost model: a step without its tile");
-  return g.group_stream[pass][size_t(it - tiles.begin())];
-}
-
 // As the RTL driver's tile schedule (rtlmodel/rtl_rop.cpp): per tile the group's passes that
 // touch it and the operations on the resident tile (TileStates::plan_tile, from the tile states
 // at the group's start): a copy or sweep before a pass, its setup cycle and loads, one store.
@@ -185,10 +175,18 @@ void CostCounter::end_group() {
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
     std::vector<ResidentRun> runs, renamed;
+    std::vector<uint64_t> stream(group_steps_.size());  // per step: tile t's stream cycles
     for (const uint32_t t : all) {
       size_t pass = 0;
-      for (TileStates::GroupStep& st : group_steps_)
-        if (st.pass) st.touches = std::binary_search(g.group[pass].begin(), g.group[pass].end(), t), ++pass;
+      for (size_t k = 0; k < group_steps_.size(); ++k) {
+        TileStates::GroupStep& st = group_steps_[k];
+        if (!st.pass) continue;
+        const std::vector<uint32_t>& tiles = g.group[pass];
+        const auto it = std::lower_bound(tiles.begin(), tiles.end(), t);
+        st.touches = it != tiles.end() && *it == t;
+        stream[k] = st.touches ? g.group_stream[pass][size_t(it - tiles.begin())] : 0;
+        ++pass;
+      }
       const TileStates::RunPlan run = g.group_start.plan_tile(t, group_steps_.data(), group_steps_.size());
       g.resident_states.stored(t, run.store);
       const int x0 = int(t % uint32_t(g.columns)) * g.size;
@@ -217,14 +215,13 @@ void CostCounter::end_group() {
         move(st.preload, two.load);
         r.io_cycles += reads(st.copy, st.sweep) + kRtlTileSetup;
         move(st.io.load, two.load);
-        two.work += kRtlTileSetup + stream_of(g, st.step, t);
+        two.work += kRtlTileSetup + stream[st.step];
       }
       move(run.preload_after, two.load);
       r.io_cycles += reads(run.copy_after, run.sweep_after && !run.store);
       move(run.store, two.store);
       runs.push_back(two);
-      renamed.push_back(two);
-      renamed.back().work -= copies;
+      renamed.push_back({two.load, two.work - copies, two.store});
     }
     r.two_buffer_cycles += two_buffer_group(runs);
     r.two_buffer_renamed_cycles += two_buffer_group(renamed);

@@ -128,7 +128,6 @@ class CostCounter final : public Backend {
     std::vector<std::vector<uint64_t>> group_stream;  // and each one's stream cycles
   };
   void end_group();  // the tile schedule's group ends: its traffic
-  uint64_t stream_of(const Grid& g, size_t step, uint32_t t) const;
   std::vector<RopState> pass_states_;  // the frame's, for finish_frame's counters
   std::vector<TileStates::GroupStep> group_steps_;  // the tile schedule's group
   size_t group_passes_ = 0;
