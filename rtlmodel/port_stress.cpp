@@ -19,6 +19,8 @@ constexpr int kBeats = kRtlTileW * kRtlTileH / kRtlBeat;
 constexpr const char* kPlaneNames[kTilePlanes] = {"colour", "depth", "coverage", "peel",
                                                   "accumulation"};
 
+constexpr int kPeelPlane = 3;  // kPlanePeel's number: read-only, one fresh flag
+
 enum class Op : uint8_t { kIdle, kClear, kLoad, kRead };
 
 // One cycle's operation on the port.
@@ -53,7 +55,7 @@ class PlaneModel {
     for (BeatWords& b : beats_) set(b, s.planes, s.data, true);
   }
   void load(const Step& s) { set(beats_[size_t(s.beat)], s.planes, s.data, false); }
-  void copy(int beat) { beats_[size_t(beat)][3] = beats_[size_t(beat)][1]; }
+  void copy(int beat) { beats_[size_t(beat)][kPeelPlane] = beats_[size_t(beat)][1]; }
   // What a read of `beat` shows, resolved under `bg` when asked.
   BeatWords read(int beat, bool resolve, uint32_t bg) const {
     BeatWords w = beats_[size_t(beat)];
@@ -94,12 +96,12 @@ class Rules {
   // Whether plane p may be fast-cleared in this cycle.
   bool may_clear(int p) const {
     const Plane& q = planes_[size_t(p)];
-    return p == 3 || q.all_fresh || q.n_current == kBeats;
+    return p == kPeelPlane || q.all_fresh || q.n_current == kBeats;
   }
   // The cycle's operation, after its edge.
   void step(const Step& s) {
     for (int p = 0; p < kTilePlanes; ++p) {
-      if (p == 3) continue;
+      if (p == kPeelPlane) continue;
       Plane& q = planes_[size_t(p)];
       const bool clear = s.op == Op::kClear && (s.planes >> p & 1);
       const bool load = s.op == Op::kLoad && (s.planes >> p & 1);
@@ -280,7 +282,7 @@ class Stress {
     for (size_t l = 0; l < size_t(kRtlBeat) && out_.mismatch.empty(); ++l) {
       for (size_t p = 0; p < kWordPlanes; ++p) {
         // The cycle after a copy the peel plane takes the copy's write, not this read.
-        if (p == 3 && last_.copy) continue;
+        if (p == kPeelPlane && last_.copy) continue;
         ++out_.words;
         if (got[p][l] != expect[p][l]) {
           fail(r, n, fmt::format("{} lane {}: rtl 0x{:x}, model 0x{:x}", kPlaneNames[p], l,
