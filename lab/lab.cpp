@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include "geometry/frame_geometry.h"
 #include "pipeline/passes.h"
@@ -135,6 +136,7 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
       const TileCost& at_rtl = counters[lab_beat_index(kRtlBeat)]->cost().at(kRtlTileW);
       row.model_tile_cycles_resident = at_rtl.resident.io_cycles;
       row.model_cycles_2buf_resident = at_rtl.resident.two_buffer_cycles;
+      row.model_cycles_renamed = at_rtl.resident.renamed_cycles;
       row.model_cycles_2buf_renamed = at_rtl.resident.two_buffer_renamed_cycles;
       row.port_bytes_pass = at_rtl.port_bytes(TileSchedule::kPass, vp.depth_bits, vp.coverage_samples, vp.wboit);
       row.port_bytes_tile = at_rtl.port_bytes(TileSchedule::kTile, vp.depth_bits, vp.coverage_samples, vp.wboit);
@@ -203,7 +205,10 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
   csv += ",edge_pixels,hidden_drawn,visible_missing,hidden_drawn_share,visible_missing_share";
   csv += ",tile_cycles_tile_schedule,rtl_tile_cycles_tile_schedule,rtl_mismatch_pixels_tile_schedule,"
          "port_bytes_pass,port_bytes_tile,frame_op_pixels,host_op_pixels_tile_schedule,"
-         "frame_pixels,cycles_2buf_tile_schedule,cycles_2buf_renamed_tile_schedule\n";
+         "frame_pixels,cycles_2buf_tile_schedule";
+  for (const int g : kRenameGenBits) csv += fmt::format(",cycles_renamed_g{}_tile_schedule", g);
+  for (const int g : kRenameGenBits) csv += fmt::format(",cycles_2buf_renamed_g{}_tile_schedule", g);
+  csv += "\n";
   for (const LabRow& r : rows) {
     const PassStats& s = r.golden;
     const std::string cost =
@@ -229,14 +234,15 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
                               r.lines->hidden_drawn, r.lines->visible_missing,
                               r.lines->hidden_drawn_share(), r.lines->visible_missing_share())
                 : ",,,,";
-    const std::string sched =
-        r.has_cost ? fmt::format("{},{},{},{},{},{},{},{},{},{}", r.model_tile_cycles_resident,
+    std::string sched =
+        r.has_cost ? fmt::format("{},{},{},{},{},{},{},{},{}", r.model_tile_cycles_resident,
                                  r.rtl_resident_tile_cycles ? std::to_string(*r.rtl_resident_tile_cycles) : "",
                                  r.rtl_resident_tile_cycles ? std::to_string(r.rtl_resident_mismatch_pixels) : "",
                                  r.port_bytes_pass, r.port_bytes_tile, r.frame_op_pixels,
-                                 r.host_op_pixels_tile, r.pixels, r.model_cycles_2buf_resident,
-                                 r.model_cycles_2buf_renamed)
-                   : ",,,,,,,,,";
+                                 r.host_op_pixels_tile, r.pixels, r.model_cycles_2buf_resident)
+                   : ",,,,,,,,";
+    for (const auto* v : {&r.model_cycles_renamed, &r.model_cycles_2buf_renamed})
+      for (const uint64_t c : *v) sched += r.has_cost ? fmt::format(",{}", c) : ",";
     csv += fmt::format("{},{},{},{},{:.3f},{},{},{},{},{:.4f},{:.4f},{},{},{}\n", r.scene, r.family,
                        r.method, cost, r.host_ms, rtl, error_cells(r.error),
                        error_cells(r.error_ss), to_string(r.fair), r.fair_error().delta_e_mean,
@@ -313,7 +319,8 @@ std::string stream_share_text(const std::vector<LabRow>& rows, int beat) {
 std::string schedule_text(const std::vector<LabRow>& rows, bool per_method) {
   struct Sum {
     uint64_t fragments = 0, stream = 0, io[2] = {0, 0}, bytes[2] = {0, 0}, host[2] = {0, 0}, pixels = 0,
-             mismatch[2] = {0, 0}, runs = 0, two_buffers = 0, renamed = 0;
+             mismatch[2] = {0, 0}, runs = 0, two_buffers = 0;
+    std::array<uint64_t, kRenameGenBits.size()> renamed{}, renamed2{};
     void add(const LabRow& r) {
       fragments += r.golden.fragments_in;
       stream += r.model_stream_cycles;
@@ -327,7 +334,10 @@ std::string schedule_text(const std::vector<LabRow>& rows, bool per_method) {
       mismatch[0] += r.rtl_mismatch_pixels;
       mismatch[1] += r.rtl_resident_mismatch_pixels;
       two_buffers += r.model_cycles_2buf_resident;
-      renamed += r.model_cycles_2buf_renamed;
+      for (size_t v = 0; v < renamed.size(); ++v) {
+        renamed[v] += r.model_cycles_renamed[v];
+        renamed2[v] += r.model_cycles_2buf_renamed[v];
+      }
       ++runs;
     }
     double per(uint64_t c) const { return fragments ? double(c) / double(fragments) : 0.0; }
@@ -358,10 +368,20 @@ std::string schedule_text(const std::vector<LabRow>& rows, bool per_method) {
     out += "\n";
   }
   out += fmt::format("schedule tile with two tile buffers (cost model of the proposed design): "
-                     "all cycles per fragment {:.4f}, {:.4f} with the host's frame operations; "
-                     "with copies of depth to peel as a renaming of banks too {:.4f}, {:.4f}\n",
-                     all.per(all.two_buffers), all.per(all.two_buffers + all.host[1]),
-                     all.per(all.renamed), all.per(all.renamed + all.host[1]));
+                     "all cycles per fragment {:.4f}, {:.4f} with the host's frame operations\n",
+                     all.per(all.two_buffers), all.per(all.two_buffers + all.host[1]));
+  // Per generation width: "a / b / c".
+  auto widths = [&](const std::array<uint64_t, kRenameGenBits.size()>& c, uint64_t more) {
+    std::string s;
+    for (size_t v = 0; v < c.size(); ++v) s += fmt::format("{}{:.4f}", v ? " / " : "", all.per(c[v] + more));
+    return s;
+  };
+  out += fmt::format("schedule tile with copies of depth to peel as a renaming of banks (cost model "
+                     "of the proposed design), a word's generation of {} bits: all cycles per "
+                     "fragment with one tile buffer {}, with two {}; with the host's frame "
+                     "operations {} and {}\n",
+                     fmt::join(kRenameGenBits, " / "), widths(all.renamed, 0), widths(all.renamed2, 0),
+                     widths(all.renamed, all.host[1]), widths(all.renamed2, all.host[1]));
   if (!per_method) return out;
   for (const auto& [name, m] : methods)
     out += fmt::format("  {:<16} pass: {:.4f} cycles/fragment, {:5.1f} B/pixel, host frame "

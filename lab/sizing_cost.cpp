@@ -174,10 +174,26 @@ void CostCounter::end_group() {
     for (const auto& p : g.group) all.insert(all.end(), p.begin(), p.end());
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
-    std::vector<ResidentRun> runs, renamed;
+    std::vector<ResidentRun> runs;
+    std::array<std::vector<ResidentRun>, kRenameGenBits.size()> renamed;
     std::vector<uint64_t> stream(group_steps_.size());  // per step: tile t's stream cycles
+    // A run's cycles: its loads (all ahead with two buffers), its work in the buffer (a copy's
+    // or sweep's reads, each pass's setup and stream), its store.
+    auto cycles = [&](const TileStates::RunPlan& run) {
+      ResidentRun c;
+      auto reads = [&](bool copy, bool sweep) { return copy ? beats + kRtlCopyTail : sweep ? beats : 0; };
+      for (const TileStates::RunPlan::Step& st : run.steps) {
+        c.load += (st.preload ? beats : 0) + (st.io.load ? beats : 0);
+        c.work += reads(st.copy, st.sweep) + kRtlTileSetup + stream[st.step];
+      }
+      c.load += run.preload_after ? beats : 0;
+      c.work += reads(run.copy_after, run.sweep_after && !run.store);
+      c.store += run.store ? beats : 0;
+      return c;
+    };
     for (const uint32_t t : all) {
       size_t pass = 0;
+      uint64_t streams = 0;
       for (size_t k = 0; k < group_steps_.size(); ++k) {
         TileStates::GroupStep& st = group_steps_[k];
         if (!st.pass) continue;
@@ -185,6 +201,7 @@ void CostCounter::end_group() {
         const auto it = std::lower_bound(tiles.begin(), tiles.end(), t);
         st.touches = it != tiles.end() && *it == t;
         stream[k] = st.touches ? g.group_stream[pass][size_t(it - tiles.begin())] : 0;
+        streams += stream[k];
         ++pass;
       }
       const TileStates::RunPlan run = g.group_start.plan_tile(t, group_steps_.data(), group_steps_.size());
@@ -194,37 +211,32 @@ void CostCounter::end_group() {
       const uint64_t pixels = uint64_t(std::min(g.size, width_ - x0)) *
                               uint64_t(std::min(g.size, height_ - y0));
       ++r.tile_runs;
-      ResidentRun two;  // with two buffers: the loads ahead, the rest in the buffer's work
-      uint64_t copies = 0;
-      auto reads = [&](bool copy, bool sweep) {
-        const uint64_t c = copy ? beats + kRtlCopyTail : sweep ? beats : 0;
-        two.work += c;
-        copies += copy ? c : 0;
-        return c;
-      };
       // A load or the store of these planes through the port: a beat a cycle, every plane's
       // pixels moved.
-      auto move = [&](uint8_t planes, uint64_t& port) {
+      auto move = [&](uint8_t planes) {
         if (!planes) return;
-        r.io_cycles += beats;
         r.beats += beats;
-        port += beats;
         for (int p = 0; p < kTilePlanes; ++p) r.plane_pixels[size_t(p)] += pixels * (planes >> p & 1);
       };
       for (const TileStates::RunPlan::Step& st : run.steps) {
-        move(st.preload, two.load);
-        r.io_cycles += reads(st.copy, st.sweep) + kRtlTileSetup;
-        move(st.io.load, two.load);
-        two.work += kRtlTileSetup + stream[st.step];
+        move(st.preload);
+        move(st.io.load);
       }
-      move(run.preload_after, two.load);
-      r.io_cycles += reads(run.copy_after, run.sweep_after && !run.store);
-      move(run.store, two.store);
-      runs.push_back(two);
-      renamed.push_back({two.load, two.work - copies, two.store});
+      move(run.preload_after);
+      move(run.store);
+      const ResidentRun c = cycles(run);
+      r.io_cycles += c.load + c.work + c.store - streams;
+      runs.push_back(c);
+      for (size_t v = 0; v < kRenameGenBits.size(); ++v) {
+        const ResidentRun cv = cycles(g.group_start.plan_tile(
+            t, group_steps_.data(), group_steps_.size(), {true, kRenameGenBits[v]}));
+        r.renamed_cycles[v] += cv.load + cv.work + cv.store;
+        renamed[v].push_back(cv);
+      }
     }
     r.two_buffer_cycles += two_buffer_group(runs);
-    r.two_buffer_renamed_cycles += two_buffer_group(renamed);
+    for (size_t v = 0; v < kRenameGenBits.size(); ++v)
+      r.two_buffer_renamed_cycles[v] += two_buffer_group(renamed[v]);
     g.group.clear();
     g.group_stream.clear();
   }

@@ -29,10 +29,13 @@ struct ResidentTraffic {
   // The same runs with two tile buffers (two_buffer_group, rtl_timing.h): every cycle of the
   // groups, streaming included, with the port's loads and stores beside the other buffer's work.
   uint64_t two_buffer_cycles = 0;
-  // And with each copy of depth to peel free (the planes' banks renamed: the built-in plans
-  // clear depth right after every copy), the rest as two_buffer_cycles.
-  uint64_t two_buffer_renamed_cycles = 0;
+  // With copies of depth to peel as a renaming of banks and a word's generation of
+  // kRenameGenBits[g] bits (TileStates::Banks, docs/rtl.md "Renamed copies"): every cycle of the
+  // groups with one tile buffer, and with two.
+  std::array<uint64_t, 3> renamed_cycles{};
+  std::array<uint64_t, 3> two_buffer_renamed_cycles{};
 };
+constexpr std::array<int, 3> kRenameGenBits = {1, 2, 3};
 
 // A method's cost with square tiles of one size. The fields without a schedule in their name
 // are the pass schedule's (every pass loads and stores each tile it touches); the streaming

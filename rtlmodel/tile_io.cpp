@@ -175,17 +175,37 @@ TileIo TileStates::plan(const std::array<Plane, kTilePlanes>& t, const RopState&
   return io;
 }
 
-// Per plane: resident (in the tile memory, loaded or fast-cleared this run), made (written or
-// copied in the tile since its last clear: stored at the end), mixed (fast-cleared this run and
-// written since, with no tile read between: zb_plane's FastClearWhole forbids clearing it
-// again before a read of every beat, a sweep; a copy is one too).
-TileStates::RunPlan TileStates::plan_tile(size_t tile, const GroupStep* steps, size_t n) const {
+// Per plane: resident (in the tile memory, loaded or fast-cleared this run) and made (written
+// or copied in the tile since its last clear: stored at the end). Per bank, as zb_plane's fast
+// clear: the epoch's steps since every word was last at the epoch (a load writes them, a read
+// of every beat writes the fresh ones back) and all_fresh (fast-cleared, nothing written since:
+// a fast clear then keeps the epoch). A fast clear that would take a written bank past
+// 2^gen_bits - 1 steps needs a read of every beat first: a sweep (a copy is one too).
+TileStates::RunPlan TileStates::plan_tile(size_t tile, const GroupStep* steps, size_t n,
+                                          TileBanks banks) const {
+  struct Bank {
+    int steps = 0;
+    bool all_fresh = false;  // a store's reads ended the tile before: all at the epoch
+  };
   RunPlan out;
   std::array<Plane, kTilePlanes> t = planes_.at(tile);
-  uint8_t resident = 0, made = 0, mixed = 0;
-  uint8_t fresh = 0;                 // fast-cleared this run, no load or tile read since
-  bool copy = false, sweep = false;  // pending before the next pass
+  std::array<Bank, kTilePlanes> bank{};
+  std::array<size_t, kTilePlanes> role = {0, 1, 2, 3, 4};  // plane p's bank
+  const int max_steps = (1 << std::clamp(banks.gen_bits, 1, 16)) - 1;
+  uint8_t resident = 0, made = 0;
+  bool copy = false, sweep = false, swap = false;  // pending before the next pass
   uint8_t preload = 0;
+  auto needs_sweep = [&](int p) {
+    const Bank& b = bank[role[size_t(p)]];
+    return !b.all_fresh && b.steps + 1 > max_steps;
+  };
+  auto each = [](uint8_t planes, auto&& f) {
+    for (int p = 0; p < kTilePlanes; ++p)
+      if (planes >> p & 1) f(p);
+  };
+  auto read_all = [&] {
+    for (Bank& b : bank) b = Bank{};
+  };
   for (size_t k = 0; k < n; ++k) {
     const GroupStep& st = steps[k];
     if (!st.pass) {
@@ -194,26 +214,37 @@ TileStates::RunPlan TileStates::plan_tile(size_t tile, const GroupStep* steps, s
         if (!(resident & kPlaneDepth) && !t[1].cleared) {  // the frame's depth, for the copy
           preload |= kPlaneDepth;
           resident |= kPlaneDepth;
-          fresh &= uint8_t(~kPlaneDepth);
+          bank[role[1]] = Bank{};
         }
-        if (resident & kPlaneDepth) {  // the tile's depth into peel
+        const bool cleared_next = k + 1 < n && !steps[k + 1].pass &&
+                                  steps[k + 1].op.kind == FrameOpKind::kClearDepth;
+        if ((resident & kPlaneDepth) && banks.rename && cleared_next) {  // peel takes depth's bank
+          std::swap(role[1], role[3]);
+          swap = !swap;
+          resident |= kPlanePeel;
+          made |= kPlanePeel;
+        } else if (resident & kPlaneDepth) {  // the tile's depth into peel
           copy = true;
           sweep = false;
-          mixed = fresh = 0;
+          read_all();
           resident |= kPlanePeel;
           made |= kPlanePeel;
         } else {  // depth is cleared: so is peel, to its value (apply below)
+          if (needs_sweep(3)) {
+            if (!copy) sweep = true;
+            read_all();
+          }
           resident &= uint8_t(~kPlanePeel);
           made &= uint8_t(~kPlanePeel);
         }
       } else {  // a clear: the host's frame holds the value; the next pass needing it clears it
-        const uint8_t p = op.kind == FrameOpKind::kClearColor ? kPlaneColor : kPlaneDepth;
-        if (mixed & p) {
+        const int p = op.kind == FrameOpKind::kClearColor ? 0 : 1;
+        if (needs_sweep(p)) {
           if (!copy) sweep = true;
-          mixed = fresh = 0;
+          read_all();
         }
-        resident &= uint8_t(~p);
-        made &= uint8_t(~p);
+        resident &= uint8_t(~(1u << p));
+        made &= uint8_t(~(1u << p));
       }
       apply(t, op);
       continue;
@@ -228,12 +259,17 @@ TileStates::RunPlan TileStates::plan_tile(size_t tile, const GroupStep* steps, s
     s.preload = preload;
     s.copy = copy;
     s.sweep = sweep;
-    copy = sweep = false;
+    s.swap = swap;
+    copy = sweep = swap = false;
     preload = 0;
     const uint8_t written = planes_written(st.state);
-    // A plane fast-cleared this run and written since is mixed until a read of every beat.
-    fresh = uint8_t((fresh | s.io.clear) & ~s.io.load);
-    mixed |= written & fresh;
+    each(s.io.clear, [&](int p) {
+      Bank& b = bank[role[size_t(p)]];
+      if (!b.all_fresh) ++b.steps;
+      b.all_fresh = true;
+    });
+    each(s.io.load, [&](int p) { bank[role[size_t(p)]] = Bank{}; });
+    each(written, [&](int p) { bank[role[size_t(p)]].all_fresh = false; });
     resident |= planes_read(st.state) | written;
     made |= written;
     out.steps.push_back(s);

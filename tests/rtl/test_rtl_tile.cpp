@@ -250,5 +250,62 @@ TEST(TileStates, PlanesFollowThePassState) {
   EXPECT_EQ(tile_io_cycles(512, io), 1025u);
 }
 
+// A depth peel's steps on one tile, planned by hand: a pass writing depth, then `layers` - 1
+// times a copy of depth to peel, a clear of depth and a pass behind the peel plane writing depth.
+std::vector<TileStates::GroupStep> peel_steps(int layers, bool clear_after_copy = true) {
+  std::vector<TileStates::GroupStep> steps;
+  RopState depth_only;
+  depth_only.color_mask = 0;
+  auto op = [&](FrameOpKind k) {
+    TileStates::GroupStep st;
+    st.op = FrameOp{k, Rgba8{}, FrameOp::kFar, false};
+    steps.push_back(st);
+  };
+  auto pass = [&](bool peel) {
+    TileStates::GroupStep st;
+    st.pass = st.touches = true;
+    st.state = depth_only;
+    st.state.peel_test = peel;
+    steps.push_back(st);
+  };
+  op(FrameOpKind::kClearDepth);
+  pass(false);
+  for (int i = 1; i < layers; ++i) {
+    op(FrameOpKind::kCopyDepthToPeel);
+    if (clear_after_copy) op(FrameOpKind::kClearDepth);
+    pass(true);
+  }
+  return steps;
+}
+
+// Per pass after the first: 'c' a copy, 's' a sweep, 'r' a renaming (banks swapped), 'R' both.
+std::string before_passes(const TileStates::RunPlan& run) {
+  std::string out;
+  for (size_t k = 1; k < run.steps.size(); ++k) {
+    const auto& st = run.steps[k];
+    out += st.copy ? 'c' : st.swap ? (st.sweep ? 'R' : 'r') : st.sweep ? 's' : '-';
+  }
+  return out;
+}
+
+// zb_rop's banks copy before every peel. Renamed with one generation bit, the bank that comes
+// back to depth was written since its last fast clear: a sweep before every other peel (the
+// sweep writes back both banks' fresh words, so the next one needs none). With two bits it
+// takes three fast clears between reads of every beat: a bank's fourth, before the 7th pass,
+// needs the first sweep. A copy that no clear of depth follows stays a copy.
+TEST(TileStates, RenamedCopiesSweepAsTheGenerationsRunOut) {
+  const TileStates frame(64, 64, 64, kRtlDepthBits, Rgba8{0, 0, 0, 255});
+  const auto steps = peel_steps(8);
+  EXPECT_EQ(before_passes(frame.plan_tile(0, steps.data(), steps.size())), "ccccccc");
+  EXPECT_EQ(before_passes(frame.plan_tile(0, steps.data(), steps.size(), {true, 1})), "rRrRrRr");
+  EXPECT_EQ(before_passes(frame.plan_tile(0, steps.data(), steps.size(), {true, 2})), "rrrrrRr");
+  EXPECT_EQ(before_passes(frame.plan_tile(0, steps.data(), steps.size(), {true, 3})), "rrrrrrr");
+  const TileStates::RunPlan run = frame.plan_tile(0, steps.data(), steps.size(), {true, 3});
+  EXPECT_EQ(run.store, kPlaneDepth | kPlanePeel);
+  EXPECT_FALSE(run.copy_after || run.sweep_after);
+  const auto kept = peel_steps(3, false);
+  EXPECT_EQ(before_passes(frame.plan_tile(0, kept.data(), kept.size(), {true, 3})), "cc");
+}
+
 }  // namespace
 }  // namespace zb
