@@ -136,8 +136,8 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
       const TileCost& at_rtl = counters[lab_beat_index(kRtlBeat)]->cost().at(kRtlTileW);
       row.model_tile_cycles_resident = at_rtl.resident.io_cycles;
       row.model_cycles_2buf_resident = at_rtl.resident.two_buffer_cycles;
-      row.model_cycles_renamed = at_rtl.resident.renamed_cycles;
-      row.model_cycles_2buf_renamed = at_rtl.resident.two_buffer_renamed_cycles;
+      row.model_cycles_variant = at_rtl.resident.variant_cycles;
+      row.model_cycles_2buf_variant = at_rtl.resident.two_buffer_variant_cycles;
       row.port_bytes_pass = at_rtl.port_bytes(TileSchedule::kPass, vp.depth_bits, vp.coverage_samples, vp.wboit);
       row.port_bytes_tile = at_rtl.port_bytes(TileSchedule::kTile, vp.depth_bits, vp.coverage_samples, vp.wboit);
       row.frame_op_pixels = mc.frame_op_pixels;
@@ -206,8 +206,8 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
   csv += ",tile_cycles_tile_schedule,rtl_tile_cycles_tile_schedule,rtl_mismatch_pixels_tile_schedule,"
          "port_bytes_pass,port_bytes_tile,frame_op_pixels,host_op_pixels_tile_schedule,"
          "frame_pixels,cycles_2buf_tile_schedule";
-  for (const int g : kRenameGenBits) csv += fmt::format(",cycles_renamed_g{}_tile_schedule", g);
-  for (const int g : kRenameGenBits) csv += fmt::format(",cycles_2buf_renamed_g{}_tile_schedule", g);
+  for (const BankVariant& v : kBankVariants) csv += fmt::format(",cycles_{}_tile_schedule", v.name);
+  for (const BankVariant& v : kBankVariants) csv += fmt::format(",cycles_2buf_{}_tile_schedule", v.name);
   csv += "\n";
   for (const LabRow& r : rows) {
     const PassStats& s = r.golden;
@@ -241,7 +241,7 @@ std::string lab_csv(const std::vector<LabRow>& rows) {
                                  r.port_bytes_pass, r.port_bytes_tile, r.frame_op_pixels,
                                  r.host_op_pixels_tile, r.pixels, r.model_cycles_2buf_resident)
                    : ",,,,,,,,";
-    for (const auto* v : {&r.model_cycles_renamed, &r.model_cycles_2buf_renamed})
+    for (const auto* v : {&r.model_cycles_variant, &r.model_cycles_2buf_variant})
       for (const uint64_t c : *v) sched += r.has_cost ? fmt::format(",{}", c) : ",";
     csv += fmt::format("{},{},{},{},{:.3f},{},{},{},{},{:.4f},{:.4f},{},{},{}\n", r.scene, r.family,
                        r.method, cost, r.host_ms, rtl, error_cells(r.error),
@@ -320,7 +320,7 @@ std::string schedule_text(const std::vector<LabRow>& rows, bool per_method) {
   struct Sum {
     uint64_t fragments = 0, stream = 0, io[2] = {0, 0}, bytes[2] = {0, 0}, host[2] = {0, 0}, pixels = 0,
              mismatch[2] = {0, 0}, runs = 0, two_buffers = 0;
-    std::array<uint64_t, kRenameGenBits.size()> renamed{}, renamed2{};
+    std::array<uint64_t, kBankVariants.size()> variant{}, variant2{};
     void add(const LabRow& r) {
       fragments += r.golden.fragments_in;
       stream += r.model_stream_cycles;
@@ -334,9 +334,9 @@ std::string schedule_text(const std::vector<LabRow>& rows, bool per_method) {
       mismatch[0] += r.rtl_mismatch_pixels;
       mismatch[1] += r.rtl_resident_mismatch_pixels;
       two_buffers += r.model_cycles_2buf_resident;
-      for (size_t v = 0; v < renamed.size(); ++v) {
-        renamed[v] += r.model_cycles_renamed[v];
-        renamed2[v] += r.model_cycles_2buf_renamed[v];
+      for (size_t v = 0; v < variant.size(); ++v) {
+        variant[v] += r.model_cycles_variant[v];
+        variant2[v] += r.model_cycles_2buf_variant[v];
       }
       ++runs;
     }
@@ -370,18 +370,18 @@ std::string schedule_text(const std::vector<LabRow>& rows, bool per_method) {
   out += fmt::format("schedule tile with two tile buffers (cost model of the proposed design): "
                      "all cycles per fragment {:.4f}, {:.4f} with the host's frame operations\n",
                      all.per(all.two_buffers), all.per(all.two_buffers + all.host[1]));
-  // Per generation width: "a / b / c".
-  auto widths = [&](const std::array<uint64_t, kRenameGenBits.size()>& c, uint64_t more) {
+  // Per bank variant: "a / b / c / d".
+  auto variants = [&](const std::array<uint64_t, kBankVariants.size()>& c, uint64_t more) {
     std::string s;
     for (size_t v = 0; v < c.size(); ++v) s += fmt::format("{}{:.4f}", v ? " / " : "", all.per(c[v] + more));
     return s;
   };
-  out += fmt::format("schedule tile with copies of depth to peel as a renaming of banks (cost model "
-                     "of the proposed design), a word's generation of {} bits: all cycles per "
-                     "fragment with one tile buffer {}, with two {}; with the host's frame "
+  out += fmt::format("schedule tile with copies of depth to peel by reads / renamed with the "
+                     "depth banks' generations of 1 / 2 (zb_rop) / 3 bits (cost model): all cycles "
+                     "per fragment with one tile buffer {}, with two {}; with the host's frame "
                      "operations {} and {}\n",
-                     fmt::join(kRenameGenBits, " / "), widths(all.renamed, 0), widths(all.renamed2, 0),
-                     widths(all.renamed, all.host[1]), widths(all.renamed2, all.host[1]));
+                     variants(all.variant, 0), variants(all.variant2, 0),
+                     variants(all.variant, all.host[1]), variants(all.variant2, all.host[1]));
   if (!per_method) return out;
   for (const auto& [name, m] : methods)
     out += fmt::format("  {:<16} pass: {:.4f} cycles/fragment, {:5.1f} B/pixel, host frame "

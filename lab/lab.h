@@ -84,9 +84,9 @@ struct LabRow {
   // Its every cycle, streaming included, with two tile buffers (cost model of the proposed
   // design, ResidentTraffic::two_buffer_cycles).
   uint64_t model_cycles_2buf_resident = 0;
-  // With copies as a renaming of banks, per generation width kRenameGenBits: one buffer, two
-  // (ResidentTraffic::renamed_cycles, two_buffer_renamed_cycles).
-  std::array<uint64_t, 3> model_cycles_renamed{}, model_cycles_2buf_renamed{};
+  // Per kBankVariants: every cycle with one buffer, with two (ResidentTraffic::variant_cycles,
+  // two_buffer_variant_cycles).
+  std::array<uint64_t, 4> model_cycles_variant{}, model_cycles_2buf_variant{};
   std::optional<uint64_t> rtl_resident_tile_cycles;
   uint64_t rtl_resident_mismatch_pixels = 0;
   // Tile-port bytes per frame (loads and stores, each plane its width), per schedule, and the

@@ -175,7 +175,7 @@ void CostCounter::end_group() {
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
     std::vector<ResidentRun> runs;
-    std::array<std::vector<ResidentRun>, kRenameGenBits.size()> renamed;
+    std::array<std::vector<ResidentRun>, kBankVariants.size()> variants;
     std::vector<uint64_t> stream(group_steps_.size());  // per step: tile t's stream cycles
     // A run's cycles: its loads (all ahead with two buffers), its work in the buffer (a copy's
     // or sweep's reads, each pass's setup and stream), its store.
@@ -188,6 +188,7 @@ void CostCounter::end_group() {
       }
       c.load += run.preload_after ? beats : 0;
       c.work += reads(run.copy_after, run.sweep_after && !run.store);
+      c.work += run.swap_after ? kRtlTileSetup : 0;
       c.store += run.store ? beats : 0;
       return c;
     };
@@ -227,16 +228,16 @@ void CostCounter::end_group() {
       const ResidentRun c = cycles(run);
       r.io_cycles += c.load + c.work + c.store - streams;
       runs.push_back(c);
-      for (size_t v = 0; v < kRenameGenBits.size(); ++v) {
+      for (size_t v = 0; v < kBankVariants.size(); ++v) {
         const ResidentRun cv = cycles(g.group_start.plan_tile(
-            t, group_steps_.data(), group_steps_.size(), {true, kRenameGenBits[v]}));
-        r.renamed_cycles[v] += cv.load + cv.work + cv.store;
-        renamed[v].push_back(cv);
+            t, group_steps_.data(), group_steps_.size(), kBankVariants[v].banks));
+        r.variant_cycles[v] += cv.load + cv.work + cv.store;
+        variants[v].push_back(cv);
       }
     }
     r.two_buffer_cycles += two_buffer_group(runs);
-    for (size_t v = 0; v < kRenameGenBits.size(); ++v)
-      r.two_buffer_renamed_cycles[v] += two_buffer_group(renamed[v]);
+    for (size_t v = 0; v < kBankVariants.size(); ++v)
+      r.two_buffer_variant_cycles[v] += two_buffer_group(variants[v]);
     g.group.clear();
     g.group_stream.clear();
   }

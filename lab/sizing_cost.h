@@ -29,13 +29,20 @@ struct ResidentTraffic {
   // The same runs with two tile buffers (two_buffer_group, rtl_timing.h): every cycle of the
   // groups, streaming included, with the port's loads and stores beside the other buffer's work.
   uint64_t two_buffer_cycles = 0;
-  // With copies of depth to peel as a renaming of banks and a word's generation of
-  // kRenameGenBits[g] bits (TileStates::Banks, docs/rtl.md "Renamed copies"): every cycle of the
-  // groups with one tile buffer, and with two.
-  std::array<uint64_t, 3> renamed_cycles{};
-  std::array<uint64_t, 3> two_buffer_renamed_cycles{};
+  // Every cycle of the groups, streaming included, with the tile memory's banks of
+  // kBankVariants[v] (docs/rtl.md "Renamed copies"): with one tile buffer, and with two.
+  std::array<uint64_t, 4> variant_cycles{};
+  std::array<uint64_t, 4> two_buffer_variant_cycles{};
 };
-constexpr std::array<int, 3> kRenameGenBits = {1, 2, 3};
+
+// The tile memory's banks the lab compares: copies by reads (zb_rop before renaming), and copies
+// renamed with depth banks' generations of 1, 2 (zb_rop's, kRtlBanks) and 3 bits.
+struct BankVariant {
+  const char* name;  // in lab.csv's columns
+  TileBanks banks;
+};
+constexpr std::array<BankVariant, 4> kBankVariants = {{
+    {"copied", {false, 1}}, {"renamed_g1", {true, 1}}, {"renamed_g2", {true, 2}}, {"renamed_g3", {true, 3}}}};
 
 // A method's cost with square tiles of one size. The fields without a schedule in their name
 // are the pass schedule's (every pass loads and stores each tile it touches); the streaming

@@ -15,6 +15,7 @@ module zb_rop
   parameter int unsigned ACC_BITS    = 16,
   parameter int unsigned REV_BITS    = 8,
   parameter int unsigned WEIGHT_BITS = 4,
+  parameter int unsigned DEPTH_GEN   = 2,
   parameter int unsigned MUT_W       = 11   // mutsel's width: mutants 1 .. 2^MUT_W - 1
 ) (
   input  logic                  clk_i,

@@ -8,7 +8,9 @@ module zb_depth #(
   parameter int DEPTH_BITS  = 24,
   parameter int WORDS       = 4096,
   parameter int BEAT        = 8,
-  parameter int COV_SAMPLES = 16
+  parameter int COV_SAMPLES = 16,
+  parameter bit RENAME      = 1'b0,  // renamed copies (docs/rtl.md "Renamed copies")
+  parameter int DEPTH_GEN   = 2      // with RENAME: the depth banks' generation bits
 ) (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -22,7 +24,8 @@ module zb_depth #(
   input  logic                                tile_req_i,
   input  logic                                tile_we_i,
   input  logic                                tile_clear_i,
-  input  logic                                tile_copy_i,  // with a tile read: depth to peel
+  input  logic                                tile_copy_i,  // with a read: depth to peel;
+                                                                // with a clear of depth: renamed
   input  zb_pkg::planes_t                     tile_planes_i,
   input  logic [$clog2(WORDS / BEAT)-1:0]     tile_addr_i,
   input  logic [BEAT*DEPTH_BITS-1:0]          tile_wdepth_i,
@@ -62,29 +65,6 @@ module zb_depth #(
   logic                  x4_dwe, x4_vwe;
   logic [DEPTH_BITS-1:0] x4_z_q;
   logic [CovW-1:0]       x4_cov_new_q;
-
-  zb_plane #(
-    .WIDTH    (DEPTH_BITS),
-    .WORDS    (WORDS),
-    .BEAT     (BEAT),
-    .FORWARDED(1'b1)
-  ) u_depth_plane (
-    .clk_i       (clk_i),
-    .rst_ni      (rst_ni),
-    .tile_req_i  (tile_req_i),
-    .tile_we_i   (tile_we_i),
-    .tile_en_i   (tile_planes_i.depth),
-    .tile_clear_i(tile_clear_i),
-    .tile_addr_i (tile_addr_i),
-    .tile_wdata_i(tile_wdepth_i),
-    .tile_rdata_o(tile_rdepth_o),
-    .pipe_re_i   (issue_i),
-    .pipe_raddr_i(m_addr_i),
-    .pipe_we_i   (x4_dwe),
-    .pipe_waddr_i(x4_addr_i),
-    .pipe_wdata_i(x4_z_q),
-    .rdata_o     (dmem_rdata)
-  );
 
   zb_plane #(
     .WIDTH    (CovW),
@@ -135,28 +115,106 @@ module zb_depth #(
   assign copy_data = tile_rdepth_o;
 `endif
 
-  zb_plane #(
-    .WIDTH    (DEPTH_BITS),
-    .WORDS    (WORDS),
-    .BEAT     (BEAT),
-    .READ_ONLY(1'b1)
-  ) u_peel_plane (
-    .clk_i       (clk_i),
-    .rst_ni      (rst_ni),
-    .tile_req_i  (tile_req_i | copy_q),
-    .tile_we_i   (tile_we_i | copy_q),
-    .tile_en_i   (tile_planes_i.peel | copy_q),
-    .tile_clear_i(tile_clear_i),
-    .tile_addr_i (copy_q ? copy_addr_q : tile_addr_i),
-    .tile_wdata_i(copy_q ? copy_data : tile_wpeel_i),
-    .tile_rdata_o(tile_rpeel_o),
-    .pipe_re_i   (issue_i),
-    .pipe_raddr_i(m_addr_i),
-    .pipe_we_i   (1'b0),
-    .pipe_waddr_i(m_addr_i),
-    .pipe_wdata_i(m_z_i),
-    .rdata_o     (pmem_rdata)
-  );
+  if (!RENAME) begin : g_fixed
+    zb_plane #(
+      .WIDTH    (DEPTH_BITS),
+      .WORDS    (WORDS),
+      .BEAT     (BEAT),
+      .FORWARDED(1'b1)
+    ) u_depth_plane (
+      .clk_i       (clk_i),
+      .rst_ni      (rst_ni),
+      .tile_req_i  (tile_req_i),
+      .tile_we_i   (tile_we_i),
+      .tile_en_i   (tile_planes_i.depth),
+      .tile_clear_i(tile_clear_i),
+      .tile_addr_i (tile_addr_i),
+      .tile_wdata_i(tile_wdepth_i),
+      .tile_rdata_o(tile_rdepth_o),
+      .pipe_re_i   (issue_i),
+      .pipe_raddr_i(m_addr_i),
+      .pipe_we_i   (x4_dwe),
+      .pipe_waddr_i(x4_addr_i),
+      .pipe_wdata_i(x4_z_q),
+      .rdata_o     (dmem_rdata)
+    );
+
+    zb_plane #(
+      .WIDTH    (DEPTH_BITS),
+      .WORDS    (WORDS),
+      .BEAT     (BEAT),
+      .READ_ONLY(1'b1)
+    ) u_peel_plane (
+      .clk_i       (clk_i),
+      .rst_ni      (rst_ni),
+      .tile_req_i  (tile_req_i | copy_q),
+      .tile_we_i   (tile_we_i | copy_q),
+      .tile_en_i   (tile_planes_i.peel | copy_q),
+      .tile_clear_i(tile_clear_i),
+      .tile_addr_i (copy_q ? copy_addr_q : tile_addr_i),
+      .tile_wdata_i(copy_q ? copy_data : tile_wpeel_i),
+      .tile_rdata_o(tile_rpeel_o),
+      .pipe_re_i   (issue_i),
+      .pipe_raddr_i(m_addr_i),
+      .pipe_we_i   (1'b0),
+      .pipe_waddr_i(m_addr_i),
+      .pipe_wdata_i(m_z_i),
+      .rdata_o     (pmem_rdata)
+    );
+  end else begin : g_renamed
+    // Two banks of depth words; role_q names the depth plane's, the other is the peel plane.
+    // tile_copy_i with a fast clear of depth trades them (a copy of depth to peel and a clear
+    // of depth, with no beat moved): the new depth bank takes the clear, in the same cycle.
+    // The read data follow the role of their read's cycle (rd_role_q). A copy by reads still
+    // works: the peel bank then takes no part in the reads (its load follows each one).
+    logic role_q, role_d, rd_role_q;
+    logic [1:0] bank_depth;  // by the role after this edge (the tile port's) and before (pipeline)
+    assign role_d = role_q ^ (tile_clear_i & tile_copy_i & tile_planes_i.depth);
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        role_q    <= 1'b0;
+        rd_role_q <= 1'b0;
+      end else begin
+        role_q    <= role_d;
+        rd_role_q <= role_q;
+      end
+    end
+    assign bank_depth = {role_d, ~role_d};
+    logic [2*BEAT*DEPTH_BITS-1:0] bank_tile_rdata;  // bank b's at [b*BEAT*DEPTH_BITS +: ...]
+    logic [2*DEPTH_BITS-1:0]      bank_rdata;
+    for (genvar b = 0; b < 2; b++) begin : g_bank
+      logic peel_copy;  // this bank is peel and the copy writes it this cycle
+      assign peel_copy = copy_q & ~bank_depth[b];
+      zb_plane #(
+        .WIDTH    (DEPTH_BITS),
+        .WORDS    (WORDS),
+        .BEAT     (BEAT),
+        .FORWARDED(1'b1),
+        .GEN_BITS (DEPTH_GEN)
+      ) u_plane (
+        .clk_i       (clk_i),
+        .rst_ni      (rst_ni),
+        .tile_req_i  ((tile_req_i & (bank_depth[b] | ~tile_copy_i)) | peel_copy),
+        .tile_we_i   (tile_we_i | peel_copy),
+        .tile_en_i   (bank_depth[b] ? tile_planes_i.depth : (tile_planes_i.peel | copy_q)),
+        .tile_clear_i(tile_clear_i),
+        .tile_addr_i (peel_copy ? copy_addr_q : tile_addr_i),
+        .tile_wdata_i(bank_depth[b] ? tile_wdepth_i : (copy_q ? copy_data : tile_wpeel_i)),
+        .tile_rdata_o(bank_tile_rdata[b*BEAT*DEPTH_BITS +: BEAT*DEPTH_BITS]),
+        .pipe_re_i   (issue_i),
+        .pipe_raddr_i(m_addr_i),
+        .pipe_we_i   (x4_dwe & (role_q == 1'(b))),
+        .pipe_waddr_i(x4_addr_i),
+        .pipe_wdata_i(x4_z_q),
+        .rdata_o     (bank_rdata[b*DEPTH_BITS +: DEPTH_BITS])
+      );
+    end
+    localparam int BeatW = BEAT * DEPTH_BITS;
+    assign tile_rdepth_o = rd_role_q ? bank_tile_rdata[BeatW +: BeatW] : bank_tile_rdata[0 +: BeatW];
+    assign tile_rpeel_o  = rd_role_q ? bank_tile_rdata[0 +: BeatW] : bank_tile_rdata[BeatW +: BeatW];
+    assign dmem_rdata    = rd_role_q ? bank_rdata[DEPTH_BITS +: DEPTH_BITS] : bank_rdata[0 +: DEPTH_BITS];
+    assign pmem_rdata    = rd_role_q ? bank_rdata[0 +: DEPTH_BITS] : bank_rdata[DEPTH_BITS +: DEPTH_BITS];
+  end
 
   // ---------------------------------------------------------------------------------------
   // Forwarding: a fragment issued at an older one's E4 with its address reads the word that

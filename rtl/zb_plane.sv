@@ -9,6 +9,9 @@
 // reaches no write enable in the cycle it appears). A write-back carries the epoch of its read:
 // a fast clear in between makes it a fresh word, as the clear wants. A load at W2's edge takes
 // the port (it writes the whole plane).
+// GEN_BITS wide generations and epoch (renamed copies, docs/rtl.md "Renamed copies"): a fast
+// clear steps the epoch, so a written plane takes 2^GEN_BITS - 1 of them between reads of every
+// beat before a word of an old epoch could read current again.
 // A READ_ONLY plane's words are all loaded or all fresh: a flag for the plane replaces the
 // generation bits. The driver fast-clears a plane whole, loads it whole and stores every plane
 // a pass writes;
@@ -21,7 +24,8 @@ module zb_plane #(
   parameter int WORDS     = 1024,
   parameter int BEAT      = 8,     // pixels per tile-port beat: a power of two
   parameter bit FORWARDED = 1'b0,  // the user replaces a read that meets a write
-  parameter bit READ_ONLY = 1'b0   // no pipeline writes (peel): one fresh flag a plane
+  parameter bit READ_ONLY = 1'b0,  // no pipeline writes (peel): one fresh flag a plane
+  parameter int GEN_BITS  = 1      // a word's generation (not READ_ONLY)
 ) (
   input  logic                     clk_i,
   input  logic                     rst_ni,
@@ -70,18 +74,24 @@ module zb_plane #(
   // clear keeps the epoch (flipping it would make fresh words current). wback_q (W1): the beat
   // read last edge is in the read register; wb2_q (W2): its fresh words are written back this
   // edge. all_fresh falls at W1 already, so a clear between W1 and W2 flips the epoch.
-  logic             epoch_d, epoch_q, all_fresh_d, all_fresh_q, wback_q, wb2_q, wb2_epoch_q;
+  logic [GEN_BITS-1:0] epoch_d, epoch_q, wb2_epoch_q, epoch_step;
+  logic             all_fresh_d, all_fresh_q, wback_q, wb2_q;
   logic             wb2_current;  // W2 writes at the plane's epoch (no clear since its read)
   logic [WIDTH-1:0] clear_q;
   logic [BeatAW-1:0] wback_addr_q, wb2_addr_q;
   logic [BankW-1:0] rbank_q;
   assign wb2_current = wb2_q & (wb2_epoch_q == epoch_q);
+  if (GEN_BITS == 1) begin : g_epoch_flip
+    assign epoch_step = ~epoch_q;
+  end else begin : g_epoch_count
+    assign epoch_step = epoch_q + GEN_BITS'(1);
+  end
 
   always_comb begin
     epoch_d     = epoch_q;
     all_fresh_d = all_fresh_q;
     if (tile_clear) begin
-      epoch_d     = all_fresh_q ? epoch_q : ~epoch_q;
+      epoch_d     = all_fresh_q ? epoch_q : epoch_step;
       all_fresh_d = 1'b1;
     end else if (tile_load || pipe_we_i || wback_q || wb2_current) begin
       all_fresh_d = 1'b0;
@@ -90,7 +100,7 @@ module zb_plane #(
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      epoch_q     <= 1'b0;
+      epoch_q     <= '0;
       all_fresh_q <= 1'b0;
       wback_q     <= 1'b0;
       wb2_q       <= 1'b0;
@@ -116,7 +126,7 @@ module zb_plane #(
 
   // The banks: words of {generation, value}. The write-back rewrites only the fresh words (as
   // the clear value); the others are at the epoch already.
-  localparam int GenW = READ_ONLY ? 0 : 1;
+  localparam int GenW = READ_ONLY ? 0 : GEN_BITS;
   logic [BEAT*WIDTH-1:0] lane;       // each bank's last read word, resolved
   logic [WIDTH-1:0]      wdata_one;  // a bank's write data but for a load
   logic                  plane_fresh_q;
@@ -132,7 +142,7 @@ module zb_plane #(
       assign wdata = tile_wdata_i[b*WIDTH +: WIDTH];
     end else begin : g_rw
       logic fresh2_q;  // W2: this bank's word was fresh at W1
-      assign fresh = rdata[WIDTH] != epoch_q;
+      assign fresh = rdata[WIDTH +: GEN_BITS] != epoch_q;
       assign we    = tile_load | (wb2_q & fresh2_q) | (pipe_we_i & wbank == BankW'(b));
       assign waddr = tile_load ? tile_addr_i : (wb2_q ? wb2_addr_q : wbeat);
       assign wdata = {tile_load | ~wb2_q ? epoch_q : wb2_epoch_q,
@@ -207,20 +217,23 @@ module zb_plane #(
   // right after a read (a setup cycle comes between); the contract forbids it.
   LoadAfterReadOfBeat: assert property (@(posedge clk_i) disable iff (!rst_ni)
       (tile_load && wback_q) |-> tile_addr_i != wback_addr_q);
-  // Written since a fast clear and not stored since: some words fresh, some current. A fast
-  // clear then would make the fresh ones current (the driver stores every plane a pass writes).
-  logic mixed_q;
+  // Written since a fast clear and not stored since: some words fresh, some current. Each fast
+  // clear that steps the epoch then brings the oldest fresh words' generation nearer: after
+  // 2^GEN_BITS - 1 steps since a read of every beat (the driver stores every plane a pass
+  // writes, or sweeps) another would make them current.
+  localparam int Steps = READ_ONLY ? 1 : (1 << GEN_BITS) - 1;
+  logic [GEN_BITS:0] steps_q;  // the epoch's steps since the last tile read or load
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      mixed_q <= 1'b0;
+      steps_q <= '0;
     end else if (tile_load || tile_read) begin
-      mixed_q <= 1'b0;
-    end else if (pipe_we_i && all_fresh_q) begin
-      mixed_q <= 1'b1;
+      steps_q <= '0;
+    end else if (tile_clear && !all_fresh_q && steps_q <= (GEN_BITS+1)'(Steps)) begin
+      steps_q <= steps_q + 1'b1;
     end
   end
   FastClearWhole: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      tile_clear |-> !mixed_q);
+      (tile_clear && !all_fresh_q) |-> steps_q < (GEN_BITS+1)'(Steps));
   logic swept_q;  // a tile read of the last beat since reset (the driver sweeps in order)
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin

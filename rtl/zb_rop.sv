@@ -33,6 +33,7 @@ module zb_rop
   parameter int REV_BITS   = 8,    // revealage, 8..16
   parameter int WEIGHT_BITS = 4,   // depth weight's range, 0..16
   parameter bit TILE_OPS   = 1'b1, // the tile operations copy and resolve (docs/rtl.md)
+  parameter int DEPTH_GEN  = 2,    // TILE_OPS: generation bits of the renamed depth banks
   localparam int AddrW     = $clog2(TILE_W * TILE_H),
   localparam int BeatAW    = $clog2(TILE_W * TILE_H / BEAT),
   localparam int CovW      = $clog2(COV_SAMPLES + 1),  // coverage count 0..N
@@ -58,6 +59,8 @@ module zb_rop
   // planes of tile_planes_i to lane 0 of the write data: no beat moves. With a read,
   // tile_copy_i also loads the depth beat read into the peel plane at the next edge, and
   // tile_resolve_i shows the colour beat resolved under lane 0 of tile_wcolor_i (TILE_OPS).
+  // With a fast clear of depth (not of peel), tile_copy_i makes the depth plane the peel plane
+  // and clears the other bank as depth: a copy and a clear, renamed (TILE_OPS).
   input  logic                       tile_req_i,
   input  logic                       tile_we_i,
   input  logic                       tile_clear_i,
@@ -287,7 +290,9 @@ module zb_rop
     .DEPTH_BITS (DEPTH_BITS),
     .WORDS      (Words),
     .BEAT       (BEAT),
-    .COV_SAMPLES(COV_SAMPLES)
+    .COV_SAMPLES(COV_SAMPLES),
+    .RENAME     (TILE_OPS),
+    .DEPTH_GEN  (DEPTH_GEN)
   ) u_depth (
     .clk_i        (clk_i),
     .rst_ni       (rst_ni),
@@ -597,9 +602,14 @@ module zb_rop
       m_valid_q |-> !depth_older);
   ColorReadAfterWrite: assert property (@(posedge clk_i) disable iff (!rst_ni)
       x_valid_q[5] |-> !color_older);
-  // The tile operations ride on a tile read (docs/rtl.md "Tile operations").
+  // The tile operations ride on a tile read (docs/rtl.md "Tile operations"), or a renamed
+  // copy on a fast clear of depth alone among the depth banks.
   TileOpOnRead: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (tile_copy_i || tile_resolve_i) |-> (tile_req_i && !tile_we_i));
+      (tile_resolve_i || (tile_copy_i && !tile_clear_i)) |-> (tile_req_i && !tile_we_i));
+  RenameOnClear: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (tile_copy_i && tile_clear_i) |->
+      (!tile_req_i && !tile_resolve_i && tile_planes_i.depth && !tile_planes_i.peel));
+  RenamedCopy: cover property (@(posedge clk_i) disable iff (!rst_ni) tile_copy_i && tile_clear_i);
   TileOpsPresent: assert property (@(posedge clk_i) disable iff (!rst_ni)
       !TILE_OPS |-> !(tile_copy_i || tile_resolve_i));
   // Only the six blend codes are loaded.

@@ -19,7 +19,7 @@ constexpr int kBeats = kRtlTileW * kRtlTileH / kRtlBeat;
 constexpr const char* kPlaneNames[kTilePlanes] = {"colour", "depth", "coverage", "peel",
                                                   "accumulation"};
 
-constexpr int kPeelPlane = 3;  // kPlanePeel's number: read-only, one fresh flag
+constexpr int kDepthPlane = 1, kPeelPlane = 3;  // kPlaneDepth's and kPlanePeel's numbers
 
 enum class Op : uint8_t { kIdle, kClear, kLoad, kRead };
 
@@ -28,7 +28,8 @@ struct Step {
   Op op = Op::kIdle;
   int beat = 0;
   uint8_t planes = 0;             // a clear's or a load's
-  bool copy = false, resolve = false, count_clear = false;
+  bool copy = false;              // a read's copy to peel; a clear's renamed copy (a swap)
+  bool resolve = false, count_clear = false;
   BeatWords data;                 // a load's beat; a clear's values in lane 0; a resolve's bg
 };
 
@@ -37,7 +38,8 @@ std::string step_text(uint64_t n, const Step& s) {
   for (int p = 0; p < kTilePlanes; ++p)
     if (s.planes >> p & 1) planes += std::string(planes.empty() ? "" : "+") + kPlaneNames[p];
   switch (s.op) {
-    case Op::kClear: return fmt::format("op {}: fast clear of {}", n, planes);
+    case Op::kClear:
+      return fmt::format("op {}: {}fast clear of {}", n, s.copy ? "renamed copy and " : "", planes);
     case Op::kLoad: return fmt::format("op {}: load of beat {} into {}", n, s.beat, planes);
     case Op::kRead:
       return fmt::format("op {}: read of beat {}{}{}", n, s.beat, s.copy ? " with copy" : "",
@@ -55,7 +57,10 @@ class PlaneModel {
     for (BeatWords& b : beats_) set(b, s.planes, s.data, true);
   }
   void load(const Step& s) { set(beats_[size_t(s.beat)], s.planes, s.data, false); }
-  void copy(int beat) { beats_[size_t(beat)][kPeelPlane] = beats_[size_t(beat)][1]; }
+  void copy(int beat) { beats_[size_t(beat)][kPeelPlane] = beats_[size_t(beat)][kDepthPlane]; }
+  void copy_all() {
+    for (int b = 0; b < kBeats; ++b) copy(b);
+  }
   // What a read of `beat` shows, resolved under `bg` when asked.
   BeatWords read(int beat, bool resolve, uint32_t bg) const {
     BeatWords w = beats_[size_t(beat)];
@@ -80,68 +85,79 @@ class PlaneModel {
   std::vector<BeatWords> beats_;
 };
 
-// What the contract allows next (docs/rtl.md "Port timing"): a fast clear flips a written
-// plane's one-bit epoch, so every word must then be at the epoch (loaded, or read back since its
-// last clear) or none written since the last clear; else words two clears old would read as
-// current. Kept per plane that the pipeline can write (the peel plane keeps one fresh flag and
-// is loaded or copied whole). A read writes back every such plane's beat two edges later (W2),
-// at the epoch of its read, so a read is a write: a clear that flips the epoch in between leaves
-// it fresh, one that does not (the plane all fresh) leaves it current; a load of the plane in
-// that cycle takes the write port instead.
+// What the contract allows next (docs/rtl.md "Port timing"): a fast clear steps a written
+// bank's epoch, so no word may then carry the generation it steps to, or it would read as
+// current with an old value: with one bit every word at the epoch (loaded, or read back since the
+// last clear) or none written since the last clear; the depth banks' kRtlDepthGenBits bits take
+// more clears (docs/rtl.md "Renamed copies"). Kept per bank: the depth and peel planes are two
+// banks whose roles a renamed copy trades. A read writes back every bank's beat two edges later
+// (W2) at the epoch of its read (the peel bank does not take part in a read that copies), so a
+// read is a write: a clear that steps the epoch in between leaves it fresh, one that does not
+// (the bank all fresh) leaves it current; a load of the bank in that cycle takes the write port
+// instead. Words of a beat share their generation here: no pipeline writes.
 class Rules {
  public:
   Rules() {
-    for (Plane& p : planes_) p.current.assign(kBeats, true);  // reset's sweep
+    for (size_t b = 0; b < banks_.size(); ++b) {
+      banks_[b].gen.assign(kBeats, 0);  // reset's sweep: every word at epoch 0
+      banks_[b].generations = b == kDepthPlane || b == kPeelPlane ? 1 << kRtlDepthGenBits : 2;
+    }
   }
-  // Whether plane p may be fast-cleared in this cycle.
-  bool may_clear(int p) const {
-    const Plane& q = planes_[size_t(p)];
-    return p == kPeelPlane || q.all_fresh || q.n_current == kBeats;
+  // Whether plane p may be fast-cleared in this cycle (its bank after a renamed copy in it).
+  bool may_clear(int p, bool swap = false) const {
+    const Bank& q = banks_[bank(p, swap)];
+    const int next = (q.epoch + 1) % q.generations;
+    return q.all_fresh || std::none_of(q.gen.begin(), q.gen.end(), [&](int g) { return g == next; });
   }
-  // The cycle's operation, after its edge.
-  void step(const Step& s) {
+  // Whether that clear steps an epoch with words of other generations left: one bit refuses it.
+  bool deep(int p, bool swap = false) const {
+    const Bank& q = banks_[bank(p, swap)];
+    return !q.all_fresh && std::any_of(q.gen.begin(), q.gen.end(), [&](int g) { return g != q.epoch; });
+  }
+  // The cycle's operation, after its edge; `copied` the beat last cycle's read copied (or -1).
+  void step(const Step& s, int copied) {
+    const bool swap = s.op == Op::kClear && s.copy;
+    if (swap) std::swap(role_[kDepthPlane], role_[kPeelPlane]);
+    const size_t peel = role_[kPeelPlane];
     for (int p = 0; p < kTilePlanes; ++p) {
-      if (p == kPeelPlane) continue;
-      Plane& q = planes_[size_t(p)];
+      const size_t b = role_[size_t(p)];
+      Bank& q = banks_[b];
       const bool clear = s.op == Op::kClear && (s.planes >> p & 1);
-      const bool load = s.op == Op::kLoad && (s.planes >> p & 1);
-      const bool flip = clear && !q.all_fresh;
-      // The write-back of the read two cycles ago lands now at the epoch of its read: current
-      // unless the epoch flipped since (this edge included), and not when a load of the plane
-      // takes the write port.
-      const bool wb2 = q.wb[1] >= 0 && !q.flipped[1] && !flip && !load;
-      if (wb2) set(q, q.wb[1]);
-      if (flip) {
-        q.current.assign(kBeats, false);
-        q.n_current = 0;
-      }
+      const bool copy_in = b == peel && copied >= 0;
+      const bool load = (s.op == Op::kLoad && (s.planes >> p & 1)) || copy_in;
+      const int load_beat = copy_in ? copied : s.beat;
+      const bool step_epoch = clear && !q.all_fresh;
+      const bool wb2 = q.wb[1] >= 0 && !load;
+      if (wb2) q.gen[size_t(q.wb[1])] = q.wb_epoch[1];
+      const bool wb2_current = wb2 && q.wb_epoch[1] == q.epoch;
+      if (step_epoch) q.epoch = (q.epoch + 1) % q.generations;
       if (clear)
         q.all_fresh = true;
-      else if (q.wb[0] >= 0 || load || wb2)
+      else if (q.wb[0] >= 0 || load || wb2_current)
         q.all_fresh = false;  // W1 of a read, a load, or W2 at the epoch
-      if (load) set(q, s.beat);
+      if (load) q.gen[size_t(load_beat)] = q.epoch;
       q.wb[1] = q.wb[0];
-      q.flipped[1] = q.flipped[0] || flip;
-      q.wb[0] = s.op == Op::kRead ? s.beat : -1;
-      q.flipped[0] = false;
+      q.wb_epoch[1] = q.wb_epoch[0];
+      q.wb[0] = s.op == Op::kRead && !(s.copy && b == peel) && !copy_in ? s.beat : -1;
+      q.wb_epoch[0] = q.epoch;
     }
   }
 
  private:
-  struct Plane {
+  struct Bank {
+    int generations = 2, epoch = 0;
     bool all_fresh = false;
-    std::vector<bool> current;
-    int n_current = kBeats;
-    std::array<int, 2> wb{-1, -1};               // beats read one and two cycles ago
-    std::array<bool, 2> flipped{false, false};    // the epoch flipped since that read
+    std::vector<int> gen;                 // per beat: its words' generation
+    std::array<int, 2> wb{-1, -1};        // beats read one and two cycles ago
+    std::array<int, 2> wb_epoch{0, 0};    // the epoch their write-back carries
   };
-  static void set(Plane& q, int beat) {
-    if (!q.current[size_t(beat)]) {
-      q.current[size_t(beat)] = true;
-      ++q.n_current;
-    }
+  size_t bank(int p, bool swap) const {
+    if (swap && p == kDepthPlane) return role_[kPeelPlane];
+    if (swap && p == kPeelPlane) return role_[kDepthPlane];
+    return role_[size_t(p)];
   }
-  std::array<Plane, kTilePlanes> planes_;
+  std::array<Bank, kTilePlanes> banks_;
+  std::array<size_t, kTilePlanes> role_ = {0, 1, 2, 3, 4};  // plane p's bank
 };
 
 class Stress {
@@ -184,10 +200,8 @@ class Stress {
     return s;
   }
 
-  // The peel plane keeps one fresh flag, not one a word (docs/rtl.md "Tile port"): after its
-  // fast clear it is loaded or copied whole, every beat in order, as the driver does. A sweep
-  // does that, after an idle cycle: every beat loaded (peel and other planes), or read with a
-  // copy (and resolves under changing backgrounds).
+  // A sweep, after an idle cycle, as the driver makes them: every beat loaded (peel and other
+  // planes), or read with a copy (and resolves under changing backgrounds).
   void plan_sweep() {
     sweep_.push_back(Step{});
     const bool load = chance(0.5);
@@ -207,10 +221,10 @@ class Stress {
   }
 
   // A random operation the contract allows after the last one: a fast clear of a plane only as
-  // Rules allows it, never two in a row (WriteBackBeforeClear); no load of the beat read in the
-  // cycle before
-  // (LoadAfterReadOfBeat); no load of peel but in a sweep; no fast clear in the cycle after a
-  // read that copies (its peel write then takes the clear too).
+  // Rules allows it, never two in a row (WriteBackBeforeClear); a renamed copy (a clear of depth
+  // with tile_copy_i) the same, clearing no peel; no load of the beat read in the cycle before
+  // (LoadAfterReadOfBeat); no fast clear and no load of peel in the cycle after a read that
+  // copies (its peel write then takes the port).
   Step random_step() {
     Step s;
     const int kind = pick(10);
@@ -218,17 +232,21 @@ class Stress {
     // Beats near the last one: a read, load or clear next to an operation on the same beat.
     s.beat = chance(0.5) ? (last_.beat + pick(3) + kBeats - 1) % kBeats : pick(kBeats);
     s.planes = uint8_t(1 + pick(31));
-    if (s.op == Op::kLoad) s.planes &= uint8_t(~kPlanePeel);
     s.data = random_beat();
     s.resolve = s.op == Op::kRead && chance(0.3);
+    s.copy = s.op == Op::kRead ? chance(0.1) : s.op == Op::kClear && chance(0.3);
+    if (s.op == Op::kClear && s.copy) s.planes = uint8_t((s.planes | kPlaneDepth) & ~kPlanePeel);
     s.count_clear = chance(0.05);
     if (s.op == Op::kClear && (last_.op == Op::kClear || last_.copy)) s.op = Op::kIdle;
+    if (s.op == Op::kClear && s.copy && !rules_.may_clear(kDepthPlane, true)) s.copy = false;
     if (s.op == Op::kClear)
       for (int p = 0; p < kTilePlanes; ++p)
-        if (!rules_.may_clear(p)) s.planes &= uint8_t(~(1u << p));
+        if (!rules_.may_clear(p, s.copy)) s.planes &= uint8_t(~(1u << p));
     if (s.op == Op::kLoad && last_.op == Op::kRead && s.beat == last_.beat)
       s.beat = (s.beat + 1) % kBeats;
+    if (s.op == Op::kLoad && last_.op == Op::kRead && last_.copy) s.planes &= uint8_t(~kPlanePeel);
     if ((s.op == Op::kClear || s.op == Op::kLoad) && s.planes == 0) s.op = Op::kIdle;
+    if (s.op == Op::kIdle) s.copy = false;
     return s;
   }
 
@@ -262,9 +280,16 @@ class Stress {
     if (!s.count_clear && s.op == Op::kRead) ++stores_;
     // At this edge: the copy of last cycle's read lands in peel, this cycle's read shows its
     // beat (the words as they were before the edge), this cycle's clear or load writes.
-    if (last_.copy) model_.copy(last_.beat);
+    if (s.op == Op::kClear) {
+      out_.renames += s.copy;
+      for (int p : {kDepthPlane, kPeelPlane})
+        out_.deep_clears += (s.planes >> p & 1) && rules_.deep(p, s.copy);
+    }
+    const bool copied = last_.op == Op::kRead && last_.copy;
+    if (copied) model_.copy(last_.beat);
     if (s.op == Op::kRead) check_read(s, n, model_.read(s.beat, s.resolve, s.data[0][0]));
-    rules_.step(s);
+    rules_.step(s, copied ? last_.beat : -1);
+    if (s.op == Op::kClear && s.copy) model_.copy_all();
     if (s.op == Op::kClear) model_.clear(s);
     if (s.op == Op::kLoad) model_.load(s);
     // The tile counters are a beat address and a bit wide, saturating (zb_rop's TileCntW).
@@ -281,8 +306,9 @@ class Stress {
     ++out_.reads;
     for (size_t l = 0; l < size_t(kRtlBeat) && out_.mismatch.empty(); ++l) {
       for (size_t p = 0; p < kWordPlanes; ++p) {
-        // The cycle after a copy the peel plane takes the copy's write, not this read.
-        if (p == kPeelPlane && last_.copy) continue;
+        // A read that copies shows no peel beat (the peel bank waits for the copy's write), nor
+        // does one in the cycle after it (the peel bank takes that write instead).
+        if (p == kPeelPlane && (r.copy || (last_.op == Op::kRead && last_.copy))) continue;
         ++out_.words;
         if (got[p][l] != expect[p][l]) {
           fail(r, n, fmt::format("{} lane {}: rtl 0x{:x}, model 0x{:x}", kPlaneNames[p], l,

@@ -16,6 +16,8 @@ namespace zb {
 struct PortStressResult {
   uint64_t ops = 0, reads = 0, cycles = 0;
   uint64_t words = 0;    // words compared
+  uint64_t renames = 0;  // renamed copies (a clear of depth with tile_copy_i)
+  uint64_t deep_clears = 0;  // fast clears of a depth bank that one generation bit would refuse
   std::string mismatch;  // the first difference from the model, with the beat's history; empty: none
 };
 

@@ -20,6 +20,7 @@ static_assert(VParams::DEPTH_BITS == kRtlDepthBits, "tb mirror of DEPTH_BITS dis
 static_assert(VParams::COV_SAMPLES == kRtlCoverageSamples, "tb mirror of COV_SAMPLES disagrees");
 static_assert(VParams::CNT_W == 32, "the driver reads 32-bit counters");
 static_assert(VParams::BEAT == kRtlBeat, "tb mirror of BEAT disagrees with the RTL");
+static_assert(VParams::DEPTH_GEN == kRtlDepthGenBits, "tb mirror of DEPTH_GEN disagrees");
 static_assert(VParams::ACC_BITS == kRtlWboit.acc_bits, "tb mirror of ACC_BITS disagrees");
 static_assert(VParams::REV_BITS == kRtlWboit.rev_bits, "tb mirror of REV_BITS disagrees");
 static_assert(VParams::WEIGHT_BITS == kRtlWboit.weight_bits, "tb mirror of WEIGHT_BITS disagrees");

@@ -21,6 +21,10 @@ constexpr unsigned kRtlWindow = ZBLEND_RTL_WINDOW;           // WINDOW: issue wi
 constexpr int kRtlBeat = ZBLEND_RTL_BEAT;                    // BEAT: tile port pixels per clock
 // ACC_BITS, REV_BITS, WEIGHT_BITS: the accumulate blend's widths (docs/datapath.md "7.").
 constexpr WboitFormat kRtlWboit{ZBLEND_RTL_ACC_BITS, ZBLEND_RTL_REV_BITS, ZBLEND_RTL_WEIGHT_BITS};
+// DEPTH_GEN: with the tile operations (every simulated build), copies of depth to peel are
+// renamed and the depth banks' words carry a generation of this many bits (docs/rtl.md
+// "Renamed copies").
+constexpr int kRtlDepthGenBits = 2;
 constexpr unsigned kVerilatorThreads = ZBLEND_VERILATOR_THREADS;  // the model's --threads
 
 }  // namespace zb

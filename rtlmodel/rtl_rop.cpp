@@ -78,6 +78,7 @@ struct RtlRop::Impl {
       st.preload = rs.preload;
       st.copy = rs.copy;
       st.sweep = rs.sweep;
+      st.swap = rs.swap;
       st.stream = p.binned.data() + p.tile_first[plan.tile];
       st.n = p.tile_first[plan.tile + 1] - p.tile_first[plan.tile];
       st.seed = tile_seed(opt.seed, p.number, plan.tile);
@@ -87,6 +88,8 @@ struct RtlRop::Impl {
     j.preload_after = plan.run.preload_after;
     j.copy_after = plan.run.copy_after;
     j.sweep_after = plan.run.sweep_after;
+    j.swap_after = plan.run.swap_after;
+    j.swap_after_depth = plan.run.swap_after_depth;
     j.resolve = resolve;
     j.background = pack_rgba(background);
     j.src = &src;

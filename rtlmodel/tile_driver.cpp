@@ -70,6 +70,12 @@ class TileRunner {
       read_all(false);
       reads += beats;
     }
+    if (job_.swap_after) {
+      TileIo io;
+      io.clear = kPlaneDepth;
+      io.clear_value[1] = job_.swap_after_depth;
+      clear(io, true);
+    }
     store();
     r.store_beats = t_.cnt_tile_stores_o;
     // The tile counters were cleared at the last step's setup: its loads, then the reads (a
@@ -120,6 +126,7 @@ class TileRunner {
   void step(size_t i);
   void read_all(bool copy);
   void setup();
+  void clear(const TileIo& io, bool swap);
   void load(uint8_t planes);
   void stream();
   void drain();
@@ -207,15 +214,23 @@ void TileRunner::setup() {
   t_.state_we_i = 1;
   t_.cnt_clear_i = 1;
   cleared_ = s_.cycle;
-  t_.tile_clear_i = step_->io.clear != 0;
-  t_.tile_planes_i = step_->io.clear;
-  put_beat(t_, clear_beat(step_->io));
-  s_.tick();
-  if (step_->io.clear) refuses("tile_clear_i");
+  clear(step_->io, step_->swap);
   t_.state_we_i = 0;
   t_.state_i = bits(13);  // pass_state_t
   t_.cnt_clear_i = 0;
+}
+
+// One cycle: the fast clear of the planes io.clear names, with `swap` (tile_copy_i) trading
+// depth and peel first (a renamed copy: depth's words become peel's, the other bank is cleared).
+void TileRunner::clear(const TileIo& io, bool swap) {
+  t_.tile_clear_i = io.clear != 0;
+  t_.tile_copy_i = swap;
+  t_.tile_planes_i = io.clear;
+  put_beat(t_, clear_beat(io));
+  s_.tick();
+  if (io.clear) refuses(swap ? "tile_clear_i (a renamed copy)" : "tile_clear_i");
   t_.tile_clear_i = 0;
+  t_.tile_copy_i = 0;
 }
 
 void TileRunner::load(uint8_t planes) {

@@ -29,6 +29,7 @@ struct TileStep {
   uint8_t preload = 0;                // before the setup: planes loaded for the copy
   bool copy = false;                  // then: copy depth to peel (tile_copy_i)
   bool sweep = false;                 // before the setup: a read of every beat
+  bool swap = false;                  // the setup trades depth and peel (a renamed copy)
 };
 
 // One tile's run: its passes on the resident tile (docs/rtl.md "Schedules"), one after the
@@ -40,6 +41,8 @@ struct TileJob {
   uint8_t preload_after = 0;          // after the last step, before the store: as a step's
   bool copy_after = false;
   bool sweep_after = false;           // the same (a store is a sweep itself)
+  bool swap_after = false;            // then a cycle trading depth and peel, depth cleared to
+  uint32_t swap_after_depth = 0;      // this
   bool resolve = false;               // the store resolves colour under `background`
   uint32_t background = 0;            // pack_rgba
   const Framebuffer* src = nullptr;   // the planes loaded from here (the group's start)

@@ -191,13 +191,16 @@ TileStates::RunPlan TileStates::plan_tile(size_t tile, const GroupStep* steps, s
   std::array<Plane, kTilePlanes> t = planes_.at(tile);
   std::array<Bank, kTilePlanes> bank{};
   std::array<size_t, kTilePlanes> role = {0, 1, 2, 3, 4};  // plane p's bank
-  const int max_steps = (1 << std::clamp(banks.gen_bits, 1, 16)) - 1;
+  // The epoch's steps a written bank takes between reads of every beat: the depth banks'
+  // generations are gen_bits wide, the other planes' one bit.
+  const int depth_steps = (1 << std::clamp(banks.gen_bits, 1, 16)) - 1;
+  auto max_steps = [&](size_t b) { return b == 1 || b == 3 ? depth_steps : 1; };
   uint8_t resident = 0, made = 0;
   bool copy = false, sweep = false, swap = false;  // pending before the next pass
   uint8_t preload = 0;
   auto needs_sweep = [&](int p) {
     const Bank& b = bank[role[size_t(p)]];
-    return !b.all_fresh && b.steps + 1 > max_steps;
+    return !b.all_fresh && b.steps + 1 > max_steps(role[size_t(p)]);
   };
   auto each = [](uint8_t planes, auto&& f) {
     for (int p = 0; p < kTilePlanes; ++p)
@@ -230,7 +233,11 @@ TileStates::RunPlan TileStates::plan_tile(size_t tile, const GroupStep* steps, s
           resident |= kPlanePeel;
           made |= kPlanePeel;
         } else {  // depth is cleared: so is peel, to its value (apply below)
-          if (needs_sweep(3)) {
+          if (swap) {  // a trade still pending is moot (it may not clear peel with depth)
+            std::swap(role[1], role[3]);
+            swap = false;
+          }
+          if (needs_sweep(1) || needs_sweep(3)) {
             if (!copy) sweep = true;
             read_all();
           }
@@ -256,6 +263,10 @@ TileStates::RunPlan TileStates::plan_tile(size_t tile, const GroupStep* steps, s
     s.io.clear &= uint8_t(~resident);
     s.io.load &= uint8_t(~resident);
     s.io.store = 0;
+    if (swap && !(s.io.clear & kPlaneDepth)) {  // the trade takes the fast clear of depth
+      s.io.clear |= kPlaneDepth;
+      s.io.clear_value[1] = t[1].value;
+    }
     s.preload = preload;
     s.copy = copy;
     s.sweep = sweep;
@@ -270,13 +281,15 @@ TileStates::RunPlan TileStates::plan_tile(size_t tile, const GroupStep* steps, s
     });
     each(s.io.load, [&](int p) { bank[role[size_t(p)]] = Bank{}; });
     each(written, [&](int p) { bank[role[size_t(p)]].all_fresh = false; });
-    resident |= planes_read(st.state) | written;
+    resident |= planes_read(st.state) | written | s.io.clear;
     made |= written;
     out.steps.push_back(s);
   }
   out.preload_after = preload;
   out.copy_after = copy;
   out.sweep_after = sweep;
+  out.swap_after = swap;
+  out.swap_after_depth = t[1].value;
   out.store = made;
   return out;
 }

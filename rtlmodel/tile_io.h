@@ -127,15 +127,16 @@ class TileSweep {
   int x0_, y0_, w_, h_;
 };
 
-// The tile memory's banks as planned (docs/rtl.md "Renamed copies"). zb_rop today: one
-// generation bit a word, every copy a read a beat. The proposed design: a copy of depth to peel
-// that a clear of depth follows trades the two planes' banks instead (no cycles), and a word's
-// generation of gen_bits takes 2^gen_bits - 1 fast clears of a written bank between reads of
-// every beat (a sweep otherwise, as one bit needs after each).
+// The tile memory's banks as planned (docs/rtl.md "Renamed copies"). With `rename`, a copy of
+// depth to peel that a clear of depth follows trades the two planes' banks (in the next setup
+// cycle, with the fast clear of depth) instead of a read a beat, and the depth banks' words
+// carry a generation of gen_bits: 2^gen_bits - 1 fast clears of a written bank between reads of
+// every beat (a sweep otherwise; the other planes have one bit: a sweep after each).
 struct TileBanks {
   bool rename = false;
   int gen_bits = 1;
 };
+constexpr TileBanks kRtlBanks{true, kRtlDepthGenBits};  // zb_rop's (TILE_OPS, DEPTH_GEN)
 
 // Each tile's planes as the frame holds them: cleared to one value (the tile memory takes the
 // value, not the words: fast clear) or words stored by a pass or made by a frame operation.
@@ -168,14 +169,16 @@ class TileStates {
       uint8_t preload = 0;  // before it: planes loaded for a copy (the frame's depth)
       bool copy = false;    // then a read of every beat copying depth to peel
       bool sweep = false;   // or a read of every beat (a fast clear may follow)
-      bool swap = false;    // TileBanks::rename: depth and peel trade banks before its setup
+      bool swap = false;    // TileBanks::rename: depth and peel trade banks in its setup
     };
     std::vector<Step> steps;        // the passes that touch the tile
     uint8_t preload_after = 0;      // after the last, before the store: as a Step's
     bool copy_after = false, sweep_after = false;
+    bool swap_after = false;        // then a setup cycle of its own for the trade,
+    uint32_t swap_after_depth = 0;  // its fast clear of depth to this
     uint8_t store = 0;              // planes stored (made in the tile since their last clear)
   };
-  RunPlan plan_tile(size_t tile, const GroupStep* steps, size_t n, TileBanks banks = {}) const;
+  RunPlan plan_tile(size_t tile, const GroupStep* steps, size_t n, TileBanks banks = kRtlBanks) const;
   void stored(size_t tile, uint8_t planes);  // the pass stored these planes of the tile
 
  private:

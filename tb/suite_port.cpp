@@ -15,7 +15,7 @@ Tally suite_port(const Config& c) {
   const int iters = c.iterations ? c.iterations : 8;
   const uint64_t ops = c.fragments ? c.fragments : 20000;
   WorkCounter progress(c, uint64_t(iters));
-  uint64_t reads = 0;
+  uint64_t reads = 0, renames = 0, deep = 0;
   for (int it = 0; it < iters; ++it) {
     const uint64_t seed = c.seed + uint64_t(it);
     const PortStressResult r = run_port_stress(cosim_options(c, seed).rtl, seed, ops);
@@ -23,6 +23,8 @@ Tally suite_port(const Config& c) {
     t.pixels += r.words;
     t.io_cycles += r.cycles;
     reads += r.reads;
+    renames += r.renames;
+    deep += r.deep_clears;
     if (!r.mismatch.empty()) {
       std::printf("port stress: mismatch at %s\n", r.mismatch.c_str());
       report_failure("port", c, seed);
@@ -32,7 +34,8 @@ Tally suite_port(const Config& c) {
     }
     progress.add();
   }
-  t.note = "reads " + std::to_string(reads);
+  t.note = "reads " + std::to_string(reads) + ", renamed copies " + std::to_string(renames) +
+           ", fast clears of a depth bank one generation bit refuses " + std::to_string(deep);
   return t;
 }
 

@@ -9,7 +9,8 @@ module zb_plane #(
   parameter int WORDS     = 1024,
   parameter int BEAT      = 8,     // pixels per tile-port beat: a power of two
   parameter bit FORWARDED = 1'b0,  // the user replaces a read that meets a write
-  parameter bit READ_ONLY = 1'b0   // no pipeline writes (peel): one fresh flag a plane
+  parameter bit READ_ONLY = 1'b0,  // no pipeline writes (peel): one fresh flag a plane
+  parameter int GEN_BITS  = 1      // a word's generation (not READ_ONLY)
 ) (
   input  logic                     clk_i,
   input  logic                     rst_ni,
@@ -57,25 +58,31 @@ module zb_plane #(
   // clear keeps the epoch (flipping it would make fresh words current). wback_q (W1): the beat
   // read last edge is in the read register; wb2_q (W2): its fresh words are written back this
   // edge. all_fresh falls at W1 already, so a clear between W1 and W2 flips the epoch.
-  logic             epoch_q, all_fresh_q, wback_q, wb2_q, wb2_epoch_q;
+  logic [GEN_BITS-1:0] epoch_q, wb2_epoch_q, epoch_step;
+  logic             all_fresh_q, wback_q, wb2_q;
   logic             wb2_current;  // W2 writes at the plane's epoch (no clear since its read)
   logic [WIDTH-1:0] clear_q;
   logic [BeatAW-1:0] wback_addr_q, wb2_addr_q;
   logic [BankW-1:0] rbank_q;
   assign wb2_current = wb2_q & (wb2_epoch_q == epoch_q);
+  if (GEN_BITS == 1) begin : g_epoch_flip
+    assign epoch_step = ~epoch_q;
+  end else begin : g_epoch_count
+    assign epoch_step = epoch_q + GEN_BITS'(1);
+  end
 
   // The next state is computed in the flop blocks, from the tile port's inputs themselves: logic
   // on the model's inputs outside them would be evaluated at both evaluations of every cycle.
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      epoch_q       <= 1'b0;
+      epoch_q       <= '0;
       all_fresh_q   <= 1'b0;
       wback_q       <= 1'b0;
       wb2_q         <= 1'b0;
       plane_fresh_q <= 1'b0;
     end else begin
       if (tile_clear_i && tile_en_i) begin
-        epoch_q       <= all_fresh_q ? epoch_q : ~epoch_q;
+        epoch_q       <= all_fresh_q ? epoch_q : epoch_step;
         all_fresh_q   <= 1'b1;
         plane_fresh_q <= 1'b1;
       end else begin
@@ -105,7 +112,8 @@ module zb_plane #(
 
   // The banks: words of {generation, value}. The write-back rewrites only the fresh words (as
   // the clear value); the others are at the epoch already.
-  localparam int GenW  = READ_ONLY ? 0 : 1;
+  localparam int GenW  = READ_ONLY ? 0 : GEN_BITS;
+  localparam int GenLsb = READ_ONLY ? 0 : WIDTH;  // the generation's bits (unread when READ_ONLY)
   localparam int WordW = WIDTH + GenW;
   logic [WIDTH-1:0] wdata_one;  // a bank's write data but for a load
   logic             rd_fresh;   // rdata_o's word is fresh
@@ -139,13 +147,14 @@ module zb_plane #(
   /* verilator lint_off BLKSEQ */
   always_ff @(posedge clk_i) begin
     logic [WordW-1:0]  w;
-    logic              f, load, read, clear, epoch_d, plane_fresh_d;
+    logic              f, load, read, clear, plane_fresh_d;
+    logic [GEN_BITS-1:0] epoch_d;
     logic [WIDTH-1:0]  clear_d;
     logic [BeatAW-1:0] waddr;
     load          = tile_req_i && tile_we_i && tile_en_i;
     read          = tile_req_i && !tile_we_i;
     clear         = tile_clear_i && tile_en_i;
-    epoch_d       = clear && !all_fresh_q ? ~epoch_q : epoch_q;
+    epoch_d       = clear && !all_fresh_q ? epoch_step : epoch_q;
     plane_fresh_d = clear || (plane_fresh_q && !load);
     clear_d       = clear ? tile_wdata_i[WIDTH-1:0] : clear_q;
     if (pipe_re_i || read) begin
@@ -155,7 +164,7 @@ module zb_plane #(
     if (read) begin
       for (int b = 0; b < BEAT; b++) begin
         w = mem_q[word(tile_addr_i, b)];
-        f = READ_ONLY ? plane_fresh_d : w[WordW-1] != epoch_d;
+        f = READ_ONLY ? plane_fresh_d : w[GenLsb +: GEN_BITS] != epoch_d;
         tile_fresh_q[b] <= f;
         tile_lane_q[b*WIDTH +: WIDTH] <= f ? clear_d : w[WIDTH-1:0];
       end
@@ -180,7 +189,7 @@ module zb_plane #(
     fresh2_q <= tile_fresh_q;
   end
   /* verilator lint_on BLKSEQ */
-  assign rd_fresh     = READ_ONLY ? plane_fresh_q : prd_q[WordW-1] != epoch_q;
+  assign rd_fresh     = READ_ONLY ? plane_fresh_q : prd_q[GenLsb +: GEN_BITS] != epoch_q;
   assign rdata_o      = rd_fresh ? clear_q : prd_q[WIDTH-1:0];
   assign tile_rdata_o = tile_lane_q;
 
@@ -199,20 +208,23 @@ module zb_plane #(
   // current with the old clear value: the driver never clears twice in a row (one setup cycle).
   WriteBackBeforeClear: assert property (@(posedge clk_i) disable iff (!rst_ni)
       (tile_clear && wb2_current) |-> !all_fresh_q);
-  // Written since a fast clear and not stored since: some words fresh, some current. A fast
-  // clear then would make the fresh ones current (the driver stores every plane a pass writes).
-  logic mixed_q;
+  // Written since a fast clear and not stored since: some words fresh, some current. Each fast
+  // clear that steps the epoch then brings the oldest fresh words' generation nearer: after
+  // 2^GEN_BITS - 1 steps since a read of every beat (the driver stores every plane a pass
+  // writes, or sweeps) another would make them current.
+  localparam int Steps = READ_ONLY ? 1 : (1 << GEN_BITS) - 1;
+  logic [GEN_BITS:0] steps_q;  // the epoch's steps since the last tile read or load
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      mixed_q <= 1'b0;
+      steps_q <= '0;
     end else if (tile_load || tile_read) begin
-      mixed_q <= 1'b0;
-    end else if (pipe_we_i && all_fresh_q) begin
-      mixed_q <= 1'b1;
+      steps_q <= '0;
+    end else if (tile_clear && !all_fresh_q && steps_q <= (GEN_BITS+1)'(Steps)) begin
+      steps_q <= steps_q + 1'b1;
     end
   end
   FastClearWhole: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      tile_clear |-> !mixed_q);
+      (tile_clear && !all_fresh_q) |-> steps_q < (GEN_BITS+1)'(Steps));
   logic swept_q;  // a tile read of the last beat since reset (the driver sweeps in order)
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin

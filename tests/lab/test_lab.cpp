@@ -168,8 +168,9 @@ TEST(LabSummary, StreamShareByHand) {
 
 // The tile schedule's lines by hand: two runs of 100 fragments, 110 and 130 cycles with two
 // buffers (1.2000 a fragment), with copies renamed 105 and 115 (1.1000) at 3 generation bits,
-// 5 more each at 2 (1.1500), at 1 as without renaming with two buffers and 10 more with one
-// (1.2000); 20 host pixels (0.1 a fragment more).
+// 5 more each at 2 (1.1500), at 1 as the 110 and 130 with two buffers and 10 more with one
+// (1.2000), copied by reads 10 more again with two (1.3000), 20 more with one (1.4000); 20 host
+// pixels (0.1 a fragment more).
 TEST(LabSummary, TwoBuffersByHand) {
   std::vector<zb::lab::LabRow> rows(2);
   const uint64_t two[2] = {110, 130}, renamed[2] = {105, 115};
@@ -180,19 +181,20 @@ TEST(LabSummary, TwoBuffersByHand) {
     rows[k].golden.fragments_in = 100;
     rows[k].model_stream_cycles = 100;
     rows[k].model_cycles_2buf_resident = two[k];
-    rows[k].model_cycles_renamed = {renamed[k] + 10, renamed[k] + 5, renamed[k]};
-    rows[k].model_cycles_2buf_renamed = {two[k], renamed[k] + 5, renamed[k]};
+    rows[k].model_cycles_variant = {two[k] + 20, renamed[k] + 10, renamed[k] + 5, renamed[k]};
+    rows[k].model_cycles_2buf_variant = {two[k] + 10, two[k], renamed[k] + 5, renamed[k]};
     rows[k].host_op_pixels_tile = 10;
   }
   const std::string text = zb::lab::schedule_text(rows, false);
   EXPECT_NE(text.find("schedule tile with two tile buffers (cost model of the proposed design): "
                       "all cycles per fragment 1.2000, 1.3000 with the host's frame operations\n"),
             std::string::npos) << text;
-  EXPECT_NE(text.find("schedule tile with copies of depth to peel as a renaming of banks (cost "
-                      "model of the proposed design), a word's generation of 1 / 2 / 3 bits: all "
-                      "cycles per fragment with one tile buffer 1.2000 / 1.1500 / 1.1000, with two "
-                      "1.2000 / 1.1500 / 1.1000; with the host's frame operations 1.3000 / 1.2500 "
-                      "/ 1.2000 and 1.3000 / 1.2500 / 1.2000\n"),
+  EXPECT_NE(text.find("schedule tile with copies of depth to peel by reads / renamed with the "
+                      "depth banks' generations of 1 / 2 (zb_rop) / 3 bits (cost model): all "
+                      "cycles per fragment with one tile buffer 1.4000 / 1.2000 / 1.1500 / 1.1000, "
+                      "with two 1.3000 / 1.2000 / 1.1500 / 1.1000; with the host's frame "
+                      "operations 1.5000 / 1.3000 / 1.2500 / 1.2000 and 1.4000 / 1.3000 / 1.2500 "
+                      "/ 1.2000\n"),
             std::string::npos) << text;
 }
 

@@ -296,7 +296,8 @@ std::string before_passes(const TileStates::RunPlan& run) {
 TEST(TileStates, RenamedCopiesSweepAsTheGenerationsRunOut) {
   const TileStates frame(64, 64, 64, kRtlDepthBits, Rgba8{0, 0, 0, 255});
   const auto steps = peel_steps(8);
-  EXPECT_EQ(before_passes(frame.plan_tile(0, steps.data(), steps.size())), "ccccccc");
+  EXPECT_EQ(before_passes(frame.plan_tile(0, steps.data(), steps.size(), {false, 1})), "ccccccc");
+  EXPECT_EQ(before_passes(frame.plan_tile(0, steps.data(), steps.size())), "rrrrrRr");  // zb_rop's
   EXPECT_EQ(before_passes(frame.plan_tile(0, steps.data(), steps.size(), {true, 1})), "rRrRrRr");
   EXPECT_EQ(before_passes(frame.plan_tile(0, steps.data(), steps.size(), {true, 2})), "rrrrrRr");
   EXPECT_EQ(before_passes(frame.plan_tile(0, steps.data(), steps.size(), {true, 3})), "rrrrrrr");
@@ -305,6 +306,23 @@ TEST(TileStates, RenamedCopiesSweepAsTheGenerationsRunOut) {
   EXPECT_FALSE(run.copy_after || run.sweep_after);
   const auto kept = peel_steps(3, false);
   EXPECT_EQ(before_passes(frame.plan_tile(0, kept.data(), kept.size(), {true, 3})), "cc");
+  // A run that ends on a renamed copy trades the banks in a cycle of its own before the store,
+  // clearing depth to the far value; a pass that needs no depth takes the trade's clear of it.
+  auto ends = peel_steps(2);
+  ends.push_back(ends[2]);  // copy
+  ends.push_back(ends[3]);  // clear depth
+  const TileStates::RunPlan last = frame.plan_tile(0, ends.data(), ends.size());
+  EXPECT_TRUE(last.swap_after);
+  EXPECT_EQ(last.swap_after_depth, depth_max(kRtlDepthBits));
+  EXPECT_EQ(last.store, kPlanePeel) << "the depth the second pass wrote is cleared after it";
+  auto colour = peel_steps(2);
+  colour.back().state = RopState{};
+  colour.back().state.depth_test = false;  // colour only: no depth
+  const TileStates::RunPlan c = frame.plan_tile(0, colour.data(), colour.size());
+  ASSERT_EQ(c.steps.size(), 2u);
+  EXPECT_TRUE(c.steps[1].swap);
+  EXPECT_EQ(c.steps[1].io.clear & kPlaneDepth, kPlaneDepth);
+  EXPECT_EQ(c.steps[1].io.clear_value[1], depth_max(kRtlDepthBits));
 }
 
 }  // namespace
