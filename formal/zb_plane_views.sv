@@ -13,7 +13,9 @@ module zb_plane_views #(
   parameter int BEAT      = 2,
   parameter bit FORWARDED = 1'b0,
   parameter bit READ_ONLY = 1'b0,
-  localparam int WordW    = WIDTH + (READ_ONLY ? 0 : 1),
+  parameter int GEN_BITS  = 1,
+  localparam int WordW    = WIDTH + (READ_ONLY ? 0 : GEN_BITS),
+  localparam int GenLsb   = READ_ONLY ? 0 : WIDTH,
   localparam int BankW    = BEAT > 1 ? $clog2(BEAT) : 1
 ) (
   input  logic                          clk_i,
@@ -38,7 +40,8 @@ module zb_plane_views #(
 );
   logic [BEAT*WIDTH-1:0] trd;
   zb_plane #(
-    .WIDTH(WIDTH), .WORDS(WORDS), .BEAT(BEAT), .FORWARDED(FORWARDED), .READ_ONLY(READ_ONLY)
+    .WIDTH(WIDTH), .WORDS(WORDS), .BEAT(BEAT), .FORWARDED(FORWARDED), .READ_ONLY(READ_ONLY),
+    .GEN_BITS(GEN_BITS)
   ) u_plane (
     .clk_i, .rst_ni, .tile_req_i, .tile_we_i, .tile_en_i, .tile_clear_i, .tile_addr_i,
     .tile_wdata_i, .tile_rdata_o(trd), .pipe_re_i, .pipe_raddr_i, .pipe_we_i, .pipe_waddr_i,
@@ -46,7 +49,8 @@ module zb_plane_views #(
   );
 
   // Taps common to both views.
-  logic             t_wback, t_wb2, t_epoch, t_plane_fresh;
+  logic             t_wback, t_wb2, t_plane_fresh;
+  logic [GEN_BITS-1:0] t_epoch;
   logic [BankW-1:0] t_rbank;
   logic [BEAT-1:0]  t_fresh2;
   assign tile_beat_o = t_wback ? trd : '0;
@@ -62,7 +66,7 @@ module zb_plane_views #(
   logic [BEAT*WordW-1:0] t_rdata;  // the banks' read registers
   logic [BEAT-1:0]       fresh;
   for (genvar b = 0; b < BEAT; b++) begin : g_fresh
-    assign fresh[b] = READ_ONLY ? t_plane_fresh : t_rdata[b*WordW + WordW - 1] != t_epoch;
+    assign fresh[b] = READ_ONLY ? t_plane_fresh : t_rdata[b*WordW + GenLsb +: GEN_BITS] != t_epoch;
   end
   assign inv_prd        = t_rdata[(BEAT > 1 ? 32'(t_rbank) : 0)*WordW +: WordW];
   assign inv_beat_fresh = t_wback ? fresh : '0;

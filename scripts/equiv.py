@@ -191,7 +191,7 @@ def plane_taps(values, sim):
     (after)."""
     p = dict(values)
     width, words, beat, ro = p["WIDTH"], p["WORDS"], p["BEAT"], p["READ_ONLY"]
-    ww = width + (0 if ro else 1)
+    ww = width + (0 if ro else p.get("GEN_BITS", 1))
     regs = [f"connect -nounset -set t_{r} u_plane.{r}_q"
             for r in ("wback", "wb2", "epoch", "plane_fresh", "rbank")]
     mems = []

@@ -337,6 +337,25 @@ module zb_rop_cov #(
   PassBoundaryResident: cover property (@(posedge clk_i) disable iff (!rst_ni)
       state_we_i && touched_q);
 
+  // Renamed copies (docs/rtl.md "Renamed copies"): a fast clear of depth with tile_copy_i, the
+  // cycle after a load, after a read (a sweep's or a store's), with fragments taken since the
+  // tile's last load or clear (right after a pass), and with a read next (the store after a
+  // run's last renamed copy).
+  logic rename, was_rename_q;
+  assign rename = tile_clear_i && tile_copy_i;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) was_rename_q <= 1'b0;
+    else was_rename_q <= rename;
+  end
+  RenamedAfterLoad: cover property (@(posedge clk_i) disable iff (!rst_ni)
+      rename && was_load_q);
+  RenamedAfterRead: cover property (@(posedge clk_i) disable iff (!rst_ni)
+      rename && was_read_q);
+  RenamedAfterFragment: cover property (@(posedge clk_i) disable iff (!rst_ni)
+      rename && touched_q);
+  RenamedThenRead: cover property (@(posedge clk_i) disable iff (!rst_ni)
+      read && was_rename_q);
+
   // Counters at all ones: the nine event counters, then the tile loads and stores.
   logic [10:0] sat;
   assign sat = {tile_cnt_sat, cnt_sat};
