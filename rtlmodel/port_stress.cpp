@@ -163,7 +163,7 @@ class Rules {
 class Stress {
  public:
   Stress(const RtlOptions& o, uint64_t seed)
-      : sim_(o.trace_path, o), t_(*sim_.top), rng_(seed) {}
+      : sim_(o.trace_path, o, o.coverage), t_(*sim_.top), rng_(seed) {}
 
   PortStressResult run(uint64_t ops) {
     // Every plane cleared to a known value first (a clear is what makes the words known).
@@ -200,10 +200,12 @@ class Stress {
     return s;
   }
 
-  // A sweep, after an idle cycle, as the driver makes them: every beat loaded (peel and other
-  // planes), or read with a copy (and resolves under changing backgrounds).
+  // A sweep as the driver makes them: every beat loaded (peel and other planes), or read with a
+  // copy (and resolves under changing backgrounds); after an idle cycle, or half the time right
+  // after a clear or a load (a load of the beat just read, or of peel after a copy, is not
+  // allowed).
   void plan_sweep() {
-    sweep_.push_back(Step{});
+    if (last_.op == Op::kRead || chance(0.5)) sweep_.push_back(Step{});
     const bool load = chance(0.5);
     const uint8_t planes = uint8_t(kPlanePeel | pick(32));
     const bool resolve = chance(0.5);

@@ -1,7 +1,8 @@
 // tiles: the tile planes' fast-clear bookkeeping. Passes from a menu that includes passes
 // writing nothing at all (so a plane is fast-cleared twice with no store between) and
 // accumulate passes (the accumulation plane), clears, peel copies and resolves between them, on one or two tiles, some passes touching one tile only; depths
-// beside the last depth clear value; frames a few rows high or one or two tiles high.
+// beside the last depth clear value; frames a few rows high or one or two tiles high; half of
+// them ending on a renamed copy.
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -77,6 +78,30 @@ Tally suite_tiles(const Config& c) {
           }
         }
         draw_pass(cs, std::string("tiles-") + kNames[kind], st, f);
+      }
+      // Half the frames end on a renamed copy (a copy of depth to peel, then a clear of depth:
+      // docs/rtl.md "Renamed copies"), half of those with one more pass on the first tile only:
+      // the tile schedule trades the banks in that pass's setup there and, on a second tile, in
+      // a cycle of its own before the store.
+      if (r.chance(0.5)) {
+        cs.frame_op({FrameOpKind::kCopyDepthToPeel, {}, 0, false});
+        cs.frame_op({FrameOpKind::kClearDepth, {}, r.chance(0.5) ? zmax : r.below(zmax), false});
+        if (r.chance(0.5)) {
+          RopState st;
+          st.peel_test = true;
+          std::vector<Fragment> f;
+          for (int y = 0; y < h; y += 3)
+            for (int x = 0; x < std::min(w, kRtlTileW); x += 2) {
+              Fragment g;
+              g.x = uint16_t(x);
+              g.y = uint16_t(y);
+              g.z = r.below(zmax + 1u);
+              g.color = Rgba8{pick_channel(r), pick_channel(r), pick_channel(r), pick_alpha(r)};
+              g.prim = uint32_t(f.size() / 16);
+              f.push_back(g);
+            }
+          draw_pass(cs, "tiles-after-rename", st, f);
+        }
       }
     });
     if (!ok) break;
