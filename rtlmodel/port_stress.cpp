@@ -193,7 +193,7 @@ class Stress {
 
   // The next operation: one at random, or the next of a sweep under way.
   Step next() {
-    if (sweep_.empty() && chance(0.004)) plan_sweep();
+    if (sweep_.empty() && chance(last_.op == Op::kClear ? 0.05 : 0.004)) plan_sweep();
     if (sweep_.empty()) return random_step();
     Step s = sweep_.front();
     sweep_.pop_front();
@@ -201,11 +201,11 @@ class Stress {
   }
 
   // A sweep as the driver makes them: every beat loaded (peel and other planes), or read with a
-  // copy (and resolves under changing backgrounds); after an idle cycle, or half the time right
-  // after a clear or a load (a load of the beat just read, or of peel after a copy, is not
-  // allowed).
+  // copy (and resolves under changing backgrounds); right after a clear (more often there: a
+  // copy or resolve the cycle after a clear), half the time right after a load, else after an
+  // idle cycle (a load of the beat just read, or of peel after a copy, is not allowed).
   void plan_sweep() {
-    if (last_.op == Op::kRead || chance(0.5)) sweep_.push_back(Step{});
+    if (last_.op == Op::kRead || (last_.op != Op::kClear && chance(0.5))) sweep_.push_back(Step{});
     const bool load = chance(0.5);
     const uint8_t planes = uint8_t(kPlanePeel | pick(32));
     const bool resolve = chance(0.5);
