@@ -23,7 +23,9 @@ struct Stage {
 };
 constexpr Stage kStages[] = {
     {"u_input", "I/S: zb_input"},         {"u_window", "W: zb_issue_window"},
-    {"u_depth", "X1..X4: zb_depth"},       {"u_operands", "X1..X6: zb_operands"},
+    {"u_depth", "X1..X4: zb_depth"},
+    {"u_depth.g_renamed", "the depth banks, role_q: bank 1 is depth (zb_depth, renamed copies)"},
+    {"u_operands", "X1..X6: zb_operands"},
     {"u_weight", "M..X8: zb_weight"},      {"u_color", "X5..X11: zb_color"},
     {"u_accum", "X5..X11: zb_accum"},      {"u_counters", "counters: zb_counters"},
     {"u_tile_counters", "tile port counters: zb_counters"},
