@@ -140,13 +140,17 @@ module zb_raw_check
   // formal-tap: tap_x8_addr dut.x_addr_q[8]
   // formal-tap: tap_x9_addr dut.x_addr_q[9]
   // formal-tap: tap_x10_addr dut.x_addr_q[10]
-  // The planes (two banks each: BEAT = 2, as the jobs run it).
-  // formal-tap: tap_zmem0 dut.u_depth.u_depth_plane.g_bank[0].u_mem.mem_q[*]
-  // formal-tap: tap_zmem1 dut.u_depth.u_depth_plane.g_bank[1].u_mem.mem_q[*]
-  // formal-tap: tap_z_epoch dut.u_depth.u_depth_plane.epoch_q
-  // formal-tap: tap_z_clear dut.u_depth.u_depth_plane.clear_q
-  // formal-tap: tap_z_wb dut.u_depth.u_depth_plane.wback_q
-  // formal-tap: tap_z_wb2 dut.u_depth.u_depth_plane.wb2_q
+  // The planes (two banks each: BEAT = 2, as the jobs run it). Depth is the first of zb_depth's
+  // two depth banks (renamed copies): no renamed copy comes with the tile port idle, so its
+  // role stays the reset's (tap_role, asserted below).
+  // formal-tap: tap_zmem0 dut.u_depth.g_renamed.g_bank[0].u_plane.g_bank[0].u_mem.mem_q[*]
+  // formal-tap: tap_zmem1 dut.u_depth.g_renamed.g_bank[0].u_plane.g_bank[1].u_mem.mem_q[*]
+  // formal-tap: tap_z_epoch dut.u_depth.g_renamed.g_bank[0].u_plane.epoch_q
+  // formal-tap: tap_z_clear dut.u_depth.g_renamed.g_bank[0].u_plane.clear_q
+  // formal-tap: tap_z_wb dut.u_depth.g_renamed.g_bank[0].u_plane.wback_q
+  // formal-tap: tap_z_wb2 dut.u_depth.g_renamed.g_bank[0].u_plane.wb2_q
+  // formal-tap: tap_role dut.u_depth.g_renamed.role_q
+  // formal-tap: tap_rd_role dut.u_depth.g_renamed.rd_role_q
   // formal-tap: tap_cmem0 dut.u_depth.u_cov_plane.g_bank[0].u_mem.mem_q[*]
   // formal-tap: tap_cmem1 dut.u_depth.u_cov_plane.g_bank[1].u_mem.mem_q[*]
   // formal-tap: tap_c_epoch dut.u_depth.u_cov_plane.epoch_q
@@ -172,11 +176,12 @@ module zb_raw_check
   logic [AddrW-1:0]      tap_x1_addr, tap_x2_addr, tap_x3_addr, tap_x4_addr, tap_x5_addr;
   logic [AddrW-1:0]      tap_x6_addr, tap_x7_addr, tap_x8_addr, tap_x9_addr, tap_x10_addr;
   // keep: connected after memory_map, whole.
-  (* keep *) logic [Beats*(DEPTH_BITS+1)-1:0] tap_zmem0, tap_zmem1;
+  (* keep *) logic [Beats*(DEPTH_BITS+DEPTH_GEN)-1:0] tap_zmem0, tap_zmem1;
   (* keep *) logic [Beats*(CovW+1)-1:0]       tap_cmem0, tap_cmem1;
   (* keep *) logic [Beats*33-1:0]             tap_kmem0, tap_kmem1;
   (* keep *) logic [Beats*(AccW+1)-1:0]       tap_amem0, tap_amem1;
-  logic                  tap_z_epoch, tap_c_epoch, tap_k_epoch, tap_a_epoch;
+  logic [DEPTH_GEN-1:0]  tap_z_epoch;
+  logic                  tap_c_epoch, tap_k_epoch, tap_a_epoch, tap_role, tap_rd_role;
   logic                  tap_z_wb, tap_c_wb, tap_k_wb, tap_a_wb;
   logic                  tap_z_wb2, tap_c_wb2, tap_k_wb2, tap_a_wb2;
   logic [DEPTH_BITS-1:0] tap_z_clear;
@@ -186,7 +191,7 @@ module zb_raw_check
 
   // P's word of each plane: bank pix[0], beat pix >> 1; the clear value when fresh.
   logic [AddrW-2:0]      beat;
-  logic [DEPTH_BITS:0]   zw;
+  logic [DEPTH_BITS+DEPTH_GEN-1:0] zw;
   logic [CovW:0]         cw;
   logic [32:0]           kw;
   logic [AccW:0]         aw;
@@ -195,12 +200,12 @@ module zb_raw_check
   logic [31:0]           k_p;
   logic [AccW-1:0]       a_p;
   assign beat = pix[AddrW-1:1];
-  assign zw  = pix[0] ? tap_zmem1[beat*(DEPTH_BITS+1) +: DEPTH_BITS+1]
-                      : tap_zmem0[beat*(DEPTH_BITS+1) +: DEPTH_BITS+1];
+  assign zw  = pix[0] ? tap_zmem1[beat*(DEPTH_BITS+DEPTH_GEN) +: DEPTH_BITS+DEPTH_GEN]
+                      : tap_zmem0[beat*(DEPTH_BITS+DEPTH_GEN) +: DEPTH_BITS+DEPTH_GEN];
   assign cw  = pix[0] ? tap_cmem1[beat*(CovW+1) +: CovW+1] : tap_cmem0[beat*(CovW+1) +: CovW+1];
   assign kw  = pix[0] ? tap_kmem1[beat*33 +: 33] : tap_kmem0[beat*33 +: 33];
   assign aw  = pix[0] ? tap_amem1[beat*(AccW+1) +: AccW+1] : tap_amem0[beat*(AccW+1) +: AccW+1];
-  assign z_p = zw[DEPTH_BITS] != tap_z_epoch ? tap_z_clear : zw[DEPTH_BITS-1:0];
+  assign z_p = zw[DEPTH_BITS +: DEPTH_GEN] != tap_z_epoch ? tap_z_clear : zw[DEPTH_BITS-1:0];
   assign c_p = cw[CovW] != tap_c_epoch ? tap_c_clear : cw[CovW-1:0];
   assign k_p = kw[32] != tap_k_epoch ? tap_k_clear : kw[31:0];
   assign a_p = aw[AccW] != tap_a_epoch ? tap_a_clear : aw[AccW-1:0];
@@ -245,7 +250,7 @@ module zb_raw_check
     if (rst_ni) begin
       PixelSpan: assert (&spaced_ok);
       TilePortQuiet: assert (!(tap_z_wb || tap_z_wb2 || tap_c_wb || tap_c_wb2 || tap_k_wb ||
-                               tap_k_wb2 || tap_a_wb || tap_a_wb2));
+                               tap_k_wb2 || tap_a_wb || tap_a_wb2 || tap_role || tap_rd_role));
       ShadowIsPlane: assert ((!sz_valid_q || sz_q == z_p) && (!sc_valid_q || sc_q == c_p) &&
                              (!sk_valid_q || (sk_q == k_p && sa_q == a_p)));
       DepthReadsInFlight: assert ((!pos_p[2] || (tap_x1_zs == z_p && tap_x1_cs == c_p)) &&

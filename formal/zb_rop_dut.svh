@@ -12,7 +12,8 @@
   parameter int unsigned BEAT        = 2,
   parameter int unsigned ACC_BITS    = 8,   // the accumulation word at its narrowest: 40 bits
   parameter int unsigned REV_BITS    = 8,
-  parameter int unsigned WEIGHT_BITS = 0
+  parameter int unsigned WEIGHT_BITS = 0,
+  parameter int unsigned DEPTH_GEN   = 2    // the depth banks' generation bits (TILE_OPS)
 ) (
   input logic                            clk_i,
   input logic                            rst_ni,
@@ -65,7 +66,8 @@
     .BEAT       (BEAT),
     .ACC_BITS   (ACC_BITS),
     .REV_BITS   (REV_BITS),
-    .WEIGHT_BITS(WEIGHT_BITS)
+    .WEIGHT_BITS(WEIGHT_BITS),
+    .DEPTH_GEN  (DEPTH_GEN)
   ) dut (
     .clk_i, .rst_ni, .state_we_i, .state_i, .tile_x0_i, .tile_y0_i, .frag_valid_i,
     .frag_ready_o(frag_ready),
