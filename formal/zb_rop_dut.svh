@@ -74,7 +74,7 @@
     .frag_x_i, .frag_y_i, .frag_z_i, .frag_rgba_i, .frag_cov_i, .stall_i,
     .tile_req_i, .tile_we_i, .tile_clear_i, .tile_planes_i, .tile_addr_i, .tile_wcolor_i,
     // The tile operations (copy, resolve) are not in these proofs yet (docs/formal.md).
-    .tile_copy_i(1'b0), .tile_resolve_i(1'b0),
+    .tile_copy_i(1'b0), .tile_resolve_i(1'b0), .tile_wboit_i(1'b0),
     .tile_wdepth_i, .tile_wcov_i, .tile_wpeel_i, .tile_wacc_i,
     .tile_rcolor_o(), .tile_rdepth_o(), .tile_rcov_o(), .tile_rpeel_o(), .tile_racc_o(),
     .busy_o(busy),

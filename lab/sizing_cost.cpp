@@ -187,8 +187,8 @@ void CostCounter::end_group() {
         c.work += reads(st.copy, st.sweep) + kRtlTileSetup + stream[st.step];
       }
       c.load += run.preload_after ? beats : 0;
-      c.work += reads(run.copy_after, run.sweep_after && !run.store);
-      c.work += run.swap_after ? kRtlTileSetup : 0;
+      c.work += reads(run.copy_after, run.sweep_reads());
+      c.work += run.closing_setup() ? kRtlTileSetup : 0;
       c.store += run.store ? beats : 0;
       return c;
     };
@@ -261,15 +261,14 @@ void CostCounter::finish_frame(std::vector<PassStats>& stats) {
   }
 }
 
-// Under the tile schedule an operation runs on the resident tiles when passes wait and it is not
-// the accumulation's resolve (RtlRop::on_tile); else the group ends, and a copy or a resolve
+// Under the tile schedule an operation runs on the resident tiles when passes wait and no
+// resolve has closed them (RtlRop::on_tile); else the group ends, and a copy or a resolve
 // costs the host a pixel a clock (a clear is a fast clear wherever it is).
 void CostCounter::frame_op(const FrameOp& op) {
   inner_.frame_op(op);
-  if (group_passes_ > 0 && !group_resolve_ && runs_on_tile(op.kind)) {
-    if (op.kind == FrameOpKind::kResolveUnder)
-      group_resolve_ = true;
-    else
+  if (group_passes_ > 0 && !group_resolve_) {
+    group_resolve_ = resolves(op.kind);
+    if (op.kind != FrameOpKind::kResolveUnder)
       group_steps_.push_back(TileStates::GroupStep{false, false, RopState{}, op});
   } else {
     end_group();

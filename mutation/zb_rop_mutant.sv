@@ -37,6 +37,7 @@ module zb_rop
   input  logic                  tile_clear_i,
   input  logic                  tile_copy_i,
   input  logic                  tile_resolve_i,
+  input  logic                  tile_wboit_i,
   input  zb_pkg::planes_t       tile_planes_i,
   input  logic [$clog2(TILE_W * TILE_H / BEAT)-1:0] tile_addr_i,
   input  logic [BEAT*32-1:0]         tile_wcolor_i,
@@ -84,7 +85,7 @@ module zb_rop
   zb_rop_mutants u_mutants (
     .clk_i, .rst_ni, .state_we_i, .state_i, .tile_x0_i, .tile_y0_i, .frag_valid_i,
     .frag_ready_o, .frag_x_i, .frag_y_i, .frag_z_i, .frag_rgba_i, .frag_cov_i, .stall_i,
-    .tile_req_i, .tile_we_i, .tile_clear_i, .tile_copy_i, .tile_resolve_i, .tile_planes_i,
+    .tile_req_i, .tile_we_i, .tile_clear_i, .tile_copy_i, .tile_resolve_i, .tile_wboit_i, .tile_planes_i,
     .tile_addr_i, .tile_wcolor_i,
     .tile_wdepth_i, .tile_wcov_i, .tile_wpeel_i, .tile_wacc_i, .tile_rcolor_o, .tile_rdepth_o,
     .tile_rcov_o, .tile_rpeel_o, .tile_racc_o, .busy_o, .cnt_clear_i, .cnt_frag_in_o,

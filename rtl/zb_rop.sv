@@ -32,7 +32,7 @@ module zb_rop
   parameter int ACC_BITS   = 16,   // accumulation channel, 8..32
   parameter int REV_BITS   = 8,    // revealage, 8..16
   parameter int WEIGHT_BITS = 4,   // depth weight's range, 0..16
-  parameter bit TILE_OPS   = 1'b1, // the tile operations copy and resolve (docs/rtl.md)
+  parameter bit TILE_OPS   = 1'b1, // the tile operations: copy, the resolves (docs/rtl.md)
   parameter int DEPTH_GEN  = 2,    // TILE_OPS: generation bits of the renamed depth banks
   localparam int AddrW     = $clog2(TILE_W * TILE_H),
   localparam int BeatAW    = $clog2(TILE_W * TILE_H / BEAT),
@@ -59,6 +59,8 @@ module zb_rop
   // planes of tile_planes_i to lane 0 of the write data: no beat moves. With a read,
   // tile_copy_i also loads the depth beat read into the peel plane at the next edge, and
   // tile_resolve_i shows the colour beat resolved under lane 0 of tile_wcolor_i (TILE_OPS).
+  // With a read, tile_wboit_i shows the colour beat resolved from the accumulation beat read
+  // with it (docs/datapath.md "Resolve (frame operation 4)"; TILE_OPS).
   // With a fast clear of depth (not of peel), tile_copy_i makes the depth plane the peel plane
   // and clears the other bank as depth: a copy and a clear, renamed (TILE_OPS).
   input  logic                       tile_req_i,
@@ -66,6 +68,7 @@ module zb_rop
   input  logic                       tile_clear_i,
   input  logic                       tile_copy_i,
   input  logic                       tile_resolve_i,
+  input  logic                       tile_wboit_i,
   input  zb_pkg::planes_t            tile_planes_i,
   input  logic [BeatAW-1:0]          tile_addr_i,
   input  logic [BEAT*32-1:0]         tile_wcolor_i,
@@ -376,18 +379,22 @@ module zb_rop
   );
 
   // ---------------------------------------------------------------------------------------
-  // X5..X11: colour (zb_color), and the resolve on the store's way out (zb_resolve): a read
-  // with tile_resolve_i resolves the beat under the background its cycle's lane 0 carries.
+  // X5..X11: colour (zb_color), and the resolves on the store's way out: a read with
+  // tile_resolve_i puts the beat under the background its cycle's lane 0 carries (zb_resolve),
+  // one with tile_wboit_i makes it from the accumulation beat (zb_resolve_wboit).
   // ---------------------------------------------------------------------------------------
   logic [BEAT*32-1:0] color_lanes;
   if (TILE_OPS) begin : g_resolve
-    logic        resolve_q;
-    logic [31:0] bg_q;
+    logic               resolve_q, wboit_q;
+    logic [31:0]        bg_q;
+    logic [BEAT*32-1:0] color_under;
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         resolve_q <= 1'b0;
+        wboit_q   <= 1'b0;
       end else begin
         resolve_q <= tile_req_i & ~tile_we_i & tile_resolve_i;
+        wboit_q   <= tile_req_i & ~tile_we_i & tile_wboit_i;
       end
     end
     always_ff @(posedge clk_i) begin
@@ -399,12 +406,22 @@ module zb_rop
       .en_i   (resolve_q),
       .bg_i   (bg_q),
       .color_i(color_lanes),
+      .color_o(color_under)
+    );
+    zb_resolve_wboit #(
+      .BEAT    (BEAT),
+      .ACC_BITS(ACC_BITS),
+      .REV_BITS(REV_BITS)
+    ) u_resolve_wboit (
+      .en_i   (wboit_q),
+      .color_i(color_under),
+      .acc_i  (tile_racc_o),
       .color_o(tile_rcolor_o)
     );
   end else begin : g_no_resolve
     assign tile_rcolor_o = color_lanes;
     logic unused_ops;
-    assign unused_ops = ^{tile_copy_i, tile_resolve_i};
+    assign unused_ops = ^{tile_copy_i, tile_resolve_i, tile_wboit_i};
   end
 
   zb_color #(
@@ -605,13 +622,17 @@ module zb_rop
   // The tile operations ride on a tile read (docs/rtl.md "Tile operations"), or a renamed
   // copy on a fast clear of depth alone among the depth banks.
   TileOpOnRead: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (tile_resolve_i || (tile_copy_i && !tile_clear_i)) |-> (tile_req_i && !tile_we_i));
+      (tile_resolve_i || tile_wboit_i || (tile_copy_i && !tile_clear_i)) |->
+      (tile_req_i && !tile_we_i));
+  OneResolve: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      !(tile_resolve_i && tile_wboit_i));
   RenameOnClear: assert property (@(posedge clk_i) disable iff (!rst_ni)
       (tile_copy_i && tile_clear_i) |->
-      (!tile_req_i && !tile_resolve_i && tile_planes_i.depth && !tile_planes_i.peel));
+      (!tile_req_i && !tile_resolve_i && !tile_wboit_i && tile_planes_i.depth &&
+       !tile_planes_i.peel));
   RenamedCopy: cover property (@(posedge clk_i) disable iff (!rst_ni) tile_copy_i && tile_clear_i);
   TileOpsPresent: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      !TILE_OPS |-> !(tile_copy_i || tile_resolve_i));
+      !TILE_OPS |-> !(tile_copy_i || tile_resolve_i || tile_wboit_i));
   // Only the six blend codes are loaded.
   BlendCodeValid: assert property (@(posedge clk_i) disable iff (!rst_ni)
       state_we_i |-> (state_i.blend <= zb_pkg::BlendAccumulate));

@@ -30,6 +30,7 @@ struct Step {
   uint8_t planes = 0;             // a clear's or a load's
   bool copy = false;              // a read's copy to peel; a clear's renamed copy (a swap)
   bool resolve = false, count_clear = false;
+  bool wboit = false;             // a read's resolve of the accumulation
   BeatWords data;                 // a load's beat; a clear's values in lane 0; a resolve's bg
 };
 
@@ -42,8 +43,9 @@ std::string step_text(uint64_t n, const Step& s) {
       return fmt::format("op {}: {}fast clear of {}", n, s.copy ? "renamed copy and " : "", planes);
     case Op::kLoad: return fmt::format("op {}: load of beat {} into {}", n, s.beat, planes);
     case Op::kRead:
-      return fmt::format("op {}: read of beat {}{}{}", n, s.beat, s.copy ? " with copy" : "",
-                         s.resolve ? fmt::format(" resolved under 0x{:08x}", s.data[0][0]) : "");
+      return fmt::format("op {}: read of beat {}{}{}{}", n, s.beat, s.copy ? " with copy" : "",
+                         s.resolve ? fmt::format(" resolved under 0x{:08x}", s.data[0][0]) : "",
+                         s.wboit ? " resolved from the accumulation" : "");
     case Op::kIdle: break;
   }
   return fmt::format("op {}: idle", n);
@@ -61,15 +63,19 @@ class PlaneModel {
   void copy_all() {
     for (int b = 0; b < kBeats; ++b) copy(b);
   }
-  // What a read of `beat` shows, resolved under `bg` when asked.
-  BeatWords read(int beat, bool resolve, uint32_t bg) const {
-    BeatWords w = beats_[size_t(beat)];
-    if (resolve)
-      for (uint32_t& c : w[0]) {
-        const Rgba8 v = unpack_rgba(c), b = unpack_rgba(bg);
-        c = pack_rgba({resolve_under(v.r, b.r, v.a), resolve_under(v.g, b.g, v.a),
-                       resolve_under(v.b, b.b, v.a), resolve_under(v.a, b.a, v.a)});
-      }
+  // What a read of `beat` shows, resolved under `bg` or from the accumulation when asked.
+  BeatWords read(const Step& s) const {
+    BeatWords w = beats_[size_t(s.beat)];
+    const Rgba8 b = unpack_rgba(s.data[0][0]);
+    for (size_t l = 0; l < size_t(kRtlBeat); ++l) {
+      const Rgba8 v = unpack_rgba(w[0][l]);
+      if (s.resolve)
+        w[0][l] = pack_rgba({resolve_under(v.r, b.r, v.a), resolve_under(v.g, b.g, v.a),
+                             resolve_under(v.b, b.b, v.a), resolve_under(v.a, b.a, v.a)});
+      if (s.wboit)
+        w[0][l] = pack_rgba(resolve_wboit(v, w.accum[l].acc, w.accum[l].reveal,
+                                          wboit_reveal_one(kRtlWboit.rev_bits)));
+    }
     return w;
   }
 
@@ -208,7 +214,7 @@ class Stress {
     if (last_.op == Op::kRead || (last_.op != Op::kClear && chance(0.5))) sweep_.push_back(Step{});
     const bool load = chance(0.5);
     const uint8_t planes = uint8_t(kPlanePeel | pick(32));
-    const bool resolve = chance(0.5);
+    const int resolve = pick(3);  // none, under the background, from the accumulation
     for (int b = 0; b < kBeats; ++b) {
       Step s;
       s.op = load ? Op::kLoad : Op::kRead;
@@ -216,7 +222,8 @@ class Stress {
       s.planes = planes;
       s.data = random_beat();
       s.copy = !load;
-      s.resolve = !load && resolve;
+      s.resolve = !load && resolve == 1;
+      s.wboit = !load && resolve == 2;
       s.count_clear = chance(0.002);
       sweep_.push_back(s);
     }
@@ -236,6 +243,7 @@ class Stress {
     s.planes = uint8_t(1 + pick(31));
     s.data = random_beat();
     s.resolve = s.op == Op::kRead && chance(0.3);
+    s.wboit = s.op == Op::kRead && !s.resolve && chance(0.3);
     s.copy = s.op == Op::kRead ? chance(0.1) : s.op == Op::kClear && chance(0.3);
     if (s.op == Op::kClear && s.copy) s.planes = uint8_t((s.planes | kPlaneDepth) & ~kPlanePeel);
     s.count_clear = chance(0.05);
@@ -257,6 +265,7 @@ class Stress {
     sim_.idle_inputs();
     t.tile_copy_i = 0;
     t.tile_resolve_i = 0;
+    t.tile_wboit_i = 0;
     if (s.op != Op::kIdle) {
       put_beat(t, s.data);
       t.tile_planes_i = s.planes;
@@ -266,6 +275,7 @@ class Stress {
       t.tile_we_i = s.op == Op::kLoad;
       t.tile_copy_i = s.copy;
       t.tile_resolve_i = s.resolve;
+      t.tile_wboit_i = s.wboit;
     }
     t.cnt_clear_i = s.count_clear;
     sim_.tick();
@@ -289,7 +299,7 @@ class Stress {
     }
     const bool copied = last_.op == Op::kRead && last_.copy;
     if (copied) model_.copy(last_.beat);
-    if (s.op == Op::kRead) check_read(s, n, model_.read(s.beat, s.resolve, s.data[0][0]));
+    if (s.op == Op::kRead) check_read(s, n, model_.read(s));
     rules_.step(s, copied ? last_.beat : -1);
     if (s.op == Op::kClear && s.copy) model_.copy_all();
     if (s.op == Op::kClear) model_.clear(s);

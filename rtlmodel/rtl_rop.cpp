@@ -87,10 +87,12 @@ struct RtlRop::Impl {
     j.store = plan.run.store;
     j.preload_after = plan.run.preload_after;
     j.copy_after = plan.run.copy_after;
-    j.sweep_after = plan.run.sweep_after;
+    j.sweep_after = plan.run.sweep_reads();
     j.swap_after = plan.run.swap_after;
     j.swap_after_depth = plan.run.swap_after_depth;
-    j.resolve = resolve;
+    j.clear_after = plan.run.clear_after;
+    j.wboit = plan.run.wboit;
+    j.resolve = resolve && !plan.run.wboit;
     j.background = pack_rgba(background);
     j.src = &src;
     j.dst = &dst;
@@ -308,10 +310,9 @@ void RtlRop::finish_frame(std::vector<PassStats>& stats) {
   if (impl_->opt.schedule == TileSchedule::kTile) stats = impl_->frame_stats;
 }
 
-bool RtlRop::on_tile(const FrameOp& op) const {
+bool RtlRop::on_tile(const FrameOp&) const {  // every operation, while passes wait
   const Impl& m = *impl_;
-  if (m.opt.schedule != TileSchedule::kTile || !m.pending() || m.resolve) return false;
-  return runs_on_tile(op.kind);
+  return m.opt.schedule == TileSchedule::kTile && m.pending() && !m.resolve;
 }
 
 // On the resident tiles (on_tile), the operation joins the group: a clear and a copy run there
@@ -325,12 +326,11 @@ void RtlRop::frame_op(const FrameOp& op) {
   if (m.in_pass) fail<std::logic_error>("rtl backend: frame_op inside a pass");
   if (on_tile(op)) {
     if (!m.start_fb) m.start_fb = std::make_unique<Framebuffer>(m.fb);
-    if (op.kind == FrameOpKind::kResolveUnder) {
-      m.resolve = true;
+    m.resolve = resolves(op.kind);
+    if (op.kind == FrameOpKind::kResolveUnder)
       m.background = op.value;
-    } else {
+    else
       m.steps.push_back(TileStates::GroupStep{false, false, RopState{}, op});
-    }
   } else {
     flush();
   }

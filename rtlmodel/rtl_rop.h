@@ -101,10 +101,10 @@ class RtlRop final : public Backend {
   bool pending() const;  // passes wait for flush
   // flush(), then under kTile every pass's counters of the frame into `stats`.
   void finish_frame(std::vector<PassStats>& stats) override;
-  // Under kTile, with passes waiting: clears, copies of depth to peel and the under resolve
-  // run on the resident tiles with them (docs/rtl.md "Tile operations"); the accumulation's
-  // resolve stays on the host (its divide a pixel). Else the passes waiting run first and
-  // the host applies it.
+  // Under kTile, with passes waiting and no resolve yet: clears, copies of depth to peel and
+  // the resolves run on the resident tiles with them (docs/rtl.md "Tile operations"; a resolve
+  // on the store, closing the group). Else the passes waiting run first and the host applies
+  // it.
   void frame_op(const FrameOp& op) override;
   bool on_tile(const FrameOp& op) const;
   // std::logic_error while passes wait (finish_frame or flush first).

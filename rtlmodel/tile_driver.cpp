@@ -66,15 +66,17 @@ class TileRunner {
     if (job_.copy_after) {
       read_all(true);
       reads += beats;
-    } else if (job_.sweep_after && !job_.store) {
+    } else if (job_.sweep_after) {
       read_all(false);
       reads += beats;
     }
-    if (job_.swap_after) {
-      TileIo io;
-      io.clear = kPlaneDepth;
-      io.clear_value[1] = job_.swap_after_depth;
-      clear(io, true);
+    if (job_.swap_after || job_.clear_after.clear) {  // the closing setup cycle
+      TileIo io = job_.clear_after;
+      if (job_.swap_after) {
+        io.clear |= kPlaneDepth;
+        io.clear_value[1] = job_.swap_after_depth;
+      }
+      clear(io, job_.swap_after);
     }
     store();
     r.store_beats = t_.cnt_tile_stores_o;
@@ -346,6 +348,7 @@ void TileRunner::store() {
   t_.tile_req_i = 1;
   t_.tile_we_i = 0;
   t_.tile_resolve_i = job_.resolve;
+  t_.tile_wboit_i = job_.wboit;
   for (int b = 0; b < sweep_.beats(); ++b) {
     t_.tile_addr_i = b;
     if (job_.resolve) {  // the background in the write data's lane 0, the rest unread
@@ -358,12 +361,13 @@ void TileRunner::store() {
     refuses("tile_req_i (a store)");
     const BeatWords w = read_beat(t_);
     sweep_.store(w, planes, *job_.dst, b);
-    if (job_.reread_stores && !job_.resolve) stored_.push_back(w);
+    if (job_.reread_stores && !job_.resolve && !job_.wboit) stored_.push_back(w);
     const uint64_t at = s_.cycle - 1 - out_.run.load_begin;
     out_.go = s_.feed.store(StoreBeat{job_.x0, job_.y0, b, planes, at, &w}) && out_.go;
   }
   t_.tile_req_i = 0;
   t_.tile_resolve_i = 0;
+  t_.tile_wboit_i = 0;
   idle_tile_port();
 }
 

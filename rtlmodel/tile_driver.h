@@ -40,9 +40,11 @@ struct TileJob {
   uint8_t store = 0;                  // planes stored after the last step
   uint8_t preload_after = 0;          // after the last step, before the store: as a step's
   bool copy_after = false;
-  bool sweep_after = false;           // the same (a store is a sweep itself)
+  bool sweep_after = false;           // the same (RunPlan::sweep_reads)
   bool swap_after = false;            // then a cycle trading depth and peel, depth cleared to
-  uint32_t swap_after_depth = 0;      // this
+  uint32_t swap_after_depth = 0;      // this; that cycle also fast-clears these planes
+  TileIo clear_after;                 // (clear_after.clear), with its values
+  bool wboit = false;                 // the store resolves colour from the accumulation
   bool resolve = false;               // the store resolves colour under `background`
   uint32_t background = 0;            // pack_rgba
   const Framebuffer* src = nullptr;   // the planes loaded from here (the group's start)

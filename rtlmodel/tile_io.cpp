@@ -213,7 +213,30 @@ TileStates::RunPlan TileStates::plan_tile(size_t tile, const GroupStep* steps, s
     const GroupStep& st = steps[k];
     if (!st.pass) {
       const FrameOp& op = st.op;
-      if (op.kind == FrameOpKind::kCopyDepthToPeel) {
+      if (op.kind == FrameOpKind::kResolveWboit) {  // on the store: colour and the
+        out.wboit = true;                               // accumulation resident
+        for (const int p : {0, int(kAccumPlane)}) {
+          if (resident >> p & 1) continue;
+          if (t[size_t(p)].cleared) {
+            if (needs_sweep(p)) {
+              if (!copy) sweep = true;
+              read_all();
+            }
+            out.clear_after.clear |= uint8_t(1u << p);
+            if (p == kAccumPlane)
+              out.clear_after.accum_clear = accum_clear_;
+            else
+              out.clear_after.clear_value[size_t(p)] = t[size_t(p)].value;
+            Bank& b = bank[role[size_t(p)]];
+            if (!b.all_fresh) ++b.steps;
+            b.all_fresh = true;
+          } else {
+            preload |= uint8_t(1u << p);
+          }
+          resident |= uint8_t(1u << p);
+        }
+        made |= kPlaneColor;
+      } else if (op.kind == FrameOpKind::kCopyDepthToPeel) {
         if (!(resident & kPlaneDepth) && !t[1].cleared) {  // the frame's depth, for the copy
           preload |= kPlaneDepth;
           resident |= kPlaneDepth;

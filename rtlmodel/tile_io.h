@@ -72,10 +72,11 @@ enum class TileSchedule : uint8_t { kPass, kTile };
 const char* to_string(TileSchedule s);
 // "pass" or "tile"; false for anything else.
 bool parse_schedule(const std::string& name, TileSchedule& out);
-// Whether the tile schedule runs a frame operation on the resident tiles of the passes waiting
-// for it (docs/rtl.md "Tile operations"): all but the resolve of the accumulation, which needs a
-// divider a lane and stays on the host.
-inline bool runs_on_tile(FrameOpKind k) { return k != FrameOpKind::kResolveWboit; }
+// Whether a frame operation ends the tile schedule's group, applied to its stores' colour
+// (docs/rtl.md "Tile operations"): the resolves.
+inline bool resolves(FrameOpKind k) {
+  return k == FrameOpKind::kResolveUnder || k == FrameOpKind::kResolveWboit;
+}
 
 // Beats of a w x h tile: a beat is `beat` neighbours of one row. Loads and stores move the
 // whole tile also where the frame clips it: every word's fast-clear generation must follow
@@ -160,8 +161,8 @@ class TileStates {
     bool pass = false;
     bool touches = false;  // a pass with fragments in the tile
     RopState state;        // a pass's
-    FrameOp op;            // else: a clear or a copy of depth to peel
-  };
+    FrameOp op;            // else: a clear, a copy of depth to peel or (last) a resolve
+  };                       // of the accumulation
   struct RunPlan {
     struct Step {
       size_t step = 0;      // the pass's index in the group's steps
@@ -175,8 +176,13 @@ class TileStates {
     uint8_t preload_after = 0;      // after the last, before the store: as a Step's
     bool copy_after = false, sweep_after = false;
     bool swap_after = false;        // then a setup cycle of its own for the trade,
-    uint32_t swap_after_depth = 0;  // its fast clear of depth to this
+    uint32_t swap_after_depth = 0;  // its fast clear of depth to this,
+    TileIo clear_after;             // and these fast clears (clear_after.clear: planes)
+    bool wboit = false;             // the store resolves colour from the accumulation
     uint8_t store = 0;              // planes stored (made in the tile since their last clear)
+    bool closing_setup() const { return swap_after || clear_after.clear; }
+    // The reads of a sweep after the last pass: a store is one, unless a fast clear comes between.
+    bool sweep_reads() const { return sweep_after && (!store || closing_setup()); }
   };
   RunPlan plan_tile(size_t tile, const GroupStep* steps, size_t n, TileBanks banks = kRtlBanks) const;
   void stored(size_t tile, uint8_t planes);  // the pass stored these planes of the tile

@@ -99,6 +99,7 @@ ZbRtlSc::ZbRtlSc(sc_core::sc_module_name name)
   r.tile_clear_i(tile_clear_);
   r.tile_copy_i(tile_copy_);        // the tile operations: the pass schedule's driver uses none
   r.tile_resolve_i(tile_resolve_);
+  r.tile_wboit_i(tile_wboit_);
   r.tile_planes_i(tile_planes_);
   r.tile_addr_i(tile_addr_);
   r.tile_wcolor_i(tile_wcolor_);

@@ -55,7 +55,7 @@ class ZbRtlSc : public sc_core::sc_module {
   static constexpr int kCovW = coverage_bits(kRtlCoverageSamples);
   static constexpr int kAccumW = accum_word_bits(kRtlWboit);
   Sig<bool> rst_n_, state_we_, frag_valid_, frag_ready_, stall_, tile_req_, tile_we_, tile_clear_,
-      tile_copy_, tile_resolve_,
+      tile_copy_, tile_resolve_, tile_wboit_,
       busy_, cnt_clear_;
   Sig<uint32_t> state_, tile_x0_, tile_y0_, frag_x_, frag_y_, frag_z_, frag_rgba_, frag_cov_,
       tile_planes_, tile_addr_, cnt_frag_in_, cnt_frag_passed_, cnt_frag_killed_,

@@ -161,7 +161,7 @@ void Cosim::frame_op(const FrameOp& op) {
   if (rtl_.on_tile(op)) {  // with the RTL's group: compared at its end
     golden_.frame_op(op);
     rtl_.frame_op(op);
-    if (op.kind == FrameOpKind::kResolveUnder) run_group();  // on its store: the group ends
+    if (resolves(op.kind)) run_group();  // on its store: the group ends
     return;
   }
   run_group();

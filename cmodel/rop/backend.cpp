@@ -38,15 +38,8 @@ void apply_frame_op(Framebuffer& fb, const FrameOp& op) {
       return;
     case FrameOpKind::kResolveWboit: {
       const uint32_t one = wboit_reveal_one(fb.wboit.rev_bits);
-      for (size_t i = 0; i < fb.color.size(); ++i) {
-        const std::array<uint32_t, 4> acc = fb.accum_at(i);
-        const uint32_t r = fb.reveal_at(i);
-        Rgba8& c = fb.color[i];
-        c = {resolve_wboit_channel(acc[0], acc[3], c.r, r, one),
-             resolve_wboit_channel(acc[1], acc[3], c.g, r, one),
-             resolve_wboit_channel(acc[2], acc[3], c.b, r, one),
-             resolve_wboit_channel(acc[3], acc[3], c.a, r, one)};
-      }
+      for (size_t i = 0; i < fb.color.size(); ++i)
+        fb.color[i] = resolve_wboit(fb.color[i], fb.accum_at(i), fb.reveal_at(i), one);
       return;
     }
   }

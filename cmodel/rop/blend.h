@@ -2,6 +2,7 @@
 // blend"), one channel at a time; zb_blend.sv and zb_mul8.sv compute the same.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "fixed.h"
@@ -103,6 +104,16 @@ constexpr uint8_t resolve_wboit_channel(uint32_t acc, uint32_t acc_a, uint8_t c,
                                         uint32_t one) {
   const uint64_t avg = acc_a == 0 ? 0 : (uint64_t{acc} * 255u + acc_a / 2) / acc_a;
   return static_cast<uint8_t>((avg * (one - r) + uint64_t{c} * r + one / 2) / one);
+}
+
+// The resolve of one pixel: each channel of `c` from the accumulation acc (R, G, B, A) and
+// the revealage r of 1.0 = one.
+constexpr Rgba8 resolve_wboit(Rgba8 c, const std::array<uint32_t, 4>& acc, uint32_t r,
+                              uint32_t one) {
+  return {resolve_wboit_channel(acc[0], acc[3], c.r, r, one),
+          resolve_wboit_channel(acc[1], acc[3], c.g, r, one),
+          resolve_wboit_channel(acc[2], acc[3], c.b, r, one),
+          resolve_wboit_channel(acc[3], acc[3], c.a, r, one)};
 }
 
 }  // namespace zb

@@ -231,6 +231,7 @@ module zb_conf_adapter #(
     .tile_clear_i      (1'b0),
     .tile_copy_i       (1'b0),
     .tile_resolve_i    (1'b0),
+    .tile_wboit_i      (1'b0),
     .tile_planes_i     (Planes),
     .tile_addr_i       (tile_addr),
     .tile_wcolor_i     (wcolor_q),

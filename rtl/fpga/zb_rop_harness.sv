@@ -47,7 +47,8 @@ module zb_rop_harness #(
   localparam int unsigned IClear   = IWe + 1;
   localparam int unsigned ICopy    = IClear + 1;
   localparam int unsigned IResolve = ICopy + 1;
-  localparam int unsigned IPlanes  = IResolve + 1;
+  localparam int unsigned IWboit   = IResolve + 1;
+  localparam int unsigned IPlanes  = IWboit + 1;
   localparam int unsigned IAddr    = IPlanes + 5;
   localparam int unsigned IWColor  = IAddr + BeatAW;
   localparam int unsigned IWDepth  = IWColor + BEAT * 32;
@@ -121,6 +122,7 @@ module zb_rop_harness #(
     .tile_clear_i      (in_q[IClear]),
     .tile_copy_i       (in_q[ICopy]),
     .tile_resolve_i    (in_q[IResolve]),
+    .tile_wboit_i      (in_q[IWboit]),
     .tile_planes_i     (in_q[IPlanes +: 5]),
     .tile_addr_i       (in_q[IAddr +: BeatAW]),
     .tile_wcolor_i     (in_q[IWColor +: BEAT * 32]),

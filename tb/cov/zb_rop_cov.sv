@@ -38,6 +38,7 @@ module zb_rop_cov #(
   input logic                        tile_clear_i,
   input logic                        tile_copy_i,
   input logic                        tile_resolve_i,
+  input logic                        tile_wboit_i,
   input zb_pkg::planes_t             tile_planes_i,
   input logic [BeatAW-1:0]           tile_addr_i,
   input logic [WINDOW-1:0]           win_valid,
@@ -315,16 +316,17 @@ module zb_rop_cov #(
   end
 
   // Tile operations (docs/rtl.md "Tile operations"): a copy (depth to peel) or a resolve (under
-  // the background) starting at beat 0, next to a load, a store, a clear (the cycle before) or
+  // the background, or of the accumulation) starting at beat 0, next to a load, a store, a clear (the cycle before) or
   // after fragments since the last load or clear; a pass boundary with the tile resident.
-  logic [1:0] op_start;
+  logic [2:0] op_start;
   logic       was_plain_read_q;
-  assign op_start = {read && tile_resolve_i, read && tile_copy_i} & {2{tile_addr_i == '0}};
+  assign op_start = {read && tile_wboit_i, read && tile_resolve_i, read && tile_copy_i} &
+                    {3{tile_addr_i == '0}};
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) was_plain_read_q <= 1'b0;
-    else was_plain_read_q <= read && !tile_copy_i && !tile_resolve_i;
+    else was_plain_read_q <= read && !tile_copy_i && !tile_resolve_i && !tile_wboit_i;
   end
-  for (genvar o = 0; o < 2; o++) begin : g_tileop
+  for (genvar o = 0; o < 3; o++) begin : g_tileop
     TileOpAfterLoad: cover property (@(posedge clk_i) disable iff (!rst_ni)
         op_start[o] && was_load_q);
     TileOpAfterStore: cover property (@(posedge clk_i) disable iff (!rst_ni)

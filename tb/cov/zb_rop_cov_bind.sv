@@ -30,6 +30,7 @@ bind zb_rop zb_rop_cov #(
   .tile_clear_i (tile_clear_i),
   .tile_copy_i  (tile_copy_i),
   .tile_resolve_i(tile_resolve_i),
+  .tile_wboit_i (tile_wboit_i),
   .tile_planes_i(tile_planes_i),
   .tile_addr_i  (tile_addr_i),
   .win_valid    (u_window.valid_q),

@@ -54,8 +54,8 @@ grep -q 'u_window.*HitExact.*failed' "$tmp/out.txt" || fail "window: no HitExact
 echo "ok: window stopped by $(grep -o 'u_window[^:]*HitExact' "$tmp/out.txt" | head -1)"
 
 # The port stress mode checks the tile operations against its model of the planes on its own,
-# with no golden model: the copy's and the resolve's defects each stop it at a read.
-for d in copy:peel resolve:colour; do
+# with no golden model: the copy's and the resolves' defects each stop it at a read.
+for d in copy:peel resolve:colour resolve-wboit:colour; do
   "$tb" --defect "${d%%:*}" --suite port --seed 1 -q --mismatch-fst "" >"$tmp/out.txt" 2>&1
   rc=$?
   [[ $rc -eq 1 ]] || fail "${d%%:*}: the port suite exit $rc, want 1"

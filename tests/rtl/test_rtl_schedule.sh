@@ -48,17 +48,19 @@ expect_schedule_error "$tb" --schedule diagonal --suite random
 echo "ok: --schedule diagonal refused by zblend render and zblend_tb"
 
 # The tile operations' own defects (zblend_tb_bug): the copy of depth to peel flips a bit, the
-# store's resolve wraps instead of saturating. The tile schedule's store check catches each; the
-# pass schedule never runs them (its frame operations stay on the host).
-for d in copy resolve; do
-  "$bug" --schedule tile --defect "$d" --suite random --seed 2 --iterations 1 -q \
+# store's resolve wraps instead of saturating, its resolve of the accumulation truncates. The
+# tile schedule's store check catches each; the pass schedule never runs them (its frame
+# operations stay on the host). random has no accumulate pass: accum's frames resolve wboit.
+for d in copy resolve resolve-wboit; do
+  suite=$([[ $d == resolve-wboit ]] && echo accum || echo random)
+  "$bug" --schedule tile --defect "$d" --suite "$suite" --seed 2 --iterations 1 -q \
     --mismatch-fst "$tmp/m.fst" >"$tmp/out.txt" 2>&1
   rc=$?
   [[ $rc -eq 1 ]] || fail "defect $d: exit $rc under the tile schedule, want 1"
   want=$([[ $d == copy ]] && echo peel || echo colour)
   grep -qE "^  tile store beat [0-9]+ lane [0-9]+: $want rtl .* golden " "$tmp/out.txt" ||
     fail "defect $d: no 'tile store beat B lane L: $want rtl ... golden ...' line"
-  "$bug" --schedule pass --defect "$d" --suite random --seed 2 --iterations 1 -q >"$tmp/out.txt" 2>&1 ||
+  "$bug" --schedule pass --defect "$d" --suite "$suite" --seed 2 --iterations 1 -q >"$tmp/out.txt" 2>&1 ||
     fail "defect $d: the pass schedule, which never copies or resolves on the tile, failed"
   echo "ok: defect $d caught at the store under the tile schedule"
 done

@@ -325,5 +325,39 @@ TEST(TileStates, RenamedCopiesSweepAsTheGenerationsRunOut) {
   EXPECT_EQ(c.steps[1].io.clear_value[1], depth_max(kRtlDepthBits));
 }
 
+// The resolve of the accumulation runs on the store's reads (docs/rtl.md "Tile operations"): it
+// needs colour (C0) and the accumulation resident. An accumulate pass neither reads nor writes
+// colour, so a cleared colour is fast-cleared in a closing setup cycle and stored, resolved; a
+// stored one is loaded after the last pass. A pass that wrote colour leaves it resident.
+TEST(TileStates, ResolveOfTheAccumulationOnTheStore) {
+  const Rgba8 bg{10, 20, 30, 255};
+  TileStates frame(64, 64, 64, kRtlDepthBits, bg);
+  TileStates::GroupStep accumulate;
+  accumulate.pass = accumulate.touches = true;
+  accumulate.state.depth_write = false;
+  accumulate.state.blend = BlendMode::kAccumulate;
+  TileStates::GroupStep resolve;
+  resolve.op = FrameOp{FrameOpKind::kResolveWboit, Rgba8{}, 0, false};
+  const std::vector<TileStates::GroupStep> steps = {accumulate, resolve};
+  const TileStates::RunPlan cleared = frame.plan_tile(0, steps.data(), steps.size());
+  EXPECT_TRUE(cleared.wboit);
+  EXPECT_TRUE(cleared.closing_setup());
+  EXPECT_EQ(cleared.clear_after.clear, kPlaneColor);
+  EXPECT_EQ(cleared.clear_after.clear_value[0], pack_rgba(bg));
+  EXPECT_EQ(cleared.preload_after, 0);
+  EXPECT_EQ(cleared.store, kPlaneColor | kPlaneAccum);
+  frame.stored(0, kPlaneColor);  // colour words in the frame now: loaded, not cleared
+  const TileStates::RunPlan stored = frame.plan_tile(0, steps.data(), steps.size());
+  EXPECT_EQ(stored.preload_after, kPlaneColor);
+  EXPECT_FALSE(stored.closing_setup());
+  EXPECT_EQ(stored.store, kPlaneColor | kPlaneAccum);
+  TileStates::GroupStep opaque;
+  opaque.pass = opaque.touches = true;
+  const std::vector<TileStates::GroupStep> both = {opaque, accumulate, resolve};
+  const TileStates::RunPlan resident = frame.plan_tile(0, both.data(), both.size());
+  EXPECT_EQ(resident.preload_after, 0);
+  EXPECT_FALSE(resident.closing_setup());
+}
+
 }  // namespace
 }  // namespace zb
