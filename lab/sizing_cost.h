@@ -23,8 +23,8 @@ struct ResidentTraffic {
   uint64_t io_cycles = 0;
   uint64_t beats = 0;
   std::array<uint64_t, kTilePlanes> plane_pixels{};
-  // Pixels of the frame operations left on the host (a copy or resolve with no group waiting,
-  // the accumulation's resolve): a pixel a clock on a tile port. Clears are fast clears.
+  // Pixels of the frame operations left on the host (a copy or resolve with no group waiting):
+  // a pixel a clock on a tile port. Clears are fast clears.
   uint64_t host_op_pixels = 0;
   // The same runs with two tile buffers (two_buffer_group, rtl_timing.h): every cycle of the
   // groups, streaming included, with the port's loads and stores beside the other buffer's work.

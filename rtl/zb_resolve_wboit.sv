@@ -31,6 +31,29 @@ module zb_resolve_wboit #(
   initial bug_wboit = $test$plusargs("zb_bug_resolve_wboit") != 0;
 `endif
 
+  // Restoring division, a quotient bit a step (n / d, d > 0), each at its own widths: Yosys's
+  // `/` builds every step at twice the dividend's width, which the lab configuration's 64
+  // dividers do not afford.
+  function automatic logic [AvgW-1:0] div_acc(logic [AvgW-1:0] n, logic [ACC_BITS-1:0] d);
+    logic [ACC_BITS:0] r;
+    r = '0;
+    for (int i = AvgW - 1; i >= 0; i--) begin
+      r = {r[ACC_BITS-1:0], n[i]};
+      div_acc[i] = r >= {1'b0, d};
+      if (div_acc[i]) r = r - {1'b0, d};
+    end
+  endfunction
+
+  function automatic logic [NumW-1:0] div_one(logic [NumW-1:0] n);
+    logic [REV_BITS:0] r;
+    r = '0;
+    for (int i = NumW - 1; i >= 0; i--) begin
+      r = {r[REV_BITS-1:0], n[i]};
+      div_one[i] = r >= {1'b0, One};
+      if (div_one[i]) r = r - {1'b0, One};
+    end
+  endfunction
+
   function automatic logic [7:0] channel(logic [ACC_BITS-1:0] acc, logic [ACC_BITS-1:0] acc_a,
                                          logic [7:0] c0, logic [REV_BITS-1:0] r, logic trunc);
     logic [ACC_BITS-1:0] half_a;
@@ -40,9 +63,9 @@ module zb_resolve_wboit #(
     half_a   = acc_a >> 1;
     inv_r    = One - r;
     half_one = trunc ? '0 : One >> 1;
-    avg = acc_a == '0 ? '0 : (AvgW'(acc) * AvgW'(255) + AvgW'(half_a)) / AvgW'(acc_a);
+    avg = acc_a == '0 ? '0 : div_acc(AvgW'(acc) * AvgW'(255) + AvgW'(half_a), acc_a);
     num = NumW'(avg) * NumW'(inv_r) + NumW'(c0) * NumW'(r) + NumW'(half_one);
-    channel = 8'(num / NumW'(One));
+    channel = 8'(div_one(num));
   endfunction
 
   logic trunc;

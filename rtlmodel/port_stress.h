@@ -2,8 +2,9 @@
 // fragment, by random sequences of the operations its contract allows (docs/rtl.md "Port
 // timing") in orders the RTL driver never makes: fast clears of any planes to any value next to
 // reads and loads, loads and reads of any beat in any order, stores read twice, copies and
-// resolves (under any background, of any accumulation word), counters cleared at any cycle. Every read beat and the tile
-// counters are checked against a model of the planes a beat at a time.
+// resolves (under any background, of any accumulation word), counters cleared at any cycle.
+// Every read beat and the tile counters are checked against a model of the planes a beat at a
+// time.
 #pragma once
 
 #include <cstdint>

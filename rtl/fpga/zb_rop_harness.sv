@@ -47,8 +47,10 @@ module zb_rop_harness #(
   localparam int unsigned IClear   = IWe + 1;
   localparam int unsigned ICopy    = IClear + 1;
   localparam int unsigned IResolve = ICopy + 1;
+  // tile_wboit_i only with TILE_OPS: without, the chain stays as it was before the input came
+  // (its placement, and so the HX8K's clock by seed, moved by a flop; docs/rtl.md "Synthesis").
   localparam int unsigned IWboit   = IResolve + 1;
-  localparam int unsigned IPlanes  = IWboit + 1;
+  localparam int unsigned IPlanes  = IWboit + (TILE_OPS ? 1 : 0);
   localparam int unsigned IAddr    = IPlanes + 5;
   localparam int unsigned IWColor  = IAddr + BeatAW;
   localparam int unsigned IWDepth  = IWColor + BEAT * 32;
@@ -122,7 +124,7 @@ module zb_rop_harness #(
     .tile_clear_i      (in_q[IClear]),
     .tile_copy_i       (in_q[ICopy]),
     .tile_resolve_i    (in_q[IResolve]),
-    .tile_wboit_i      (in_q[IWboit]),
+    .tile_wboit_i      (TILE_OPS ? in_q[IWboit] : 1'b0),
     .tile_planes_i     (in_q[IPlanes +: 5]),
     .tile_addr_i       (in_q[IAddr +: BeatAW]),
     .tile_wcolor_i     (in_q[IWColor +: BEAT * 32]),
