@@ -208,11 +208,13 @@ class Stress {
 
   // A sweep as the driver makes them: every beat loaded (peel and other planes), or read with a
   // copy (and resolves under changing backgrounds); right after a clear (more often there: a
-  // copy or resolve the cycle after a clear), half the time right after a load, else after an
-  // idle cycle (a load of the beat just read, or of peel after a copy, is not allowed).
+  // copy or resolve the cycle after a clear), half the time right after a load or a read (a
+  // store's: the copy or resolve then starts at the read's next cycle), else after an idle
+  // cycle (a load of the beat just read, or of peel after a copy, is not allowed).
   void plan_sweep() {
-    if (last_.op == Op::kRead || (last_.op != Op::kClear && chance(0.5))) sweep_.push_back(Step{});
     const bool load = chance(0.5);
+    if ((load && last_.op == Op::kRead) || (last_.op != Op::kClear && chance(0.5)))
+      sweep_.push_back(Step{});
     const uint8_t planes = uint8_t(kPlanePeel | pick(32));
     const int resolve = pick(3);  // none, under the background, from the accumulation
     for (int b = 0; b < kBeats; ++b) {
