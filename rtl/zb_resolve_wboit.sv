@@ -2,10 +2,10 @@
 // 4)") applied to a tile read's colour on its way out of the port (docs/rtl.md "Tile
 // operations"): per lane and channel, the weighted average of the accumulation over the opaque
 // colour C0 by the revealage r, with one = 2^REV_BITS - 1:
-//   avg = acc_A == 0 ? 0 : (acc * 255 + acc_A / 2) / acc_A     (alpha: acc = acc_A)
-//   c'  = (avg * (one - r) + C0 * r + one / 2) / one, its low 8 bits
-// at full width, so every input word gives the golden model's bits (acc <= acc_A, which the
-// datapath keeps, is not assumed). Combinational, one view for Verilator and synthesis: the
+//   avg = acc_A == 0 ? 0 : min(255, (acc * 255 + acc_A / 2) / acc_A)   (alpha: acc = acc_A)
+//   c'  = (avg * (one - r) + C0 * r + one / 2) / one
+// for every input word (acc <= acc_A, which the datapath keeps, is not assumed: the min pins
+// the others). Combinational, one view for Verilator and synthesis: the
 // dividers are evaluated only under en_i (a few beats a frame, at the store), not on every
 // cycle the port's read data is.
 module zb_resolve_wboit #(
@@ -20,8 +20,8 @@ module zb_resolve_wboit #(
   output logic [BEAT*32-1:0]   color_o
 );
 
-  localparam int AvgW = ACC_BITS + 8;             // avg <= acc * 255 (acc_A = 1)
-  localparam int NumW = AvgW + REV_BITS + 1;      // avg * (one - r) + C0 * r + one / 2
+  localparam int NumW = ACC_BITS + 8;                      // acc * 255 + acc_A / 2
+  localparam int DivW = ACC_BITS > REV_BITS ? ACC_BITS : REV_BITS;  // both divisors
   localparam logic [REV_BITS-1:0] One = REV_BITS'((1 << REV_BITS) - 1);  // not '1: Yosys 0.23
 
 `ifdef ZB_INJECT_TILEOP_BUG
@@ -31,41 +31,37 @@ module zb_resolve_wboit #(
   initial bug_wboit = $test$plusargs("zb_bug_resolve_wboit") != 0;
 `endif
 
-  // Restoring division, a quotient bit a step (n / d, d > 0), each at its own widths: Yosys's
-  // `/` builds every step at twice the dividend's width, which the lab configuration's 64
-  // dividers do not afford.
-  function automatic logic [AvgW-1:0] div_acc(logic [AvgW-1:0] n, logic [ACC_BITS-1:0] d);
-    logic [ACC_BITS:0] r;
-    r = '0;
-    for (int i = AvgW - 1; i >= 0; i--) begin
-      r = {r[ACC_BITS-1:0], n[i]};
-      div_acc[i] = r >= {1'b0, d};
-      if (div_acc[i]) r = r - {1'b0, d};
+  // Restoring division with 8 quotient bits, n / d for n < d * 256 (the high part n >> 8 is
+  // the first remainder): both divisions are that shape once avg is at most 255. Not `/`,
+  // which Yosys builds at twice the dividend's width on every step.
+  function automatic logic [7:0] div8(logic [DivW+7:0] n, logic [DivW-1:0] d);
+    logic [DivW:0] r;
+    r = {1'b0, n[DivW+7:8]};
+    for (int i = 7; i >= 0; i--) begin
+      r = {r[DivW-1:0], n[i]};
+      div8[i] = r >= {1'b0, d};
+      if (div8[i]) r = r - {1'b0, d};
     end
   endfunction
 
-  function automatic logic [NumW-1:0] div_one(logic [NumW-1:0] n);
-    logic [REV_BITS:0] r;
-    r = '0;
-    for (int i = NumW - 1; i >= 0; i--) begin
-      r = {r[REV_BITS-1:0], n[i]};
-      div_one[i] = r >= {1'b0, One};
-      if (div_one[i]) r = r - {1'b0, One};
-    end
-  endfunction
+  localparam int MixW = REV_BITS + 8;  // avg * (one - r) + C0 * r + one / 2 < 256 * one
 
   function automatic logic [7:0] channel(logic [ACC_BITS-1:0] acc, logic [ACC_BITS-1:0] acc_a,
                                          logic [7:0] c0, logic [REV_BITS-1:0] r, logic trunc);
     logic [ACC_BITS-1:0] half_a;
+    logic [NumW-1:0]     n;
+    logic [MixW-1:0]     mix;
     logic [REV_BITS-1:0] inv_r, half_one;
-    logic [AvgW-1:0]     avg;
-    logic [NumW-1:0]     num;
+    logic [7:0]          avg;
     half_a   = acc_a >> 1;
+    n        = NumW'(acc) * NumW'(255) + NumW'(half_a);
     inv_r    = One - r;
     half_one = trunc ? '0 : One >> 1;
-    avg = acc_a == '0 ? '0 : div_acc(AvgW'(acc) * AvgW'(255) + AvgW'(half_a), acc_a);
-    num = NumW'(avg) * NumW'(inv_r) + NumW'(c0) * NumW'(r) + NumW'(half_one);
-    channel = 8'(div_one(num));
+    if (acc_a == '0)               avg = '0;
+    else if (n[NumW-1:8] >= acc_a) avg = 8'd255;  // the min: only for acc > acc_A
+    else                           avg = div8((DivW+8)'(n), DivW'(acc_a));
+    mix = MixW'(avg) * MixW'(inv_r) + MixW'(c0) * MixW'(r) + MixW'(half_one);
+    channel = div8((DivW+8)'(mix), DivW'(One));
   endfunction
 
   logic trunc;

@@ -97,12 +97,14 @@ constexpr uint32_t wboit_reveal(uint32_t r, uint8_t a) {
 }
 
 // The resolve of one colour channel (frame operation 4): the weighted average
-// avg = (acc * 255 + acc_a / 2) / acc_a (0 when acc_a = 0; the alpha channel's avg is 255)
-// over the opaque colour c by the revealage r of 1.0 = one:
-// (avg * (one - r) + c * r + one / 2) / one.
+// avg = min(255, (acc * 255 + acc_a / 2) / acc_a) (0 when acc_a = 0; the alpha channel's avg
+// is 255) over the opaque colour c by the revealage r of 1.0 = one:
+// (avg * (one - r) + c * r + one / 2) / one. The blend keeps acc <= acc_a, so the min binds
+// only on a word it never makes; it keeps both divisions at 8 quotient bits (docs/datapath.md).
 constexpr uint8_t resolve_wboit_channel(uint32_t acc, uint32_t acc_a, uint8_t c, uint32_t r,
                                         uint32_t one) {
-  const uint64_t avg = acc_a == 0 ? 0 : (uint64_t{acc} * 255u + acc_a / 2) / acc_a;
+  const uint64_t q = acc_a == 0 ? 0 : (uint64_t{acc} * 255u + acc_a / 2) / acc_a;
+  const uint64_t avg = q < 255 ? q : 255;
   return static_cast<uint8_t>((avg * (one - r) + uint64_t{c} * r + one / 2) / one);
 }
 

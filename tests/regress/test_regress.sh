@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The regression runner (scripts/regress.py) on the quick group: local processes and GNU
-# parallel pass and write JUnit XML and the HTML summary; a defective RTL (mutant 1033, caught by
+# parallel pass and write JUnit XML and the HTML summary; a defective RTL (mutant 110, caught by
 # the clears suite's lock-step monitor) fails the run, its test is run again with waves, and the
 # summary's replay command reproduces the failure; parallel --resume-failed runs only what failed;
 # a malformed regression file is refused with exit 2 and where it is wrong.
@@ -34,16 +34,16 @@ grep -q "100.0 % passed" "$tmp/ok/summary.html" || fail "summary.html has no 100
 grep -q "about [0-9]* s left" "$tmp/log.txt" || fail "no progress with the time left"
 echo "ok: run: $n tests, JUnit and HTML"
 
-# A defective RTL (mutant 1033: the colour plane's write-back of lane 7 inverted, so a store
-# rewrites current words as the clear value and leaves fresh ones): the clears suite fails at a wrong write, its waves are written, the
-# replay reproduces it. One seed: the one waves slot would go
-# to whichever failure came first.
+# A defective RTL (mutant 110: bit 0 of the colour plane's write-back address inverted, so a
+# read's write-back lands on the neighbouring beat): the clears suite fails at a wrong write, its
+# waves are written, the replay reproduces it. One seed: the one waves slot would go to
+# whichever failure came first.
 cat >"$tmp/reg1.json" <<'J'
 {"groups": {"g": [
   {"name": "clears", "suite": "clears", "seeds": [1]},
   {"name": "window", "args": ["--suite", "window", "--seed", "1"]}]}}
 J
-"${regress[@]}" run g -j 2 --file "$tmp/reg1.json" --tb "$build/zblend_tb_mut" --tb-args "--mutant 1033" \
+"${regress[@]}" run g -j 2 --file "$tmp/reg1.json" --tb "$build/zblend_tb_mut" --tb-args "--mutant 110" \
   --out "$tmp/bad" --waves 1 >"$tmp/log.txt" 2>&1
 rc=$?
 [[ $rc -eq 1 ]] || fail "the mutant's run exited $rc, want 1"
@@ -69,7 +69,7 @@ cat >"$tmp/reg.json" <<'J'
   {"name": "window", "args": ["--suite", "window", "--seed", "1"]}]}}
 J
 echo ":" >"$tmp/hosts"
-"${regress[@]}" parallel g -j 2 --file "$tmp/reg.json" --tb "$build/zblend_tb_mut" --tb-args "--mutant 1033" \
+"${regress[@]}" parallel g -j 2 --file "$tmp/reg.json" --tb "$build/zblend_tb_mut" --tb-args "--mutant 110" \
   --sshloginfile "$tmp/hosts" --out "$tmp/par" >"$tmp/log.txt" 2>&1 && fail "parallel passed on the mutant"
 junit "$tmp/par/junit.xml" 3 2
 [[ $(grep -c 'regress.py one g' "$tmp/par/joblog") -eq 3 ]] || fail "joblog: want 3 jobs"
