@@ -75,7 +75,6 @@ void CostCounter::begin_frame(int width, int height, int depth_bits, Rgba8 clear
   pass_states_.clear();
   group_steps_.clear();
   group_passes_ = 0;
-  group_resolve_ = false;
   grids_.clear();
   for (const int size : kAnalysisTileSizes) {
     Grid g;
@@ -94,7 +93,7 @@ void CostCounter::begin_frame(int width, int height, int depth_bits, Rgba8 clear
 void CostCounter::begin_pass(const RopState& state) {
   inner_.begin_pass(state);
   state_ = state;
-  if (group_resolve_) end_group();  // its store resolved: closed
+  if (TileStates::closed(group_steps_)) end_group();
   if (group_passes_ == 0)
     for (Grid& g : grids_) g.group_start = g.resident_states;
   group_steps_.push_back(TileStates::GroupStep{true, false, state, FrameOp{}});
@@ -243,7 +242,6 @@ void CostCounter::end_group() {
   }
   group_steps_.clear();
   group_passes_ = 0;
-  group_resolve_ = false;
 }
 
 // A backend that ran its passes only now (the RTL's tile schedule) gave zeros at end_pass: the
@@ -266,10 +264,8 @@ void CostCounter::finish_frame(std::vector<PassStats>& stats) {
 // costs the host a pixel a clock (a clear is a fast clear wherever it is).
 void CostCounter::frame_op(const FrameOp& op) {
   inner_.frame_op(op);
-  if (group_passes_ > 0 && !group_resolve_) {
-    group_resolve_ = resolves(op.kind);
-    if (op.kind != FrameOpKind::kResolveUnder)
-      group_steps_.push_back(TileStates::GroupStep{false, false, RopState{}, op});
+  if (group_passes_ > 0 && !TileStates::closed(group_steps_)) {
+    group_steps_.push_back(TileStates::GroupStep{false, false, RopState{}, op});
   } else {
     end_group();
     if (op.kind != FrameOpKind::kClearColor && op.kind != FrameOpKind::kClearDepth)

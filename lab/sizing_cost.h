@@ -141,7 +141,6 @@ class CostCounter final : public Backend {
   std::vector<RopState> pass_states_;  // the frame's, for finish_frame's counters
   std::vector<TileStates::GroupStep> group_steps_;  // the tile schedule's group
   size_t group_passes_ = 0;
-  bool group_resolve_ = false;
   Backend& inner_;
   int beat_;
   RopState state_;

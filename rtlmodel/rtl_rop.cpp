@@ -36,15 +36,12 @@ struct RtlRop::Impl {
   Framebuffer fb;
   std::vector<Pass> group;          // the passes run together (one pass under kPass)
   // The group's passes and the frame operations run on its resident tiles, in order; the
-  // frame's tile states at its start; whether its store resolves colour (then it is closed:
-  // the next pass begins another group).
+  // frame's tile states at its start (a resolve, last, closes it: TileStates::closed).
   std::vector<TileStates::GroupStep> steps;
   TileStates group_start;
   // The frame at the group's start, kept once an operation joins the group (the host applies
   // it to `fb` at once): the group's loads read it, its stores write `fb`.
   std::unique_ptr<Framebuffer> start_fb;
-  bool resolve = false;
-  Rgba8 background;
   bool ran = false;                 // the group has run (its records stay for reports)
   std::vector<Fragment> frags;      // the group's fragments, pass after pass
   std::vector<uint64_t> accepted;   // accept cycle per fragment
@@ -91,9 +88,8 @@ struct RtlRop::Impl {
     j.swap_after = plan.run.swap_after;
     j.swap_after_depth = plan.run.swap_after_depth;
     j.clear_after = plan.run.clear_after;
-    j.wboit = plan.run.wboit;
-    j.resolve = resolve && !plan.run.wboit;
-    j.background = pack_rgba(background);
+    j.resolve = plan.run.resolve;
+    j.background = pack_rgba(plan.run.background);
     j.src = &src;
     j.dst = &dst;
     j.pass = frags.data();
@@ -251,12 +247,11 @@ void RtlRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_colo
 void RtlRop::begin_pass(const RopState& state) {
   Impl& m = *impl_;
   if (m.fb.width == 0) fail<std::logic_error>("rtl backend: begin_pass before begin_frame");
-  if (m.pending() && m.resolve) m.run_group();  // its store resolved: closed
+  if (m.pending() && TileStates::closed(m.steps)) m.run_group();
   if (m.ran || m.group.empty()) {  // a new group: the last one's records go
     m.group.clear();
     m.steps.clear();
     m.frags.clear();
-    m.resolve = false;
     m.ran = false;
     m.group_start = m.tiles;
     m.start_fb.reset();
@@ -310,9 +305,9 @@ void RtlRop::finish_frame(std::vector<PassStats>& stats) {
   if (impl_->opt.schedule == TileSchedule::kTile) stats = impl_->frame_stats;
 }
 
-bool RtlRop::on_tile(const FrameOp&) const {  // every operation, while passes wait
+bool RtlRop::on_tile() const {  // every operation, while passes wait
   const Impl& m = *impl_;
-  return m.opt.schedule == TileSchedule::kTile && m.pending() && !m.resolve;
+  return m.opt.schedule == TileSchedule::kTile && m.pending() && !TileStates::closed(m.steps);
 }
 
 // On the resident tiles (on_tile), the operation joins the group: a clear and a copy run there
@@ -324,13 +319,9 @@ void RtlRop::frame_op(const FrameOp& op) {
   Impl& m = *impl_;
   if (m.fb.width == 0) fail<std::logic_error>("rtl backend: frame_op before begin_frame");
   if (m.in_pass) fail<std::logic_error>("rtl backend: frame_op inside a pass");
-  if (on_tile(op)) {
+  if (on_tile()) {
     if (!m.start_fb) m.start_fb = std::make_unique<Framebuffer>(m.fb);
-    m.resolve = resolves(op.kind);
-    if (op.kind == FrameOpKind::kResolveUnder)
-      m.background = op.value;
-    else
-      m.steps.push_back(TileStates::GroupStep{false, false, RopState{}, op});
+    m.steps.push_back(TileStates::GroupStep{false, false, RopState{}, op});
   } else {
     flush();
   }

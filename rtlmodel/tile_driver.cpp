@@ -347,11 +347,11 @@ void TileRunner::store() {
   if (!planes) return;
   t_.tile_req_i = 1;
   t_.tile_we_i = 0;
-  t_.tile_resolve_i = job_.resolve;
-  t_.tile_wboit_i = job_.wboit;
+  t_.tile_resolve_i = job_.resolve == StoreResolve::kUnder;
+  t_.tile_wboit_i = job_.resolve == StoreResolve::kWboit;
   for (int b = 0; b < sweep_.beats(); ++b) {
     t_.tile_addr_i = b;
-    if (job_.resolve) {  // the background in the write data's lane 0, the rest unread
+    if (t_.tile_resolve_i) {  // the background in the write data's lane 0, the rest unread
       BeatWords w;
       scramble(w, 0, [this](unsigned n) { return bits(n); });
       w[0][0] = job_.background;
@@ -361,7 +361,7 @@ void TileRunner::store() {
     refuses("tile_req_i (a store)");
     const BeatWords w = read_beat(t_);
     sweep_.store(w, planes, *job_.dst, b);
-    if (job_.reread_stores && !job_.resolve && !job_.wboit) stored_.push_back(w);
+    if (job_.reread_stores && job_.resolve == StoreResolve::kNone) stored_.push_back(w);
     const uint64_t at = s_.cycle - 1 - out_.run.load_begin;
     out_.go = s_.feed.store(StoreBeat{job_.x0, job_.y0, b, planes, at, &w}) && out_.go;
   }

@@ -44,9 +44,8 @@ struct TileJob {
   bool swap_after = false;            // then a cycle trading depth and peel, depth cleared to
   uint32_t swap_after_depth = 0;      // this; that cycle also fast-clears these planes
   TileIo clear_after;                 // (clear_after.clear), with its values
-  bool wboit = false;                 // the store resolves colour from the accumulation
-  bool resolve = false;               // the store resolves colour under `background`
-  uint32_t background = 0;            // pack_rgba
+  StoreResolve resolve = StoreResolve::kNone;  // what the store's reads apply to colour
+  uint32_t background = 0;            // kUnder's, pack_rgba
   const Framebuffer* src = nullptr;   // the planes loaded from here (the group's start)
   Framebuffer* dst = nullptr;         // and stored here (src; the host's frame, the group's
                                       // operations applied; a replay's copy)

@@ -209,12 +209,20 @@ TileStates::RunPlan TileStates::plan_tile(size_t tile, const GroupStep* steps, s
   auto read_all = [&] {
     for (Bank& b : bank) b = Bank{};
   };
+  auto fast_clear = [&](int p) {  // the epoch steps unless every word is at it already
+    Bank& b = bank[role[size_t(p)]];
+    if (!b.all_fresh) ++b.steps;
+    b.all_fresh = true;
+  };
   for (size_t k = 0; k < n; ++k) {
     const GroupStep& st = steps[k];
     if (!st.pass) {
       const FrameOp& op = st.op;
-      if (op.kind == FrameOpKind::kResolveWboit) {  // on the store: colour and the
-        out.wboit = true;                               // accumulation resident
+      if (op.kind == FrameOpKind::kResolveUnder) {  // on the store
+        out.resolve = StoreResolve::kUnder;
+        out.background = op.value;
+      } else if (op.kind == FrameOpKind::kResolveWboit) {  // on the store: colour and the
+        out.resolve = StoreResolve::kWboit;                  // accumulation resident
         for (const int p : {0, int(kAccumPlane)}) {
           if (resident >> p & 1) continue;
           if (t[size_t(p)].cleared) {
@@ -227,9 +235,7 @@ TileStates::RunPlan TileStates::plan_tile(size_t tile, const GroupStep* steps, s
               out.clear_after.accum_clear = accum_clear_;
             else
               out.clear_after.clear_value[size_t(p)] = t[size_t(p)].value;
-            Bank& b = bank[role[size_t(p)]];
-            if (!b.all_fresh) ++b.steps;
-            b.all_fresh = true;
+            fast_clear(p);
           } else {
             preload |= uint8_t(1u << p);
           }
@@ -297,11 +303,7 @@ TileStates::RunPlan TileStates::plan_tile(size_t tile, const GroupStep* steps, s
     copy = sweep = swap = false;
     preload = 0;
     const uint8_t written = planes_written(st.state);
-    each(s.io.clear, [&](int p) {
-      Bank& b = bank[role[size_t(p)]];
-      if (!b.all_fresh) ++b.steps;
-      b.all_fresh = true;
-    });
+    each(s.io.clear, fast_clear);
     each(s.io.load, [&](int p) { bank[role[size_t(p)]] = Bank{}; });
     each(written, [&](int p) { bank[role[size_t(p)]].all_fresh = false; });
     resident |= planes_read(st.state) | written | s.io.clear;

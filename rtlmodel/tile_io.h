@@ -77,6 +77,8 @@ bool parse_schedule(const std::string& name, TileSchedule& out);
 inline bool resolves(FrameOpKind k) {
   return k == FrameOpKind::kResolveUnder || k == FrameOpKind::kResolveWboit;
 }
+// What a store's read applies to colour (zb_rop's tile_resolve_i, tile_wboit_i).
+enum class StoreResolve : uint8_t { kNone, kUnder, kWboit };
 
 // Beats of a w x h tile: a beat is `beat` neighbours of one row. Loads and stores move the
 // whole tile also where the frame clips it: every word's fast-clear generation must follow
@@ -162,7 +164,7 @@ class TileStates {
     bool touches = false;  // a pass with fragments in the tile
     RopState state;        // a pass's
     FrameOp op;            // else: a clear, a copy of depth to peel or (last) a resolve
-  };                       // of the accumulation
+  };
   struct RunPlan {
     struct Step {
       size_t step = 0;      // the pass's index in the group's steps
@@ -178,13 +180,18 @@ class TileStates {
     bool swap_after = false;        // then a setup cycle of its own for the trade,
     uint32_t swap_after_depth = 0;  // its fast clear of depth to this,
     TileIo clear_after;             // and these fast clears (clear_after.clear: planes)
-    bool wboit = false;             // the store resolves colour from the accumulation
+    StoreResolve resolve = StoreResolve::kNone;  // the group's last step, if a resolve
+    Rgba8 background;               // kUnder's
     uint8_t store = 0;              // planes stored (made in the tile since their last clear)
     bool closing_setup() const { return swap_after || clear_after.clear; }
     // The reads of a sweep after the last pass: a store is one, unless a fast clear comes between.
     bool sweep_reads() const { return sweep_after && (!store || closing_setup()); }
   };
   RunPlan plan_tile(size_t tile, const GroupStep* steps, size_t n, TileBanks banks = kRtlBanks) const;
+  // A resolve has closed the group (its stores apply it): the next pass begins another.
+  static bool closed(const std::vector<GroupStep>& steps) {
+    return !steps.empty() && !steps.back().pass && resolves(steps.back().op.kind);
+  }
   void stored(size_t tile, uint8_t planes);  // the pass stored these planes of the tile
 
  private:

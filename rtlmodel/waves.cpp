@@ -29,6 +29,7 @@ constexpr Stage kStages[] = {
     {"u_weight", "M..X8: zb_weight"},      {"u_color", "X5..X11: zb_color"},
     {"u_accum", "X5..X11: zb_accum"},      {"u_counters", "counters: zb_counters"},
     {"u_tile_counters", "tile port counters: zb_counters"},
+    {"g_resolve", "tile port: a store's resolves, under the background or of the accumulation"},
 };
 
 struct Var {

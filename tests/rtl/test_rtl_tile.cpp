@@ -340,7 +340,7 @@ TEST(TileStates, ResolveOfTheAccumulationOnTheStore) {
   resolve.op = FrameOp{FrameOpKind::kResolveWboit, Rgba8{}, 0, false};
   const std::vector<TileStates::GroupStep> steps = {accumulate, resolve};
   const TileStates::RunPlan cleared = frame.plan_tile(0, steps.data(), steps.size());
-  EXPECT_TRUE(cleared.wboit);
+  EXPECT_EQ(cleared.resolve, StoreResolve::kWboit);
   EXPECT_TRUE(cleared.closing_setup());
   EXPECT_EQ(cleared.clear_after.clear, kPlaneColor);
   EXPECT_EQ(cleared.clear_after.clear_value[0], pack_rgba(bg));
@@ -357,6 +357,27 @@ TEST(TileStates, ResolveOfTheAccumulationOnTheStore) {
   const TileStates::RunPlan resident = frame.plan_tile(0, both.data(), both.size());
   EXPECT_EQ(resident.preload_after, 0);
   EXPECT_FALSE(resident.closing_setup());
+}
+
+// The resolve under the background is a step as well: it closes the group and the store
+// applies it; nothing needs to be resident for it but the colour the group made.
+TEST(TileStates, ResolveUnderTheBackgroundClosesTheGroup) {
+  TileStates frame(64, 64, 64, kRtlDepthBits, Rgba8{0, 0, 0, 0});
+  TileStates::GroupStep opaque;
+  opaque.pass = opaque.touches = true;
+  TileStates::GroupStep under;
+  under.op = FrameOp{FrameOpKind::kResolveUnder, Rgba8{1, 2, 3, 4}, 0, false};
+  std::vector<TileStates::GroupStep> steps = {opaque};
+  EXPECT_FALSE(TileStates::closed(steps));
+  EXPECT_EQ(frame.plan_tile(0, steps.data(), steps.size()).resolve, StoreResolve::kNone);
+  steps.push_back(under);
+  EXPECT_TRUE(TileStates::closed(steps));
+  const TileStates::RunPlan run = frame.plan_tile(0, steps.data(), steps.size());
+  EXPECT_EQ(run.resolve, StoreResolve::kUnder);
+  EXPECT_EQ(run.background, (Rgba8{1, 2, 3, 4}));
+  EXPECT_FALSE(run.closing_setup());
+  EXPECT_EQ(run.preload_after, 0);
+  EXPECT_EQ(run.store, kPlaneColor | kPlaneDepth);
 }
 
 }  // namespace
