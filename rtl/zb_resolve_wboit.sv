@@ -5,9 +5,9 @@
 //   avg = acc_A == 0 ? 0 : min(255, (acc * 255 + acc_A / 2) / acc_A)   (alpha: acc = acc_A)
 //   c'  = (avg * (one - r) + C0 * r + one / 2) / one
 // for every input word (acc <= acc_A, which the datapath keeps, is not assumed: the min pins
-// the others). Combinational, one view for Verilator and synthesis: the
-// dividers are evaluated only under en_i (a few beats a frame, at the store), not on every
-// cycle the port's read data is.
+// the others). Combinational, one view for Verilator and synthesis: a divider for avg, a
+// shifted sum for the division by one; evaluated only under en_i (a few beats a frame, at the
+// store), not on every cycle the port's read data is.
 module zb_resolve_wboit #(
   parameter int BEAT     = 8,
   parameter int ACC_BITS = 16,
@@ -21,7 +21,6 @@ module zb_resolve_wboit #(
 );
 
   localparam int NumW = ACC_BITS + 8;                      // acc * 255 + acc_A / 2
-  localparam int DivW = ACC_BITS > REV_BITS ? ACC_BITS : REV_BITS;  // both divisors
   localparam logic [REV_BITS-1:0] One = REV_BITS'((1 << REV_BITS) - 1);  // not '1: Yosys 0.23
 
 `ifdef ZB_INJECT_TILEOP_BUG
@@ -32,13 +31,13 @@ module zb_resolve_wboit #(
 `endif
 
   // Restoring division with 8 quotient bits, n / d for n < d * 256 (the high part n >> 8 is
-  // the first remainder): both divisions are that shape once avg is at most 255. Not `/`,
-  // which Yosys builds at twice the dividend's width on every step.
-  function automatic logic [7:0] div8(logic [DivW+7:0] n, logic [DivW-1:0] d);
-    logic [DivW:0] r;
-    r = {1'b0, n[DivW+7:8]};
+  // the first remainder): avg's, once the min keeps it at most 255. Not `/`, which Yosys builds
+  // at twice the dividend's width on every step.
+  function automatic logic [7:0] div8(logic [NumW-1:0] n, logic [ACC_BITS-1:0] d);
+    logic [ACC_BITS:0] r;
+    r = {1'b0, n[NumW-1:8]};
     for (int i = 7; i >= 0; i--) begin
-      r = {r[DivW-1:0], n[i]};
+      r = {r[ACC_BITS-1:0], n[i]};
       div8[i] = r >= {1'b0, d};
       if (div8[i]) r = r - {1'b0, d};
     end
@@ -50,7 +49,7 @@ module zb_resolve_wboit #(
                                          logic [7:0] c0, logic [REV_BITS-1:0] r, logic trunc);
     logic [ACC_BITS-1:0] half_a;
     logic [NumW-1:0]     n;
-    logic [MixW-1:0]     mix;
+    logic [MixW-1:0]     mix, q;
     logic [REV_BITS-1:0] inv_r, half_one;
     logic [7:0]          avg;
     half_a   = acc_a >> 1;
@@ -59,9 +58,12 @@ module zb_resolve_wboit #(
     half_one = trunc ? '0 : One >> 1;
     if (acc_a == '0)               avg = '0;
     else if (n[NumW-1:8] >= acc_a) avg = 8'd255;  // the min: only for acc > acc_A
-    else                           avg = div8((DivW+8)'(n), DivW'(acc_a));
+    else                           avg = div8(n, acc_a);
     mix = MixW'(avg) * MixW'(inv_r) + MixW'(c0) * MixW'(r) + MixW'(half_one);
-    channel = div8((DivW+8)'(mix), DivW'(One));
+    // mix / one for mix < 256 * one, one = 2^R - 1: (mix + 1 + (mix >> R)) >> R, exact there for
+    // every R of 8..16 (tests/methods/test_wboit.cpp checks every mix).
+    q = mix + MixW'(1) + (mix >> REV_BITS);
+    channel = 8'(q >> REV_BITS);
   endfunction
 
   logic trunc;

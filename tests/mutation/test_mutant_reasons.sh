@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Written reasons (mutation/reasons.json, scripts/mutant_reasons.py): every reason covers at
 # least one mutant of the netlist; a malformed file is refused with exit 2; and a reason that
-# claims a killable mutant (mutant 406, which the first test kills: mutation_caught's) fails the
+# claims a killable mutant (mutant 412, which the first test kills: mutation_caught's) fails the
 # run with exit 1, naming the reason, the mutant and the test.
 set -u
 build=${1:?usage: test_mutant_reasons.sh BUILD_DIR}
@@ -26,16 +26,16 @@ echo "ok: a malformed reasons file is refused: $(tail -1 "$tmp/out.txt")"
 
 python3 - "$build/mutation/mutations.txt" "$tmp/wrong.json" <<'PY'
 import json, re, sys
-first = open(sys.argv[1]).read().splitlines()[405].strip()
-json.dump({"reasons": [{"id": "claims-mutant-406", "kind": "unobservable",
+first = open(sys.argv[1]).read().splitlines()[411].strip()
+json.dump({"reasons": [{"id": "claims-mutant-412", "kind": "unobservable",
                         "match": ["^" + re.escape(first) + "$"], "why": "wrong on purpose"}]},
           open(sys.argv[2], "w"))
 PY
-python3 "$root/scripts/mutate.py" --build "$build" --reasons "$tmp/wrong.json" --mutants 406 \
+python3 "$root/scripts/mutate.py" --build "$build" --reasons "$tmp/wrong.json" --mutants 412 \
   --group quick --no-equiv --no-full -j 1 --out "$tmp/run" >"$tmp/out.txt" 2>&1
 rc=$?
 [[ $rc -eq 1 ]] || fail "a reason contradicted by a kill: exit $rc, want 1"
-grep -qE 'written reasons that a test contradicts .*claims-mutant-406 \(mutant 406, killed by rtl_[a-z_]+\)' "$tmp/out.txt" ||
-  fail "no 'written reasons that a test contradicts ... claims-mutant-406 (mutant 406, killed by ...)' line"
+grep -qE 'written reasons that a test contradicts .*claims-mutant-412 \(mutant 412, killed by rtl_[a-z_]+\)' "$tmp/out.txt" ||
+  fail "no 'written reasons that a test contradicts ... claims-mutant-412 (mutant 412, killed by ...)' line"
 grep -q '^\*\*Wrong reasons\*\*' "$tmp/run/report.md" || fail "report.md does not list the wrong reason"
-echo "ok: a reason a test contradicts fails the run: $(grep -o 'claims-mutant-406 (.*)' "$tmp/out.txt")"
+echo "ok: a reason a test contradicts fails the run: $(grep -o 'claims-mutant-412 (.*)' "$tmp/out.txt")"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The regression runner (scripts/regress.py) on the quick group: local processes and GNU
-# parallel pass and write JUnit XML and the HTML summary; a defective RTL (mutant 110, caught by
+# parallel pass and write JUnit XML and the HTML summary; a defective RTL (mutant 38, caught by
 # the clears suite's lock-step monitor) fails the run, its test is run again with waves, and the
 # summary's replay command reproduces the failure; parallel --resume-failed runs only what failed;
 # a malformed regression file is refused with exit 2 and where it is wrong.
@@ -34,8 +34,8 @@ grep -q "100.0 % passed" "$tmp/ok/summary.html" || fail "summary.html has no 100
 grep -q "about [0-9]* s left" "$tmp/log.txt" || fail "no progress with the time left"
 echo "ok: run: $n tests, JUnit and HTML"
 
-# A defective RTL (mutant 110: bit 0 of the colour plane's write-back address inverted, so a
-# read's write-back lands on the neighbouring beat): the clears suite fails at a wrong write, its
+# A defective RTL (mutant 38: lane 6 of the colour plane never writes back, so a read leaves
+# its fresh words stale where the store should have rewritten them): the clears suite fails at a wrong write, its
 # waves are written, the replay reproduces it. One seed: the one waves slot would go to
 # whichever failure came first.
 cat >"$tmp/reg1.json" <<'J'
@@ -43,7 +43,7 @@ cat >"$tmp/reg1.json" <<'J'
   {"name": "clears", "suite": "clears", "seeds": [1]},
   {"name": "window", "args": ["--suite", "window", "--seed", "1"]}]}}
 J
-"${regress[@]}" run g -j 2 --file "$tmp/reg1.json" --tb "$build/zblend_tb_mut" --tb-args "--mutant 110" \
+"${regress[@]}" run g -j 2 --file "$tmp/reg1.json" --tb "$build/zblend_tb_mut" --tb-args "--mutant 38" \
   --out "$tmp/bad" --waves 1 >"$tmp/log.txt" 2>&1
 rc=$?
 [[ $rc -eq 1 ]] || fail "the mutant's run exited $rc, want 1"
@@ -69,7 +69,7 @@ cat >"$tmp/reg.json" <<'J'
   {"name": "window", "args": ["--suite", "window", "--seed", "1"]}]}}
 J
 echo ":" >"$tmp/hosts"
-"${regress[@]}" parallel g -j 2 --file "$tmp/reg.json" --tb "$build/zblend_tb_mut" --tb-args "--mutant 110" \
+"${regress[@]}" parallel g -j 2 --file "$tmp/reg.json" --tb "$build/zblend_tb_mut" --tb-args "--mutant 38" \
   --sshloginfile "$tmp/hosts" --out "$tmp/par" >"$tmp/log.txt" 2>&1 && fail "parallel passed on the mutant"
 junit "$tmp/par/junit.xml" 3 2
 [[ $(grep -c 'regress.py one g' "$tmp/par/joblog") -eq 3 ]] || fail "joblog: want 3 jobs"

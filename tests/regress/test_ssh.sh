@@ -98,7 +98,7 @@ cat >"$run/g.json" <<'J'
 J
 rc=0
 "${regress[@]}" parallel g -j 1 --file "$run/g.json" --build "$build" --tb "$build/zblend_tb_mut" \
-  --tb-args "--mutant 110" --sshloginfile "$dir/sshloginfile" --out "$run/out-bad" \
+  --tb-args "--mutant 38" --sshloginfile "$dir/sshloginfile" --out "$run/out-bad" \
   >"$run/log.txt" 2>&1 || rc=$?
 [[ $rc -eq 1 ]] || fail "a failing test through ssh: exit $rc, want 1"
 if ! grep -q '^regress: g: 1/2 passed, 1 FAILED' "$run/log.txt" ||
