@@ -251,8 +251,8 @@ module zb_conf_tb #(
   endfunction
 
   // Frame operation "resolve wboit" on one channel (docs/datapath.md "Resolve (frame operation
-  // 4)"), integer division: avg = acc_A == 0 ? 0 : (acc * 255 + acc_A / 2) / acc_A, then
-  // (avg * (one - r) + c * r + one / 2) / one. The alpha channel passes acc = acc_A.
+  // 4)"), integer division: avg = acc_A == 0 ? 0 : min(255, (acc * 255 + acc_A / 2) / acc_A),
+  // then (avg * (one - r) + c * r + one / 2) / one. The alpha channel passes acc = acc_A.
   function automatic logic [7:0] resolve_wboit(input logic [31:0] acc, input logic [31:0] acc_a,
                                                input logic [7:0] c, input logic [15:0] r);
     logic [63:0] avg, one, half, a, rv;
@@ -265,6 +265,7 @@ module zb_conf_tb #(
     half = one / 64'd2;
 `endif
     avg  = a == 64'd0 ? 64'd0 : (64'(acc) * 64'd255 + a / 64'd2) / a;
+    if (avg > 64'd255) avg = 64'd255;
     return 8'((avg * (one - rv) + 64'(c) * rv + half) / one);
   endfunction
 
