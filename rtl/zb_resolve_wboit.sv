@@ -61,7 +61,7 @@ module zb_resolve_wboit #(
     else                           avg = div8(n, acc_a);
     mix = MixW'(avg) * MixW'(inv_r) + MixW'(c0) * MixW'(r) + MixW'(half_one);
     // mix / one for mix < 256 * one, one = 2^R - 1: (mix + 1 + (mix >> R)) >> R, exact there for
-    // every R of 8..16 (tests/methods/test_wboit.cpp checks every mix).
+    // every R of 8..16 (tests/rtl/test_rtl_tile.cpp checks every mix).
     q = mix + MixW'(1) + (mix >> REV_BITS);
     channel = 8'(q >> REV_BITS);
   endfunction

@@ -192,7 +192,28 @@ class Stress {
   BeatWords random_beat() {
     BeatWords w;
     scramble(w, 0, [&](unsigned width) { return bits(width); });
+    for (AccumWord& a : w.accum)
+      if (chance(0.75)) a = near_accum();
     return w;
+  }
+  // An accumulation word of any magnitude. The resolve's divider takes each quotient bit from
+  // a compare of its remainder with acc_A, and its min from acc against acc_A: full-width random
+  // words bring either pair near each other almost never. So acc_A of a random width, and each
+  // channel at most acc_A (as the blend makes them), within 2 of it, or of acc_A's width.
+  AccumWord near_accum() {
+    const uint32_t mask = lanes::kAcc >= 32 ? ~0u : (1u << lanes::kAcc) - 1;
+    AccumWord a;
+    const uint32_t acc_a = bits(1 + unsigned(pick(int(lanes::kAcc))));
+    const unsigned width = 32 - unsigned(__builtin_clz(acc_a | 1));
+    a.acc[3] = acc_a;
+    for (int c = 0; c < 3; ++c) {
+      const int kind = pick(3);
+      a.acc[size_t(c)] = kind == 0   ? uint32_t(uint64_t(acc_a) * bits(8) / 255)
+                         : kind == 1 ? (acc_a + uint32_t(pick(5)) - 2) & mask
+                                     : bits(width);
+    }
+    a.reveal = chance(0.5) ? bits(lanes::kRev) : bits(1 + unsigned(pick(int(lanes::kRev))));
+    return a;
   }
   bool chance(double p) { return std::uniform_real_distribution<double>(0, 1)(rng_) < p; }
   int pick(int n) { return int(rng_() % uint64_t(n)); }

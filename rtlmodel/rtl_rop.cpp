@@ -89,7 +89,7 @@ struct RtlRop::Impl {
     j.swap_after_depth = plan.run.swap_after_depth;
     j.clear_after = plan.run.clear_after;
     j.resolve = plan.run.resolve;
-    j.background = pack_rgba(plan.run.background);
+    if (j.resolve == StoreResolve::kUnder) j.background = pack_rgba(steps.back().op.value);
     j.src = &src;
     j.dst = &dst;
     j.pass = frags.data();

@@ -219,8 +219,7 @@ TileStates::RunPlan TileStates::plan_tile(size_t tile, const GroupStep* steps, s
     if (!st.pass) {
       const FrameOp& op = st.op;
       if (op.kind == FrameOpKind::kResolveUnder) {  // on the store
-        out.resolve = StoreResolve::kUnder;
-        out.background = op.value;
+        out.resolve = StoreResolve::kUnder;  // under the step's op.value
       } else if (op.kind == FrameOpKind::kResolveWboit) {  // on the store: colour and the
         out.resolve = StoreResolve::kWboit;                  // accumulation resident
         for (const int p : {0, int(kAccumPlane)}) {

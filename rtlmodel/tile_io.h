@@ -181,7 +181,6 @@ class TileStates {
     uint32_t swap_after_depth = 0;  // its fast clear of depth to this,
     TileIo clear_after;             // and these fast clears (clear_after.clear: planes)
     StoreResolve resolve = StoreResolve::kNone;  // the group's last step, if a resolve
-    Rgba8 background;               // kUnder's
     uint8_t store = 0;              // planes stored (made in the tile since their last clear)
     bool closing_setup() const { return swap_after || clear_after.clear; }
     // The reads of a sweep after the last pass: a store is one, unless a fast clear comes between.

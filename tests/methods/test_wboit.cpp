@@ -213,17 +213,6 @@ TEST(Wboit, ResolveSaturatesAHostileAverage) {
   EXPECT_EQ(zb::resolve_wboit_channel(199, 200, 0, 0, 255), 254) << "below acc_A: no clamp";
 }
 
-// zb_resolve_wboit divides by one = 2^R - 1 as (x + 1 + (x >> R)) >> R: exact for every x the
-// resolve makes (x < 256 * one) at every R zb_rop allows (REV_BITS 8..16).
-TEST(Wboit, DivisionByOneIsAShiftedSum) {
-  for (uint32_t bits = 8; bits <= 16; ++bits) {
-    const uint64_t one = (uint64_t{1} << bits) - 1;
-    uint64_t wrong = 0;
-    for (uint64_t x = 0; x < 256 * one; ++x) wrong += ((x + 1 + (x >> bits)) >> bits) != x / one;
-    EXPECT_EQ(wrong, 0u) << "REV_BITS " << bits;
-  }
-}
-
 // Alpha 0 adds nothing and keeps the revealage exactly; alpha 255 zeroes it.
 TEST(Wboit, RevealageEnds) {
   for (uint32_t r : {0u, 1u, 128u, 255u, 65535u}) {

@@ -374,10 +374,20 @@ TEST(TileStates, ResolveUnderTheBackgroundClosesTheGroup) {
   EXPECT_TRUE(TileStates::closed(steps));
   const TileStates::RunPlan run = frame.plan_tile(0, steps.data(), steps.size());
   EXPECT_EQ(run.resolve, StoreResolve::kUnder);
-  EXPECT_EQ(run.background, (Rgba8{1, 2, 3, 4}));
   EXPECT_FALSE(run.closing_setup());
   EXPECT_EQ(run.preload_after, 0);
   EXPECT_EQ(run.store, kPlaneColor | kPlaneDepth);
+}
+
+// zb_resolve_wboit divides by one = 2^R - 1 as (x + 1 + (x >> R)) >> R: exact for every x the
+// resolve makes (x < 256 * one) at every R zb_rop allows (REV_BITS 8..16).
+TEST(ZbResolveWboit, DivisionByOneIsAShiftedSum) {
+  for (uint32_t bits = 8; bits <= 16; ++bits) {
+    const uint64_t one = (uint64_t{1} << bits) - 1;
+    uint64_t wrong = 0;
+    for (uint64_t x = 0; x < 256 * one; ++x) wrong += ((x + 1 + (x >> bits)) >> bits) != x / one;
+    EXPECT_EQ(wrong, 0u) << "REV_BITS " << bits;
+  }
 }
 
 }  // namespace
