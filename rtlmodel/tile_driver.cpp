@@ -351,7 +351,7 @@ void TileRunner::store() {
   t_.tile_wboit_i = job_.resolve == StoreResolve::kWboit;
   for (int b = 0; b < sweep_.beats(); ++b) {
     t_.tile_addr_i = b;
-    if (job_.resolve == StoreResolve::kUnder) {  // the background in the write data's lane 0, the rest unread
+    if (job_.resolve == StoreResolve::kUnder) {  // the background in wdata lane 0, the rest unread
       BeatWords w;
       scramble(w, 0, [this](unsigned n) { return bits(n); });
       w[0][0] = job_.background;
