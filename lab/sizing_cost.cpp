@@ -1,6 +1,7 @@
 #include "sizing_cost.h"
 
 #include <algorithm>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -12,6 +13,12 @@ const TileCost& MethodCost::at(int tile) const {
   for (const TileCost& t : tiles)
     if (t.tile == tile) return t;
   throw std::invalid_argument("cost model: no tile size " + std::to_string(tile));
+}
+
+std::vector<int> cost_tile_sizes() {
+  std::vector<int> sizes(std::begin(kAnalysisTileSizes), std::end(kAnalysisTileSizes));
+  if (std::find(sizes.begin(), sizes.end(), kRtlTileW) == sizes.end()) sizes.push_back(kRtlTileW);
+  return sizes;
 }
 
 uint64_t tile_pixel_bits(int depth_bits, int coverage_samples, const WboitFormat& wboit) {
@@ -76,7 +83,7 @@ void CostCounter::begin_frame(int width, int height, int depth_bits, Rgba8 clear
   group_steps_.clear();
   group_passes_ = 0;
   grids_.clear();
-  for (const int size : kAnalysisTileSizes) {
+  for (const int size : cost_tile_sizes()) {
     Grid g;
     g.size = size;
     g.columns = (width + size - 1) / size;

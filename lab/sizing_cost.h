@@ -84,7 +84,7 @@ struct MethodCost {
   WboitFormat wboit;
   uint64_t frame_ops = 0;        // host frame operations (depth peeling): clears, copies, resolve
   uint64_t frame_op_pixels = 0;  // pixels those touch, frame_ops * width * height
-  std::vector<TileCost> tiles;   // one per kAnalysisTileSizes
+  std::vector<TileCost> tiles;   // one per cost_tile_sizes()
 
   const TileCost& at(int tile) const;  // throws std::invalid_argument for another size
   // The figure "cheapest" ranks by: RTL cycles at `tile`, plus a cycle per pixel of every
@@ -98,6 +98,10 @@ struct MethodCost {
   // The tile size of least cycles (then least bytes, then the smaller tile: less memory).
   int best_tile(int depth_bits, int coverage_samples) const;
 };
+
+// The square tile sizes the cost model counts: the analysed ones (kAnalysisTileSizes) and the
+// built model's (kRtlTileW), so a lab run on any build has its own tile's cost.
+std::vector<int> cost_tile_sizes();
 
 // Bits of one pixel in the tile memory: colour 32, depth and peel depth_bits each, coverage
 // coverage_bits(samples), the accumulation word (zb_rop's five planes).
