@@ -10,6 +10,7 @@ void add_render_command(CLI::App& app);
 void add_trace_command(CLI::App& app);
 void add_info_commands(CLI::App& app);  // methods, scenes, plan
 void add_lab_command(CLI::App& app);
+void add_pixel_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
 void add_conformance_command(CLI::App& app);  // conformance export, conformance check
 // `export` and `check` themselves, on `parent`: zblend's conformance, or zblend-conformance.

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   zb::app::add_trace_command(app);
   zb::app::add_info_commands(app);
   zb::app::add_lab_command(app);
+  zb::app::add_pixel_command(app);
   zb::app::add_sweep_command(app);
   zb::app::add_conformance_command(app);
   return zb::cli::run_main(app, argc, argv);

@@ -15,7 +15,7 @@ mkdir -p "$tmp/out" "$tmp/ro"
 chmod 555 "$tmp/ro"
 
 # Help and listings.
-for sub in "" render trace methods scenes plan; do
+for sub in "" render trace methods scenes plan pixel; do
   if "$zblend" $sub --help >"$tmp/help" 2>&1 && grep -q "Usage" "$tmp/help"; then ok; else fail "help $sub"; fi
 done
 if "$zblend" methods | grep -q "three-pass"; then ok; else fail "methods lists three-pass"; fi
@@ -193,6 +193,21 @@ if "$zblend" plan --scene layers-4-a90 --max-delta-e 0.5 -W 80 -H 60 >/dev/null 
   fail "plan wboit: a bound no format meets passed"; else ok; fi
 expect_zblend_error "plan wboit and error" "--max-delta-e: give it alone" plan --scene cad --max-delta-e 1 --max-error 3
 expect_zblend_error "plan wboit range" "--max-delta-e: 101 is out of range" plan --scene cad --max-delta-e 101
+
+# ---- pixel: a pixel's history, its JSON, and bad --at -------------------------------------------
+if "$zblend" pixel -q --scene quads --method depth-peel-2 -W 64 -H 48 --at "32,24;0,0" \
+     --json "$tmp/out/px.json" >"$tmp/px.txt" &&
+   [[ $(grep -c "^pixel (" "$tmp/px.txt") == 2 ]] && grep -q "^pass 0 'peel-1-opaque-depth'" "$tmp/px.txt" &&
+   grep -q "^final  colour" "$tmp/px.txt" && grep -q '"zblend_pixel_history": 1' "$tmp/out/px.json"; then ok
+else fail "pixel: text and JSON: $(head -5 "$tmp/px.txt")"; fi
+if "$zblend" pixel -q --scene quads -W 64 -H 48 --at 32,24 --json - |
+   python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["pixels"][0]["x"] == 32'; then ok
+else fail "pixel --json -: not one JSON document"; fi
+expect_zblend_error "pixel outside" "^zblend: error: --at: pixel \(64, 0\) is outside the 64x48 frame" pixel -W 64 -H 48 --at 64,0 --json "$tmp/out/bad.json"
+expect_zblend_error "pixel not x,y" "^zblend: error: --at: '3' is not X,Y" pixel --at "1,2;3" --json "$tmp/out/bad.json"
+expect_zblend_error "pixel twice" "^zblend: error: --at: pixel \(1, 2\) given twice" pixel --at "1,2;1,2"
+expect_zblend_error "pixel method" "^zblend: error: --method: unknown method 'nope'" pixel --at 1,2 --method nope
+expect_zblend_error "pixel no --at" "^zblend: error: --at is required" pixel --scene quads
 
 # ---- unknown options name the closest one, in every subcommand and zblend_tb ------------------
 expect_zblend_error "render typo" "^zblend render: error: unknown option '--scnee'; did you mean '--scene'\?$" render --scnee cad

@@ -1,0 +1,316 @@
+#include "history_report.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+namespace zb {
+
+using json = nlohmann::json;
+
+namespace {
+
+std::string rgba_text(Rgba8 c) { return fmt::format("({},{},{},{})", c.r, c.g, c.b, c.a); }
+
+std::string depth_text(uint32_t z, int bits) {
+  return fmt::format("{:#0{}x} ({:.6f})", z, (bits + 3) / 4 + 2, double(z) / double(depth_max(bits)));
+}
+
+std::string mask_text(uint8_t m) {
+  std::string s;
+  if (m & kMaskR) s += 'R';
+  if (m & kMaskG) s += 'G';
+  if (m & kMaskB) s += 'B';
+  if (m & kMaskA) s += 'A';
+  return s.empty() ? "none" : s;
+}
+
+std::string value_text(const FrameHistory& f, const PixelValue& v) {
+  std::string s = fmt::format("colour {} depth {} coverage {} peel {}", rgba_text(v.color),
+                              depth_text(v.depth, f.depth_bits), v.coverage, depth_text(v.peel, f.depth_bits));
+  s += fmt::format(" accumulation ({},{},{},{}) revealage {}", v.acc[0], v.acc[1], v.acc[2], v.acc[3], v.reveal);
+  return s;
+}
+
+// The planes that changed, "colour A -> B, depth C -> D".
+std::string changes_text(const FrameHistory& f, const PixelValue& a, const PixelValue& b) {
+  std::string s;
+  auto add = [&](bool changed, const std::string& from, const std::string& to, const char* name) {
+    if (changed) s += fmt::format("{}{} {} -> {}", s.empty() ? "" : ", ", name, from, to);
+  };
+  add(a.color != b.color, rgba_text(a.color), rgba_text(b.color), "colour");
+  add(a.depth != b.depth, depth_text(a.depth, f.depth_bits), depth_text(b.depth, f.depth_bits), "depth");
+  add(a.coverage != b.coverage, std::to_string(a.coverage), std::to_string(b.coverage), "coverage");
+  add(a.peel != b.peel, depth_text(a.peel, f.depth_bits), depth_text(b.peel, f.depth_bits), "peel");
+  auto acc = [](const PixelValue& v) {
+    return fmt::format("({},{},{},{}) revealage {}", v.acc[0], v.acc[1], v.acc[2], v.acc[3], v.reveal);
+  };
+  add(a.acc != b.acc || a.reveal != b.reveal, acc(a), acc(b), "accumulation");
+  return s;
+}
+
+std::string state_text(const RopState& s) {
+  std::string t = s.depth_test ? fmt::format("depth test {}", to_string(s.depth_func)) : "no depth test";
+  t += fmt::format(", depth write {}", s.depth_write && s.depth_test ? "on" : "off");
+  if (s.peel_test) t += ", peel test z > peel";
+  t += fmt::format(", blend {}, colour mask {}", to_string(s.blend), mask_text(s.color_mask));
+  return t;
+}
+
+std::string writes_text(const FrameHistory& f, const PixelWrites& w) {
+  std::string s;
+  auto add = [&](const std::string& part) { s += (s.empty() ? "" : ", ") + part; };
+  if (w.color) add("colour " + rgba_text(w.rgba));
+  if (w.depth) add("depth " + depth_text(w.z, f.depth_bits));
+  if (w.coverage) add(fmt::format("coverage {}", w.cov));
+  if (w.accum)
+    add(fmt::format("accumulation ({},{},{},{}) revealage {}", w.acc[0], w.acc[1], w.acc[2], w.acc[3], w.reveal));
+  return s.empty() ? "nothing written" : "wrote " + s;
+}
+
+std::string fragment_text(const FrameHistory& f, const PassRecord& pass, const HistoryEvent& e,
+                          const Scene* scene) {
+  const FragmentRecord& r = e.fragment;
+  const Fragment& g = r.fragment;
+  const std::string source = pass.edges ? fmt::format("edge {}", g.prim)
+                             : scene    ? triangle_source(*scene, g.prim)
+                                        : fmt::format("triangle {}", g.prim);
+  std::string s = fmt::format("  fragment {} of the pass, {}: z {} colour {}", r.index, source,
+                              depth_text(g.z, f.depth_bits), rgba_text(g.color));
+  if (pass.state.blend == BlendMode::kCoverage)
+    s += fmt::format(" coverage {} of {}", int(g.coverage), f.coverage_samples);
+  s += "\n    ";
+  if (r.depth_tested)
+    s += fmt::format("depth {} {} vs stored {}: {}; ", to_string(pass.state.depth_func),
+                     depth_text(g.z, f.depth_bits), depth_text(e.before.depth, f.depth_bits),
+                     r.depth_passed ? "pass" : "fail");
+  if (r.peel_tested)
+    s += fmt::format("peel z > {}: {}; ", depth_text(e.before.peel, f.depth_bits), r.peel_passed ? "pass" : "fail");
+  if (r.depth_passed && r.peel_passed) {
+    if (pass.state.blend == BlendMode::kAccumulate)
+      s += fmt::format("accumulate onto ({},{},{},{}) revealage {}; ", e.before.acc[0], e.before.acc[1],
+                       e.before.acc[2], e.before.acc[3], e.before.reveal);
+    else if (pass.state.blend == BlendMode::kCoverage)
+      s += fmt::format("coverage blend onto {} depth {} coverage {}; ", rgba_text(e.before.color),
+                       depth_text(e.before.depth, f.depth_bits), e.before.coverage);
+    else
+      s += fmt::format("blend {} of {} onto {} = {}, mask {}; ", to_string(pass.state.blend),
+                       rgba_text(g.color), rgba_text(e.before.color), rgba_text(r.blended),
+                       mask_text(pass.state.color_mask));
+  }
+  return s + writes_text(f, r.writes) + "\n";
+}
+
+std::string op_text(const FrameHistory& f, const HistoryEvent& e) {
+  std::string s = fmt::format("  frame operation {}", to_string(e.op.kind));
+  if (e.op.kind == FrameOpKind::kClearColor || e.op.kind == FrameOpKind::kResolveUnder)
+    s += " " + rgba_text(e.op.value);
+  if (e.op.kind == FrameOpKind::kClearDepth)
+    s += " " + depth_text(std::min(e.op.depth, depth_max(f.depth_bits)), f.depth_bits);
+  if (e.before == e.after) return s + ": the pixel unchanged\n";
+  return s + ": " + changes_text(f, e.before, e.after) + "\n";
+}
+
+json rgba_json(Rgba8 c) { return json::array({c.r, c.g, c.b, c.a}); }
+Rgba8 rgba_from(const json& j) {
+  return Rgba8{j.at(0).get<uint8_t>(), j.at(1).get<uint8_t>(), j.at(2).get<uint8_t>(), j.at(3).get<uint8_t>()};
+}
+
+json value_json(const PixelValue& v) {
+  return {{"color", rgba_json(v.color)}, {"depth", v.depth}, {"coverage", v.coverage},
+          {"peel", v.peel}, {"accum", v.acc}, {"reveal", v.reveal}};
+}
+PixelValue value_from(const json& j) {
+  PixelValue v;
+  v.color = rgba_from(j.at("color"));
+  v.depth = j.at("depth").get<uint32_t>();
+  v.coverage = j.at("coverage").get<uint8_t>();
+  v.peel = j.at("peel").get<uint32_t>();
+  v.acc = j.at("accum").get<std::array<uint32_t, 4>>();
+  v.reveal = j.at("reveal").get<uint32_t>();
+  return v;
+}
+
+json event_json(const HistoryEvent& e) {
+  json j{{"pass", e.pass}, {"before", value_json(e.before)}, {"after", value_json(e.after)}};
+  if (e.kind == HistoryEvent::Kind::kFrameOp) {
+    j["kind"] = "frame_op";
+    j["op"] = {{"kind", to_string(e.op.kind)}, {"code", int(e.op.kind)},
+               {"value", rgba_json(e.op.value)}, {"depth", e.op.depth}};
+    return j;
+  }
+  const FragmentRecord& r = e.fragment;
+  const Fragment& g = r.fragment;
+  const PixelWrites& w = r.writes;
+  j["kind"] = "fragment";
+  j["index"] = r.index;
+  j["fragment"] = {{"prim", g.prim}, {"z", g.z}, {"color", rgba_json(g.color)},
+                   {"coverage", g.coverage}, {"front", g.front}, {"facing", g.facing}};
+  j["depth_test"] = {{"tested", r.depth_tested}, {"passed", r.depth_passed}};
+  j["peel_test"] = {{"tested", r.peel_tested}, {"passed", r.peel_passed}};
+  j["blended"] = rgba_json(r.blended);
+  j["writes"] = {{"depth", w.depth}, {"z", w.z}, {"coverage", w.coverage}, {"cov", w.cov},
+                 {"color", w.color}, {"rgba", rgba_json(w.rgba)}, {"accum", w.accum},
+                 {"acc", w.acc}, {"reveal", w.reveal}};
+  return j;
+}
+
+HistoryEvent event_from(const json& j, int x, int y) {
+  HistoryEvent e;
+  e.pass = j.at("pass").get<size_t>();
+  e.before = value_from(j.at("before"));
+  e.after = value_from(j.at("after"));
+  const std::string kind = j.at("kind").get<std::string>();
+  if (kind == "frame_op") {
+    e.kind = HistoryEvent::Kind::kFrameOp;
+    const json& op = j.at("op");
+    const int code = op.at("code").get<int>();
+    if (code < 0 || code >= int(kFrameOpKinds)) throw std::invalid_argument("frame operation code out of range");
+    e.op.kind = FrameOpKind(code);
+    e.op.value = rgba_from(op.at("value"));
+    e.op.depth = op.at("depth").get<uint32_t>();
+    return e;
+  }
+  if (kind != "fragment") throw std::invalid_argument("event kind '" + kind + "'");
+  FragmentRecord& r = e.fragment;
+  r.index = j.at("index").get<size_t>();
+  const json& g = j.at("fragment");
+  r.fragment.x = uint16_t(x);
+  r.fragment.y = uint16_t(y);
+  r.fragment.prim = g.at("prim").get<uint32_t>();
+  r.fragment.z = g.at("z").get<uint32_t>();
+  r.fragment.color = rgba_from(g.at("color"));
+  r.fragment.coverage = g.at("coverage").get<uint8_t>();
+  r.fragment.front = g.at("front").get<bool>();
+  r.fragment.facing = g.at("facing").get<bool>();
+  r.depth_tested = j.at("depth_test").at("tested").get<bool>();
+  r.depth_passed = j.at("depth_test").at("passed").get<bool>();
+  r.peel_tested = j.at("peel_test").at("tested").get<bool>();
+  r.peel_passed = j.at("peel_test").at("passed").get<bool>();
+  r.blended = rgba_from(j.at("blended"));
+  const json& w = j.at("writes");
+  r.writes.depth = w.at("depth").get<bool>();
+  r.writes.z = w.at("z").get<uint32_t>();
+  r.writes.coverage = w.at("coverage").get<bool>();
+  r.writes.cov = w.at("cov").get<uint8_t>();
+  r.writes.color = w.at("color").get<bool>();
+  r.writes.rgba = rgba_from(w.at("rgba"));
+  r.writes.accum = w.at("accum").get<bool>();
+  r.writes.acc = w.at("acc").get<std::array<uint32_t, 4>>();
+  r.writes.reveal = w.at("reveal").get<uint32_t>();
+  return e;
+}
+
+}  // namespace
+
+std::string history_text(const FrameHistory& f, const PixelHistory& h, const Scene* scene) {
+  std::string s = fmt::format("pixel ({}, {}), {}x{} frame, {}-bit depth\n", h.x, h.y, f.width,
+                              f.height, f.depth_bits);
+  s += "first  " + value_text(f, h.first) + "\n";
+  size_t shown = size_t(-1);
+  for (const HistoryEvent& e : h.events) {
+    if (e.kind == HistoryEvent::Kind::kFrameOp) {
+      s += e.pass < f.passes.size() ? fmt::format("before pass {}:", e.pass) : std::string("after the last pass:");
+      s += op_text(f, e).substr(1);
+      continue;
+    }
+    if (e.pass != shown) {
+      const PassRecord& p = f.passes.at(e.pass);
+      s += fmt::format("pass {} {}: {}\n", e.pass, p.name.empty() ? "" : "'" + p.name + "'", state_text(p.state));
+      shown = e.pass;
+    }
+    s += fragment_text(f, f.passes.at(e.pass), e, scene);
+  }
+  size_t fragments = 0;
+  for (const HistoryEvent& e : h.events) fragments += e.kind == HistoryEvent::Kind::kFragment;
+  if (fragments == 0) s += "  no fragment reached the pixel\n";
+  s += "final  " + value_text(f, h.final_value) + "\n";
+  return s;
+}
+
+std::string triangle_source(const Scene& scene, uint32_t prim) {
+  uint32_t first = 0;
+  for (const Object& o : scene.objects) {
+    const auto n = uint32_t(o.mesh.triangles.size());
+    if (prim - first < n) {
+      const std::string material =
+          o.material < scene.materials.size() ? scene.materials[o.material].name : "?";
+      return fmt::format("object '{}' triangle {}, material '{}'", o.name, prim - first, material);
+    }
+    first += n;
+  }
+  return fmt::format("triangle {}", prim);
+}
+
+std::string history_json(const FrameHistory& f, const std::string& scene_name, const std::string& method,
+                         const Scene* scene) {
+  json passes = json::array();
+  for (const PassRecord& p : f.passes)
+    passes.push_back({{"name", p.name}, {"state_bits", pack_state(p.state)}, {"edges", p.edges},
+                      {"depth_test", p.state.depth_test}, {"depth_func", to_string(p.state.depth_func)},
+                      {"depth_write", p.state.depth_write}, {"blend", to_string(p.state.blend)},
+                      {"color_mask", p.state.color_mask}, {"peel_test", p.state.peel_test}});
+  json pixels = json::array();
+  for (const PixelHistory& h : f.pixels) {
+    json events = json::array();
+    for (const HistoryEvent& e : h.events) {
+      events.push_back(event_json(e));
+      if (scene && e.kind == HistoryEvent::Kind::kFragment && !f.passes.at(e.pass).edges)
+        events.back()["fragment"]["source"] = triangle_source(*scene, e.fragment.fragment.prim);
+    }
+    pixels.push_back({{"x", h.x}, {"y", h.y}, {"first", value_json(h.first)}, {"events", events},
+                      {"final", value_json(h.final_value)}});
+  }
+  const json doc{{"zblend_pixel_history", 1}, {"scene", scene_name}, {"method", method},
+                 {"width", f.width}, {"height", f.height}, {"depth_bits", f.depth_bits},
+                 {"coverage_samples", f.coverage_samples},
+                 {"wboit", {{"acc_bits", f.wboit.acc_bits}, {"rev_bits", f.wboit.rev_bits},
+                            {"weight_bits", f.wboit.weight_bits}}},
+                 {"passes", passes}, {"pixels", pixels}};
+  return doc.dump(1) + "\n";
+}
+
+FrameHistory parse_history_json(const std::string& text) {
+  try {
+    const json doc = json::parse(text);
+    if (!doc.contains("zblend_pixel_history")) throw std::invalid_argument("no 'zblend_pixel_history' key");
+    FrameHistory f;
+    f.width = doc.at("width").get<int>();
+    f.height = doc.at("height").get<int>();
+    f.depth_bits = doc.at("depth_bits").get<int>();
+    f.coverage_samples = doc.at("coverage_samples").get<int>();
+    const json& wb = doc.at("wboit");
+    f.wboit = WboitFormat{wb.at("acc_bits").get<int>(), wb.at("rev_bits").get<int>(), wb.at("weight_bits").get<int>()};
+    if (f.depth_bits < kMinDepthBits || f.depth_bits > kMaxDepthBits || !valid_wboit_format(f.wboit) ||
+        !valid_coverage_samples(f.coverage_samples))
+      throw std::invalid_argument("depth bits, coverage samples or accumulation widths out of range");
+    for (const json& p : doc.at("passes")) {
+      PassRecord r;
+      r.name = p.at("name").get<std::string>();
+      if (!unpack_state(p.at("state_bits").get<uint16_t>(), r.state))
+        throw std::invalid_argument("pass '" + r.name + "': state_bits is not a pass state");
+      r.edges = p.at("edges").get<bool>();
+      f.passes.push_back(r);
+    }
+    for (const json& p : doc.at("pixels")) {
+      PixelHistory h;
+      h.x = p.at("x").get<int>();
+      h.y = p.at("y").get<int>();
+      h.first = value_from(p.at("first"));
+      h.final_value = value_from(p.at("final"));
+      for (const json& e : p.at("events")) {
+        h.events.push_back(event_from(e, h.x, h.y));
+        if (h.events.back().pass + (h.events.back().kind == HistoryEvent::Kind::kFragment) > f.passes.size())
+          throw std::invalid_argument("an event names a pass the document does not have");
+      }
+      f.pixels.push_back(std::move(h));
+    }
+    return f;
+  } catch (const json::exception& e) {
+    throw std::invalid_argument(std::string("not a pixel history: ") + e.what());
+  }
+}
+
+}  // namespace zb

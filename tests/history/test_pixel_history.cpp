@@ -1,0 +1,218 @@
+// A pixel's history (cmodel/history/): a pixel worked by hand, every pixel of small frames under
+// every method replayed to the framebuffer, and the replay catching a history with a write left
+// out, in memory and through its JSON.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "history/history_report.h"
+#include "history/pixel_history.h"
+#include "pipeline/passes.h"
+#include "pipeline/render.h"
+#include "rop/rop.h"
+#include "scene/builtin_scenes.h"
+
+namespace zb {
+namespace {
+
+constexpr int kW = 16, kH = 16;
+
+// A square over the whole 16 x 16 frame at depth z, in two triangles.
+std::vector<ScreenTriangle> square(uint32_t z, Rgba8 color, uint32_t prim) {
+  auto v = [z](int x, int y) {
+    ScreenVertex s;
+    s.x = x * kSubpixelOne;
+    s.y = y * kSubpixelOne;
+    s.z = z;
+    s.z_exact = double(z) / depth_max(kDefaultDepthBits);
+    return s;
+  };
+  ScreenTriangle a, b;
+  a.v[0] = v(0, 0), a.v[1] = v(kW, 0), a.v[2] = v(kW, kH);
+  b.v[0] = v(0, 0), b.v[1] = v(kW, kH), b.v[2] = v(0, kH);
+  a.color = b.color = color;
+  a.transparent = b.transparent = color.a < 255;
+  a.prim = prim;
+  b.prim = prim + 1;
+  return {a, b};
+}
+
+// An opaque blue square behind a red one of alpha 128, on a white background.
+RasterizedScene two_squares() {
+  std::vector<ScreenTriangle> t = square(0x800000, Rgba8{0, 0, 255, 255}, 0);
+  const std::vector<ScreenTriangle> front = square(0x400000, Rgba8{255, 0, 0, 128}, 2);
+  t.insert(t.end(), front.begin(), front.end());
+  return rasterize_triangles(t, Viewport{kW, kH}, Rgba8{255, 255, 255, 255});
+}
+
+// three-pass at pixel (5, 9), by hand from docs/datapath.md: m(x, y) = (t + (t >> 8) + 128) >> 8
+// with t = x * y; alpha blend min(255, m(s, a) + m(d, 255 - a)) per channel.
+//   pass 0 (opaque, replace): blue writes (0,0,255,255) and depth 0x800000.
+//   pass 1 (transparent, no depth write): red passes, 0x400000 < 0x800000:
+//     R m(255,128) + m(0,127) = 128; G 0; B m(0,128) + m(255,127) = 0 + 127;
+//     A m(128,128) + m(255,127) = 64 + 127 = 191.
+//   pass 2 (transparent, depth write): red passes again and writes its depth:
+//     R 128 + m(128,127) = 128 + 64 = 192; G 0; B m(127,127) = 63; A 64 + m(191,127) = 64 + 95.
+TEST(PixelHistory, ThreePassPixelByHand) {
+  const FrameHistory f = record_history(two_squares(), *find_plan("three-pass"), {{5, 9}});
+  ASSERT_EQ(f.pixels.size(), 1u);
+  const PixelHistory& h = f.pixels[0];
+  EXPECT_EQ(h.first.color, (Rgba8{255, 255, 255, 255}));
+  EXPECT_EQ(h.first.depth, depth_max(kDefaultDepthBits));
+  ASSERT_EQ(h.events.size(), 3u);  // one fragment of one square per pass
+
+  const HistoryEvent& opaque = h.events[0];
+  EXPECT_EQ(opaque.pass, 0u);
+  EXPECT_EQ(opaque.fragment.fragment.color, (Rgba8{0, 0, 255, 255}));
+  EXPECT_TRUE(opaque.fragment.depth_passed);
+  EXPECT_TRUE(opaque.fragment.writes.depth);
+  EXPECT_EQ(opaque.fragment.writes.z, 0x800000u);
+  EXPECT_EQ(opaque.after.color, (Rgba8{0, 0, 255, 255}));
+
+  const HistoryEvent& back = h.events[1];
+  EXPECT_EQ(back.pass, 1u);
+  EXPECT_TRUE(back.fragment.depth_tested);
+  EXPECT_TRUE(back.fragment.depth_passed);
+  EXPECT_FALSE(back.fragment.writes.depth);
+  EXPECT_EQ(back.fragment.blended, (Rgba8{128, 0, 127, 191}));
+  EXPECT_EQ(back.after.depth, 0x800000u);
+
+  const HistoryEvent& front = h.events[2];
+  EXPECT_EQ(front.pass, 2u);
+  EXPECT_EQ(front.before.color, (Rgba8{128, 0, 127, 191}));
+  EXPECT_EQ(front.fragment.writes.rgba, (Rgba8{192, 0, 63, 159}));
+  EXPECT_EQ(front.fragment.writes.z, 0x400000u);
+  EXPECT_EQ(h.final_value.color, (Rgba8{192, 0, 63, 159}));
+  EXPECT_EQ(h.final_value.depth, 0x400000u);
+
+  const std::string text = history_text(f, h);
+  EXPECT_NE(text.find("depth less 0x400000"), std::string::npos) << text;
+  EXPECT_NE(text.find("= (128,0,127,191)"), std::string::npos) << text;
+  EXPECT_NE(text.find("final  colour (192,0,63,159)"), std::string::npos) << text;
+}
+
+// A fragment that fails the depth test is in the history with nothing written.
+TEST(PixelHistory, AFailedDepthTestWritesNothing) {
+  const FrameHistory f = record_history(two_squares(), *find_plan("opaque"), {{0, 0}});
+  const PixelHistory& h = f.pixels[0];
+  // opaque draws every triangle with replace: blue at 0x800000, then red nearer, which wins.
+  ASSERT_EQ(h.events.size(), 2u);
+  EXPECT_TRUE(h.events[1].fragment.depth_passed);
+  const FrameHistory g = record_history(two_squares(), *find_plan("opaque"), {{0, 0}});
+  EXPECT_EQ(g.pixels[0].final_value, h.final_value);
+
+  // Drawn the other way round, the far one fails.
+  std::vector<ScreenTriangle> t = square(0x400000, Rgba8{255, 0, 0, 255}, 0);
+  const std::vector<ScreenTriangle> far = square(0x800000, Rgba8{0, 0, 255, 255}, 2);
+  t.insert(t.end(), far.begin(), far.end());
+  const FrameHistory r = record_history(rasterize_triangles(t, Viewport{kW, kH}, Rgba8{}),
+                                        *find_plan("opaque"), {{3, 3}});
+  ASSERT_EQ(r.pixels[0].events.size(), 2u);
+  const FragmentRecord& lost = r.pixels[0].events[1].fragment;
+  EXPECT_FALSE(lost.depth_passed);
+  EXPECT_FALSE(lost.writes.color || lost.writes.depth);
+  EXPECT_NE(history_text(r, r.pixels[0]).find(": fail; nothing written"), std::string::npos);
+}
+
+// Every pixel of a small frame of each built-in scene under every method: each history replays
+// (record_history throws otherwise) and ends at the golden model's own framebuffer, rendered
+// without a recorder.
+TEST(PixelHistory, EveryPixelOfSmallFramesReplaysToTheFramebuffer) {
+  constexpr int w = 24, h = 18;
+  std::vector<std::pair<int, int>> all;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) all.emplace_back(x, y);
+  size_t fragments = 0, ops = 0;
+  for (const char* scene : {"cad", "crossing-quads", "parts"}) {
+    const RasterizedScene rs = rasterize_scene(*builtin_scene(scene), Viewport{w, h});
+    for (const PassPlan& plan : pass_plans()) {
+      const FrameHistory f = record_history(rs, plan, all);
+      GoldenRop golden;
+      const Framebuffer fb = render(rs, plan, golden).framebuffer;
+      for (const PixelHistory& p : f.pixels) {
+        const PixelValue v = PixelValue::of(fb, fb.index(p.x, p.y));
+        ASSERT_EQ(p.final_value, v) << scene << " " << plan.name << " (" << p.x << ", " << p.y << ")";
+        for (const HistoryEvent& e : p.events)
+          (e.kind == HistoryEvent::Kind::kFragment ? fragments : ops) += 1;
+      }
+    }
+  }
+  EXPECT_GT(fragments, 10000u);  // the frames are not empty
+  EXPECT_GT(ops, 1000u);         // depth peeling's frame operations are in them
+}
+
+// The first history with a write in it, of depth-peel-2 on `cad` (frame operations too).
+std::pair<FrameHistory, size_t> peel_history() {
+  const RasterizedScene rs = rasterize_scene(*builtin_scene("cad"), Viewport{32, 24});
+  std::vector<std::pair<int, int>> all;
+  for (int y = 0; y < 24; ++y)
+    for (int x = 0; x < 32; ++x) all.emplace_back(x, y);
+  FrameHistory f = record_history(rs, *find_plan("depth-peel-2"), all);
+  for (size_t p = 0; p < f.pixels.size(); ++p)
+    for (const HistoryEvent& e : f.pixels[p].events)
+      if (e.kind == HistoryEvent::Kind::kFragment && e.fragment.writes.color) return {f, p};
+  return {f, f.pixels.size()};
+}
+
+TEST(PixelHistory, ReplayFailsWithAWriteLeftOut) {
+  auto [f, p] = peel_history();
+  ASSERT_LT(p, f.pixels.size());
+  PixelHistory h = f.pixels[p];
+  EXPECT_FALSE(replay_error(h, f).has_value());
+  size_t k = 0;
+  while (!(h.events[k].kind == HistoryEvent::Kind::kFragment && h.events[k].fragment.writes.color)) ++k;
+
+  PixelHistory dropped = h;  // the write's event left out
+  dropped.events.erase(dropped.events.begin() + std::ptrdiff_t(k));
+  const auto error = replay_error(dropped, f);
+  ASSERT_TRUE(error.has_value());
+  EXPECT_NE(error->find("colour"), std::string::npos) << *error;
+
+  PixelHistory silent = h;  // the event kept, its colour write not
+  silent.events[k].fragment.writes.color = false;
+  EXPECT_TRUE(replay_error(silent, f).has_value());
+
+  PixelHistory wrong_op = h;  // a frame operation that is not the one that ran
+  for (HistoryEvent& e : wrong_op.events)
+    if (e.kind == HistoryEvent::Kind::kFrameOp && e.before != e.after) {
+      e.op.kind = e.op.kind == FrameOpKind::kClearColor ? FrameOpKind::kClearDepth : FrameOpKind::kClearColor;
+      e.op.value = Rgba8{1, 2, 3, 4};
+      break;
+    }
+  EXPECT_TRUE(replay_error(wrong_op, f).has_value());
+}
+
+TEST(PixelHistory, JsonParsesBackAndReplays) {
+  auto [f, p] = peel_history();
+  ASSERT_LT(p, f.pixels.size());
+  const FrameHistory back = parse_history_json(history_json(f, "cad", "depth-peel-2"));
+  ASSERT_EQ(back.pixels.size(), f.pixels.size());
+  ASSERT_EQ(back.passes.size(), f.passes.size());
+  for (const PixelHistory& h : back.pixels) ASSERT_FALSE(replay_error(h, back).has_value());
+  EXPECT_EQ(history_text(back, back.pixels[p]), history_text(f, f.pixels[p]));
+
+  // The same document with one of its events taken out: its replay fails.
+  FrameHistory cut = back;
+  for (size_t k = 0; k < cut.pixels[p].events.size(); ++k)
+    if (cut.pixels[p].events[k].fragment.writes.color) {
+      cut.pixels[p].events.erase(cut.pixels[p].events.begin() + std::ptrdiff_t(k));
+      break;
+    }
+  const FrameHistory cut_back = parse_history_json(history_json(cut, "cad", "depth-peel-2"));
+  EXPECT_TRUE(replay_error(cut_back.pixels[p], cut_back).has_value());
+
+  EXPECT_THROW(parse_history_json("{}"), std::invalid_argument);
+  EXPECT_THROW(parse_history_json("not json"), std::invalid_argument);
+  EXPECT_THROW(parse_history_json(R"({"zblend_pixel_history": 1, "width": 2})"), std::invalid_argument);
+}
+
+TEST(PixelHistory, PixelsOutsideTheFrameOrTwiceAreRefused) {
+  const RasterizedScene rs = two_squares();
+  EXPECT_THROW(record_history(rs, *find_plan("opaque"), {{kW, 0}}), std::invalid_argument);
+  EXPECT_THROW(record_history(rs, *find_plan("opaque"), {{1, 1}, {1, 1}}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace zb
