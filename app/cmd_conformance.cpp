@@ -98,8 +98,14 @@ void run_check(const CLI::App& cmd, const CheckOptions& o) {
                                  "<test>/got.<plane>.hex)", o.out));
   std::vector<cf::TestResult> results;
   try {
-    results = cf::check_suite(o.suite, o.out, only, !o.no_accum, [](const cf::TestResult& r) {
-      fmt::print("{}\n", r.line);
+    // A failed test's line ends with the command that shows its first wrong pixel's history.
+    const std::string program = command_of(*cmd.get_parent());
+    results = cf::check_suite(o.suite, o.out, only, !o.no_accum, [&](const cf::TestResult& r) {
+      if (r.pass || r.skipped || r.first_x < 0)
+        fmt::print("{}\n", r.line);
+      else
+        fmt::print("{}; why: {} pixel {} {} --at {},{}\n", r.line, program, shell_word(o.suite),
+                   r.name, r.first_x, r.first_y);
       std::fflush(stdout);
     });
   } catch (const cf::ConformanceError& e) {
@@ -153,6 +159,7 @@ void add_conformance_commands(CLI::App& parent) {
                 "skip, not pass) and read no got.accum.hex");
   chk->callback([chk, c] { run_check(*chk, *c); });
   add_reach_command(*cmd);
+  add_suite_pixel_command(*cmd);
 }
 
 }  // namespace zb::app

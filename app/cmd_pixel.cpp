@@ -1,16 +1,21 @@
-// zblend pixel: the history of a few pixels of a scene under one method (docs/history.md).
+// zblend pixel and conformance pixel: the history of a few pixels of a scene under one method,
+// of a trace file, or of a conformance test's stream (docs/history.md).
 #include <cstdio>
 #include <memory>
+#include <algorithm>
 #include <regex>
 #include <utility>
 
 #include <fmt/core.h>
 
+#include "check.h"
 #include "cli.h"
 #include "commands.h"
 #include "history/history_report.h"
 #include "io/image.h"
+#include "io/trace.h"
 #include "output_paths.h"
+#include "vectors.h"
 #include "pipeline/passes.h"
 #include "pipeline/render.h"
 #include "scene_options.h"
@@ -26,10 +31,15 @@ constexpr size_t kMaxPixels = 4096;  // the histories are held whole; a frame's 
 struct PixelOptions {
   FrameOptions frame;
   std::string method = "three-pass";
+  std::string trace;
   std::string at;
   std::string json;
   std::string background;
   bool quiet = false;
+};
+
+struct SuitePixelOptions {
+  std::string suite, test, at, json;
 };
 
 // "X,Y[;X,Y...]" inside a width x height frame.
@@ -59,25 +69,77 @@ std::vector<std::pair<int, int>> parse_at(const std::string& text, int width, in
   return out;
 }
 
-void run_pixel(const PixelOptions& o) {
+// The histories on stdout as text (or JSON with --json -), and as JSON to a file.
+void write_histories(const FrameHistory& f, const std::string& title, const std::string& source,
+                     const std::string& method, const std::string& json, const Scene* scene) {
+  if (json == "-") {
+    std::fputs(history_json(f, source, method, scene).c_str(), stdout);
+    return;
+  }
+  std::string text = title + "\n";
+  for (const PixelHistory& h : f.pixels) text += "\n" + history_text(f, h, scene);
+  std::fputs(text.c_str(), stdout);
+  if (!json.empty()) write_or_fail(write_file_atomic(json, history_json(f, source, method, scene)));
+}
+
+void check_json(const std::string& json) {
+  if (!json.empty() && json != "-") check_writable("--json", json, ".json");
+}
+
+void run_trace_pixel(const CLI::App& cmd, const PixelOptions& o) {
+  for (const char* option : {"--scene", "--camera", "--width", "--height", "--depth-bits", "--method",
+                             "--background"})
+    if (cmd.count(option))
+      throw UsageError(fmt::format("--trace, {}: a trace holds its frame and passes; give one of them",
+                                   option));
+  check_json(o.json);
+  Trace trace;
+  try {
+    trace = read_trace(o.trace);
+  } catch (const TraceError& e) {
+    throw UsageError(e.what());
+  }
+  const FrameHistory f = record_history(trace, parse_at(o.at, trace.width, trace.height));
+  write_histories(f, fmt::format("trace {} ({} passes)", o.trace, f.passes.size()), o.trace, "", o.json, nullptr);
+}
+
+void run_pixel(const CLI::App& cmd, const PixelOptions& o) {
+  if (!o.trace.empty()) return run_trace_pixel(cmd, o);
   const Viewport vp = check_viewport(o.frame.width, o.frame.height, o.frame.depth_bits);
   const std::vector<std::pair<int, int>> pixels = parse_at(o.at, vp.width, vp.height);
   const PassPlan* plan = find_plan(o.method);
   if (!plan)
     throw UsageError(fmt::format("--method: unknown method '{}' (see 'zblend methods')", o.method));
-  if (!o.json.empty() && o.json != "-") check_writable("--json", o.json, ".json");
+  check_json(o.json);
   const Scene scene = resolve_scene_with_background(o.frame, o.background);
   if (!o.quiet) print_warnings("zblend pixel", scene);
   const RasterizedScene rs = rasterize_scene(scene, vp);
   const FrameHistory f = record_history(rs, *plan, pixels);  // replay-checked
-  if (o.json == "-") {
-    std::fputs(history_json(f, o.frame.scene, o.method, &scene).c_str(), stdout);
-    return;
+  write_histories(f, fmt::format("scene {}, method {} ({} passes)", o.frame.scene, o.method, f.passes.size()),
+                  o.frame.scene, o.method, o.json, &scene);
+}
+
+void run_suite_pixel(const SuitePixelOptions& o) {
+  std::vector<std::string> names;
+  try {
+    names = conformance::suite_test_names(o.suite);
+  } catch (const std::exception& e) {
+    throw UsageError(e.what());
   }
-  std::string text = fmt::format("scene {}, method {} ({} passes)\n", o.frame.scene, o.method, f.passes.size());
-  for (const PixelHistory& h : f.pixels) text += "\n" + history_text(f, h, &scene);
-  std::fputs(text.c_str(), stdout);
-  if (!o.json.empty()) write_or_fail(write_file_atomic(o.json, history_json(f, o.frame.scene, o.method, &scene)));
+  if (std::find(names.begin(), names.end(), o.test) == names.end())
+    throw UsageError(fmt::format("TEST: '{}' is not a test of {} (its manifest.json names them)",
+                                 o.test, o.suite));
+  check_json(o.json);
+  Trace trace;
+  try {
+    trace = conformance::read_stream(o.suite + "/" + o.test + "/stream.hex");
+  } catch (const TraceError& e) {
+    throw UsageError(e.what());
+  }
+  for (TracePass& p : trace.passes) p.name.clear();  // stream.hex names none: decode numbers them
+  const FrameHistory f = record_history(trace, parse_at(o.at, trace.width, trace.height));
+  write_histories(f, fmt::format("conformance test {} of {} ({} passes)", o.test, o.suite, f.passes.size()),
+                  o.suite + "/" + o.test, "", o.json, nullptr);
 }
 
 }  // namespace
@@ -89,12 +151,26 @@ void add_pixel_command(CLI::App& app) {
                "tests and the blend did with it, the frame operations, its final value");
   add_frame_options(cmd, o->frame);
   cmd->add_option("--method,-m", o->method, "Method (see 'zblend methods')")->capture_default_str();
+  cmd->add_option("--trace", o->trace, "A trace file (.zbt, zblend trace) instead of a scene and method");
   cmd->add_option("--at", o->at, "Pixel X,Y (column, row from the top-left); several: X,Y;X,Y")
       ->required();
   cmd->add_option("--json", o->json, "The histories as JSON to this file (- : to stdout, instead of the text)");
   add_background_option(cmd, o->background);
   cmd->add_flag("--quiet,-q", o->quiet, "No scene warnings");
-  cmd->callback([o] { run_pixel(*o); });
+  cmd->callback([o, cmd] { run_pixel(*cmd, *o); });
+}
+
+void add_suite_pixel_command(CLI::App& parent) {
+  auto o = std::make_shared<SuitePixelOptions>();
+  CLI::App* cmd = parent.add_subcommand(
+      "pixel", "The history of a pixel of a test of SUITE, from the suite alone: every fragment "
+               "of its stream that reached the pixel and what the golden model did with it");
+  cmd->add_option("SUITE", o->suite, "The suite's directory (conformance export)")->required();
+  cmd->add_option("TEST", o->test, "The test's name (its directory in SUITE)")->required();
+  cmd->add_option("--at", o->at, "Pixel X,Y (column, row from the top-left); several: X,Y;X,Y")
+      ->required();
+  cmd->add_option("--json", o->json, "The histories as JSON to this file (- : to stdout, instead of the text)");
+  cmd->callback([o] { run_suite_pixel(*o); });
 }
 
 }  // namespace zb::app

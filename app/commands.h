@@ -16,5 +16,6 @@ void add_conformance_command(CLI::App& app);  // conformance export, conformance
 // `export` and `check` themselves, on `parent`: zblend's conformance, or zblend-conformance.
 void add_conformance_commands(CLI::App& parent);
 void add_reach_command(CLI::App& parent);  // conformance reach
+void add_suite_pixel_command(CLI::App& parent);  // conformance pixel
 
 }  // namespace zb::app

@@ -17,6 +17,15 @@ std::string join(const std::vector<std::string>& items, const char* sep) {
   return out;
 }
 
+std::string shell_word(const std::string& text) {
+  if (!text.empty() && text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                              "0123456789_-+=./,:@%") == std::string::npos)
+    return text;
+  std::string q = "'";
+  for (const char c : text) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
 namespace {
 
 // Optimal string alignment distance: edits, with a swap of neighbours as one.
@@ -86,8 +95,20 @@ std::string parse_error_line(const CLI::App& app, const CLI::ParseError& e) {
   return fmt::format("{}: error: unknown option '{}'; did you mean '{}'?", program, typed, near);
 }
 
+namespace {
+std::string g_invoked_as;  // run_main's argv[0]
+}  // namespace
+
+std::string command_of(const CLI::App& cmd) {
+  std::string words;
+  const CLI::App* a = &cmd;
+  for (; a->get_parent(); a = a->get_parent()) words = " " + a->get_name() + words;
+  return shell_word(g_invoked_as.empty() ? a->get_name() : g_invoked_as) + words;
+}
+
 int run_main(CLI::App& app, int argc, const char* const* argv, const std::function<int()>& run) {
   const std::string name = app.get_name();
+  g_invoked_as = argc > 0 && argv[0] ? argv[0] : "";
   try {
     app.parse(argc, argv);
     return run ? run() : 0;

@@ -42,6 +42,14 @@ int run_main(CLI::App& app, int argc, const char* const* argv,
 // closest valid one: "zblend render: error: unknown option '--scnee'; did you mean '--scene'?".
 std::string parse_error_line(const CLI::App& app, const CLI::ParseError& e);
 
+// `text` as one shell word: as it is when it needs no quoting, else in single quotes (for the
+// commands a program prints for its user to run).
+std::string shell_word(const std::string& text);
+
+// The command line that runs `cmd`, a subcommand, as the user ran the program (run_main's
+// argv[0]): "build/zblend conformance check". For the commands a program prints.
+std::string command_of(const CLI::App& cmd);
+
 // "a, b, c", for error messages that name the valid choices.
 std::string join(const std::vector<std::string>& items, const char* sep = ", ");
 

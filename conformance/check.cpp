@@ -148,6 +148,7 @@ std::string parse_words(const std::string& text, int digits, bool strict, const 
 struct PlaneCheck {
   std::string state = "ok";  // "ok", "missing", "malformed", "N pixels differ"
   std::string first;         // the first problem, "" when ok
+  int x = -1, y = -1;        // its pixel, when a word differs
 };
 
 PlaneCheck check_plane(const ManifestTest& t, Plane plane, const std::vector<std::string>& expect,
@@ -176,9 +177,12 @@ PlaneCheck check_plane(const ManifestTest& t, Plane plane, const std::vector<std
   size_t differ = 0;
   for (size_t i = 0; i < expect.size(); ++i) {
     if (got[i] == expect[i]) continue;
-    if (differ++ == 0)
-      c.first = fmt::format("{} pixel ({}, {}): expected {}, got {}", to_string(plane),
-                            i % size_t(t.width), i / size_t(t.width), expect[i], got[i]);
+    if (differ++ == 0) {
+      c.x = int(i % size_t(t.width));
+      c.y = int(i / size_t(t.width));
+      c.first = fmt::format("{} pixel ({}, {}): expected {}, got {}", to_string(plane), c.x, c.y,
+                            expect[i], got[i]);
+    }
   }
   if (differ) c.state = fmt::format("{} pixel{} differ{}", differ, differ == 1 ? "" : "s", differ == 1 ? "s" : "");
   return c;
@@ -226,7 +230,11 @@ TestResult check_test(const fs::path& suite, const fs::path& out, const Manifest
     }
     const PlaneCheck c =
         check_plane(t, plane, expect, out / t.name / fmt::format("got.{}.hex", to_string(plane)));
-    if (first.empty()) first = c.first;
+    if (first.empty()) {
+      first = c.first;
+      r.first_x = c.x;
+      r.first_y = c.y;
+    }
     states += fmt::format("{}{} {}", p ? ", " : "", to_string(plane), c.state);
   }
   r.pass = first.empty();

@@ -14,6 +14,7 @@ struct TestResult {
   bool skipped = false;  // needs a plane the DUT does not have: neither passed nor failed
   // "pass  NAME", "skip  NAME: why", or "FAIL  NAME: the first problem [each plane's state]"
   std::string line;
+  int first_x = -1, first_y = -1;  // a failed test's first differing pixel, if a word differs
 };
 
 // The names of SUITE's tests, in its order. Throws ConformanceError on a malformed manifest.

@@ -224,15 +224,7 @@ void check_args(const CLI::App& app, Config& c, const Args& a) {
 std::string base_command(const std::vector<std::string>& args) {
   static const std::set<std::string> kDropped = {"--suite", "--seed", "--iterations", "--waves",
                                                  "--mismatch-fst", "--coverage-out", "--replay"};
-  auto quoted = [](const std::string& s) {
-    if (!s.empty() && s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                          "0123456789_-+=./,:@%") == std::string::npos)
-      return s;
-    std::string q = "'";
-    for (char ch : s) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-    return q + "'";
-  };
-  std::string out = quoted(args.at(0));
+  std::string out = cli::shell_word(args.at(0));
   for (size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
     const std::string name = a.substr(0, a.find('='));
@@ -240,7 +232,7 @@ std::string base_command(const std::vector<std::string>& args) {
       if (a.find('=') == std::string::npos) ++i;  // and its value
       continue;
     }
-    out += " " + quoted(a);
+    out += " " + cli::shell_word(a);
   }
   return out;
 }

@@ -74,10 +74,11 @@ std::string fragment_text(const FrameHistory& f, const PassRecord& pass, const H
                           const Scene* scene) {
   const FragmentRecord& r = e.fragment;
   const Fragment& g = r.fragment;
-  const std::string source = pass.edges ? fmt::format("edge {}", g.prim)
-                             : scene    ? triangle_source(*scene, g.prim)
-                                        : fmt::format("triangle {}", g.prim);
-  std::string s = fmt::format("  fragment {} of the pass, {}: z {} colour {}", r.index, source,
+  const std::string source = !f.from_scene ? ""
+                             : pass.edges  ? fmt::format(", edge {}", g.prim)
+                             : scene       ? ", " + triangle_source(*scene, g.prim)
+                                           : fmt::format(", triangle {}", g.prim);
+  std::string s = fmt::format("  fragment {} of the pass{}: z {} colour {}", r.index, source,
                               depth_text(g.z, f.depth_bits), rgba_text(g.color));
   if (pass.state.blend == BlendMode::kCoverage)
     s += fmt::format(" coverage {} of {}", int(g.coverage), f.coverage_samples);
@@ -218,7 +219,7 @@ std::string history_text(const FrameHistory& f, const PixelHistory& h, const Sce
     }
     if (e.pass != shown) {
       const PassRecord& p = f.passes.at(e.pass);
-      s += fmt::format("pass {} {}: {}\n", e.pass, p.name.empty() ? "" : "'" + p.name + "'", state_text(p.state));
+      s += fmt::format("pass {}{}: {}\n", e.pass, p.name.empty() ? "" : " '" + p.name + "'", state_text(p.state));
       shown = e.pass;
     }
     s += fragment_text(f, f.passes.at(e.pass), e, scene);
@@ -264,6 +265,7 @@ std::string history_json(const FrameHistory& f, const std::string& scene_name, c
                       {"final", value_json(h.final_value)}});
   }
   const json doc{{"zblend_pixel_history", 1}, {"scene", scene_name}, {"method", method},
+                 {"from_scene", f.from_scene},
                  {"width", f.width}, {"height", f.height}, {"depth_bits", f.depth_bits},
                  {"coverage_samples", f.coverage_samples},
                  {"wboit", {{"acc_bits", f.wboit.acc_bits}, {"rev_bits", f.wboit.rev_bits},
@@ -281,6 +283,7 @@ FrameHistory parse_history_json(const std::string& text) {
     f.height = doc.at("height").get<int>();
     f.depth_bits = doc.at("depth_bits").get<int>();
     f.coverage_samples = doc.at("coverage_samples").get<int>();
+    f.from_scene = doc.at("from_scene").get<bool>();
     const json& wb = doc.at("wboit");
     f.wboit = WboitFormat{wb.at("acc_bits").get<int>(), wb.at("rev_bits").get<int>(), wb.at("weight_bits").get<int>()};
     if (f.depth_bits < kMinDepthBits || f.depth_bits > kMaxDepthBits || !valid_wboit_format(f.wboit) ||

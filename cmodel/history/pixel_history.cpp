@@ -20,7 +20,12 @@ PixelValue PixelValue::of(const Framebuffer& fb, size_t i) {
 void HistoryRecorder::begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
                                   int coverage_samples, const WboitFormat& wboit) {
   golden_.begin_frame(width, height, depth_bits, clear_color, coverage_samples, wboit);
-  frame_ = FrameHistory{width, height, depth_bits, coverage_samples, wboit, {}, {}};
+  frame_ = FrameHistory{};
+  frame_.width = width;
+  frame_.height = height;
+  frame_.depth_bits = depth_bits;
+  frame_.coverage_samples = coverage_samples;
+  frame_.wboit = wboit;
   slot_.assign(size_t(width) * size_t(height), -1);
   const Framebuffer& fb = golden_.framebuffer();
   for (const auto& [x, y] : asked_) {
@@ -159,6 +164,17 @@ std::optional<std::string> replay_error(const PixelHistory& h, const FrameHistor
   return std::nullopt;
 }
 
+namespace {
+
+FrameHistory checked(FrameHistory f) {
+  for (const PixelHistory& h : f.pixels)
+    if (const auto error = replay_error(h, f))
+      throw std::logic_error("pixel history does not add up: " + *error);
+  return f;
+}
+
+}  // namespace
+
 FrameHistory record_history(const RasterizedScene& rs, const PassPlan& plan,
                             const std::vector<std::pair<int, int>>& pixels) {
   HistoryRecorder recorder(pixels);
@@ -166,12 +182,16 @@ FrameHistory record_history(const RasterizedScene& rs, const PassPlan& plan,
   FrameHistory f = recorder.take();
   if (f.passes.size() != plan.passes.size())
     throw std::logic_error("pixel history: the plan's passes and the recorded ones differ");
+  f.from_scene = true;
   for (size_t p = 0; p < f.passes.size(); ++p)
     f.passes[p].edges = plan.passes[p].filter == PrimFilter::kEdges;
-  for (const PixelHistory& h : f.pixels)
-    if (const auto error = replay_error(h, f))
-      throw std::logic_error("pixel history does not add up: " + *error);
-  return f;
+  return checked(std::move(f));
+}
+
+FrameHistory record_history(const Trace& trace, const std::vector<std::pair<int, int>>& pixels) {
+  HistoryRecorder recorder(pixels);
+  replay_trace(trace, recorder);
+  return checked(recorder.take());
 }
 
 }  // namespace zb

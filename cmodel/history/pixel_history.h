@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/trace.h"
 #include "pipeline/render.h"
 #include "rop/rop.h"
 
@@ -66,6 +67,7 @@ struct PixelHistory {
 
 struct FrameHistory {
   int width = 0, height = 0, depth_bits = 0, coverage_samples = 0;
+  bool from_scene = false;           // Fragment::prim names a scene's triangle or edge
   WboitFormat wboit;
   std::vector<PassRecord> passes;
   std::vector<PixelHistory> pixels;  // in the order asked
@@ -110,6 +112,8 @@ std::optional<std::string> replay_error(const PixelHistory& h, const FrameHistor
 // replay_error (a history that does not add up is std::logic_error: an internal error).
 FrameHistory record_history(const RasterizedScene& rs, const PassPlan& plan,
                             const std::vector<std::pair<int, int>>& pixels);
+// The same for a trace's replay (a .zbt file, a conformance test's stream).
+FrameHistory record_history(const Trace& trace, const std::vector<std::pair<int, int>>& pixels);
 
 
 }  // namespace zb

@@ -203,6 +203,21 @@ else fail "pixel: text and JSON: $(head -5 "$tmp/px.txt")"; fi
 if "$zblend" pixel -q --scene quads -W 64 -H 48 --at 32,24 --json - |
    python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["pixels"][0]["x"] == 32'; then ok
 else fail "pixel --json -: not one JSON document"; fi
+# A trace's pixel: the trace's own frame and passes, the same final value as the scene's.
+"$zblend" trace --scene quads --method depth-peel-2 -W 64 -H 48 --out "$tmp/px.zbt" >/dev/null 2>&1
+if "$zblend" pixel --trace "$tmp/px.zbt" --at 32,24 --json - >"$tmp/pxt.json" &&
+   python3 - "$tmp/out/px.json" "$tmp/pxt.json" <<'PY'; then ok; else fail "pixel --trace: not the scene's history"; fi
+import json, sys
+scene, trace = (json.load(open(p)) for p in sys.argv[1:])
+assert not trace["from_scene"] and scene["from_scene"]
+a, b = scene["pixels"][0], trace["pixels"][0]
+assert (a["x"], a["y"]) == (b["x"], b["y"]) == (32, 24)
+assert a["final"] == b["final"] and len(a["events"]) == len(b["events"]), (a["final"], b["final"])
+PY
+expect_zblend_error "pixel trace and scene" "^zblend: error: --trace, --scene: a trace holds its frame" pixel --trace "$tmp/px.zbt" --scene cad --at 1,1
+expect_zblend_error "pixel trace outside" "^zblend: error: --at: pixel \(64, 0\) is outside the 64x48 frame" pixel --trace "$tmp/px.zbt" --at 64,0
+printf 'not a trace' >"$tmp/bad.zbt"
+expect_zblend_error "pixel bad trace" "^zblend: error: .*bad.zbt" pixel --trace "$tmp/bad.zbt" --at 1,1
 expect_zblend_error "pixel outside" "^zblend: error: --at: pixel \(64, 0\) is outside the 64x48 frame" pixel -W 64 -H 48 --at 64,0 --json "$tmp/out/bad.json"
 expect_zblend_error "pixel not x,y" "^zblend: error: --at: '3' is not X,Y" pixel --at "1,2;3" --json "$tmp/out/bad.json"
 expect_zblend_error "pixel twice" "^zblend: error: --at: pixel \(1, 2\) given twice" pixel --at "1,2;1,2"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # zblend conformance check: passes when the got files are the expect files; fails, naming the
-# test, plane, pixel and both values, when one word of one got file changes; names a missing got
+# test, plane, pixel and both values, and the command that shows the pixel's history, when one
+# word of one got file changes; names a missing got
 # file; --tests checks a slice; a damaged suite or an unknown test is exit 2.
 set -u
 zblend=$(realpath "${1:?usage: test_check.sh PATH/TO/zblend SUITE}")
@@ -39,8 +40,15 @@ want=$(sed -n 100p "$g")
 sed -i '100s/.*/00abcdef/' "$g"
 "$zblend" conformance check "$suite" "$out" >"$tmp/fail.log" 2>"$tmp/fail.err"; rc=$?
 [[ $rc -eq 1 ]] || bad "one changed word: exit $rc, want 1"
-line="FAIL  cad-three-pass: depth pixel (3, 3): expected $want, got 00abcdef [color ok, depth 1 pixel differs, coverage ok, peel ok, accum ok]"
+line="FAIL  cad-three-pass: depth pixel (3, 3): expected $want, got 00abcdef [color ok, depth 1 pixel differs, coverage ok, peel ok, accum ok]; why: $zblend conformance pixel $suite cad-three-pass --at 3,3"
 grep -qxF "$line" "$tmp/fail.log" || bad "no line '$line' in: $(grep FAIL "$tmp/fail.log")"
+# The command the line ends with prints the pixel's history, from the suite alone; its final
+# depth is the expected word.
+why=$(grep -m1 '^FAIL' "$tmp/fail.log" | sed 's/.*; why: //')
+$why >"$tmp/why.txt" 2>&1 && grep -q "^pixel (3, 3), 32x24 frame" "$tmp/why.txt" || bad "'$why': $(head -3 "$tmp/why.txt")"
+$why --json - | python3 -c 'import json, sys; d = json.load(sys.stdin)
+assert d["pixels"][0]["final"]["depth"] == int(sys.argv[1], 16), d["pixels"][0]["final"]' "$want" ||
+  bad "'$why --json -': its final depth is not the expected $want"
 [[ $(grep -c '^FAIL' "$tmp/fail.log") -eq 1 ]] || bad "more than one test failed: $(grep FAIL "$tmp/fail.log")"
 grep -qx "zblend: FAILED: 1 of $tests tests failed" "$tmp/fail.err" || bad "stderr: $(cat "$tmp/fail.err")"
 
@@ -51,7 +59,7 @@ want=$(sed -n 201p "$g")
 changed=${want:0:17}$(printf %x $(( (16#${want:17:1} + 1) % 16 )))
 sed -i "201s/.*/$changed/" "$g"
 "$zblend" conformance check "$suite" "$out" --tests glass-torus-wboit >"$tmp/acc.log" 2>/dev/null; rc=$?
-line="FAIL  glass-torus-wboit: accum pixel (8, 6): expected $want, got $changed [color ok, depth ok, coverage ok, peel ok, accum 1 pixel differs]"
+line="FAIL  glass-torus-wboit: accum pixel (8, 6): expected $want, got $changed [color ok, depth ok, coverage ok, peel ok, accum 1 pixel differs]; why: $zblend conformance pixel $suite glass-torus-wboit --at 8,6"
 [[ $rc -eq 1 ]] && grep -qxF "$line" "$tmp/acc.log" || bad "changed accumulation word: exit $rc: $(cat "$tmp/acc.log"), want '$line'"
 # A DUT without the accumulation plane (--no-accum): the wboit tests are skipped, not passed,
 # and no got.accum.hex is read.
