@@ -18,6 +18,7 @@
 #include "scene_options.h"
 #include "commands.h"
 #include "cosim.h"
+#include "error_maps.h"
 #include "pipeline/frame_render.h"
 #include "io/image.h"
 #include "metrics/memory_use.h"
@@ -75,7 +76,11 @@ struct RenderOptions {
   bool threads_given = false;
   std::vector<std::string> given;   // the RTL-only options given
   bool no_error = false;            // skip the reference and the error columns
+  bool error_map = false;           // --error-map: maps beside --out (under --out-dir: default)
+  bool no_error_map = false;
   bool quiet = false;
+  // Whether the run writes error maps.
+  bool error_maps() const { return !no_error && (error_map || (!out_dir.empty() && !no_error_map)); }
 };
 
 // The options that only the RTL backends use.
@@ -89,7 +94,8 @@ std::vector<OutputPath> outputs(const RenderOptions& o) {
   return {{"--out", o.out, ".png"},
           {"--out-dir", o.out_dir, nullptr},
           {"--stats", o.stats, ".json"},
-          {"--waves", o.cosim.rtl.trace_path, ".fst"}};
+          {"--waves", o.cosim.rtl.trace_path, ".fst"},
+          {"--error-map", o.error_map && !o.out.empty() ? error_map_path(o.out, "", "") : "", ".png"}};
 }
 
 // An option given for a backend the run does not use would do nothing: refused.
@@ -122,6 +128,11 @@ void check_options(const RenderOptions& o, size_t method_count) {
         fmt::format("--backpressure: {} is out of range (0 to below 1)", backpressure));
   if (o.seed < 0) throw UsageError(fmt::format("--seed: {} is out of range (0 or more)", o.seed));
   if (waves && method_count != 1) throw UsageError("--waves: takes one method");
+  if (o.error_map && o.no_error_map) throw UsageError("--error-map, --no-error-map: give one of them");
+  if (o.error_map && o.no_error)
+    throw UsageError("--error-map, --no-error: a map is the error against the reference; drop one of them");
+  if (o.no_error_map && o.out_dir.empty())
+    throw UsageError("--no-error-map: needs --out-dir (only there are maps written unasked)");
   check_outputs(outputs(o));
 }
 
@@ -274,8 +285,8 @@ void run_render(const RenderOptions& o) {
   // reference method; it needs the whole scene's fragments stored. The golden model renders
   // without them, so a golden run that writes only images skips both.
   const bool golden = o.backend == BackendKind::kGolden;
-  const bool need_reference =
-      !o.no_error && (!o.quiet || !o.out_dir.empty() || !o.stats.empty() || reference_method);
+  const bool need_reference = !o.no_error && (!o.quiet || !o.out_dir.empty() || !o.stats.empty() ||
+                                              reference_method || o.error_maps());
   std::optional<RasterizedScene> rs;
   Framebuffer reference;
   double raster_ms = 0, reference_ms = 0;
@@ -345,6 +356,12 @@ void run_render(const RenderOptions& o) {
   if (!o.out_dir.empty())
     write_or_fail(write_file_atomic((fs::path(o.out_dir) / "summary.csv").string(),
                                     summary_csv(runs)));
+  if (o.error_maps()) {
+    const double scale = write_error_maps(runs, reference, lines, scene, vp, o.out, o.out_dir);
+    if (!o.quiet)
+      fmt::print(stderr, "  error maps: 0 to {:g} dE2000 for every method, {}\n", scale,
+                 error_map_path(o.out, o.out_dir, "METHOD"));
+  }
   if (!o.stats.empty()) write_stats(o, scene, vp, rs, drawn, runs);
   if (!o.quiet) print_table(runs);
   if (mismatches) throw VerificationError("RTL and golden model differ (report above)");
@@ -388,6 +405,12 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--no-error", o->no_error,
                 "Skip the exact reference and the error columns (its fragments are stored for "
                 "the whole frame): the golden model's own time and memory");
+  cmd->add_flag("--error-map", o->error_map,
+                "Write each method's error map (per-pixel dE2000 against its fair reference, one "
+                "scale for the run; hidden-line methods: hidden edges drawn, visible ones missing) "
+                "beside --out as FILE-error.png; under --out-dir they are written anyway, as "
+                "METHOD-error.png");
+  cmd->add_flag("--no-error-map", o->no_error_map, "--out-dir: no error maps");
   cmd->add_flag("--quiet,-q", o->quiet, "Print nothing but errors (no warnings either)");
   cmd->callback([o, cmd] {
     o->backend = parse_backend(o->backend_text);

@@ -1,5 +1,6 @@
 #include "color_difference.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -59,6 +60,28 @@ Lab srgb8_to_lab(Rgba8 c) {
     f[i] = lab_f(xyz / kWhite[i]);
   }
   return {116.0 * f[1] - 16.0, 500.0 * (f[0] - f[1]), 200.0 * (f[1] - f[2])};
+}
+
+bool lab_to_srgb8(const Lab& lab, Rgba8& out) {
+  constexpr double d = 6.0 / 29.0;
+  auto finv = [](double t) { return t > d ? t * t * t : 3.0 * d * d * (t - 4.0 / 29.0); };
+  const double fy = (lab.L + 16.0) / 116.0;
+  const double xyz[3] = {kWhite[0] * finv(fy + lab.a / 500.0), kWhite[1] * finv(fy),
+                         kWhite[2] * finv(fy - lab.b / 200.0)};
+  // The inverse of kToXyz (the sRGB primaries' D65 matrix).
+  static constexpr double kToRgb[3][3] = {{3.2404542, -1.5371385, -0.4985314},
+                                          {-0.9692660, 1.8760108, 0.0415560},
+                                          {0.0556434, -0.2040259, 1.0572252}};
+  uint8_t v[3];
+  for (int i = 0; i < 3; ++i) {
+    const double lin = kToRgb[i][0] * xyz[0] + kToRgb[i][1] * xyz[1] + kToRgb[i][2] * xyz[2];
+    if (lin < -1e-4 || lin > 1.0 + 1e-4) return false;
+    const double c = std::clamp(lin, 0.0, 1.0);
+    const double s = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+    v[i] = static_cast<uint8_t>(std::lround(255.0 * s));
+  }
+  out = Rgba8{v[0], v[1], v[2], 255};
+  return true;
 }
 
 double ciede2000(const Lab& x, const Lab& y) {

@@ -21,6 +21,10 @@ double srgb8_to_linear(uint8_t v);
 // primaries, then CIELAB against the D65 white that RGB (1, 1, 1) maps to.
 Lab srgb8_to_lab(Rgba8 c);
 
+// The inverse: CIELAB to 8-bit sRGB (rounded); false when the colour lies outside the sRGB
+// gamut (a channel beyond 0..1 in linear light, by more than rounding).
+bool lab_to_srgb8(const Lab& lab, Rgba8& out);
+
 // CIEDE2000 colour difference (CIE 142-2001) with kL = kC = kH = 1, as written out by Sharma,
 // Wu and Dalal (2005), including their rules for hue angle and mean hue.
 double ciede2000(const Lab& x, const Lab& y);

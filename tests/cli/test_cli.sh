@@ -39,7 +39,9 @@ else
 fi
 if "$zblend" render -q --scene cad --method all --width 80 --height 60 --out-dir "$tmp/run"; then
   methods=$(( $("$zblend" methods | wc -l) - 1 ))  # one image per method (header line off)
-  [[ $(ls "$tmp/run"/*.png | wc -l) -eq $methods ]] && ok || fail "out-dir images: $(ls "$tmp/run")"
+  # An image per method, and an error map per method but the reference.
+  [[ $(ls "$tmp/run"/*.png | grep -vc -- -error.png) -eq $methods &&
+     $(ls "$tmp/run"/*-error.png | wc -l) -eq $((methods - 1)) ]] && ok || fail "out-dir images: $(ls "$tmp/run")"
   [[ $(head -1 "$tmp/run/summary.csv") == method,passes,fragments,* ]] && ok || fail "summary header"
   grep -q '^reference,.*,0.0000,inf,0,' "$tmp/run/summary.csv" && ok || fail "reference row has no error"
 else
@@ -175,6 +177,24 @@ expect_zblend_error "threads with waves" "--waves: one waveform needs one RTL mo
 [[ ! -e "$tmp/out/w.fst" && ! -e "$tmp/out/a.png" ]] && ok || fail "threads with waves: nothing written"
 expect_error "tb iterations 0" "--iterations: 0 is out of range" "$tb" --suite random --iterations 0
 expect_error "tb fragments 0" "--fragments: 0 is out of range" "$tb" --suite random --iterations 1 --fragments 0
+
+# ---- error maps: by default under --out-dir, on request beside --out ----------------------------
+if "$zblend" render -q --scene quads --method three-pass,hidden-line,reference -W 64 -H 48 --out-dir "$tmp/out/em" &&
+   [[ -s $tmp/out/em/three-pass-error.png && -s $tmp/out/em/hidden-line-error.png && ! -e $tmp/out/em/reference-error.png ]]
+then ok; else fail "render --out-dir: error maps: $(ls "$tmp/out/em" 2>&1)"; fi
+"$zblend" render -q --scene quads --method three-pass -W 64 -H 48 --out-dir "$tmp/out/nem" --no-error-map &&
+  ! ls "$tmp/out/nem" | grep -q -- -error.png && ok || fail "--no-error-map: $(ls "$tmp/out/nem")"
+"$zblend" render -q --scene quads --method wboit -W 64 -H 48 --out "$tmp/out/w.png" --error-map &&
+  [[ -s $tmp/out/w-error.png ]] && ok || fail "--error-map beside --out: $(ls "$tmp/out")"
+python3 - "$tmp/out/w-error.png" <<'PY' && ok || fail "the error map is not the frame above a legend"
+import struct, sys
+w, h = struct.unpack(">II", open(sys.argv[1], "rb").read()[16:24])
+assert w == 200 and h == 48 + 30, (w, h)  # at least the legend's width; a 30-pixel strip below
+PY
+rm -f "$tmp/out/w.png" "$tmp/out/w-error.png"
+expect_zblend_error "error map and no error" "--error-map, --no-error: a map is the error" render --error-map --no-error --out "$tmp/out/a.png"
+expect_zblend_error "error map both ways" "--error-map, --no-error-map: give one of them" render --error-map --no-error-map --out-dir "$tmp/out/x"
+expect_zblend_error "no error map without out-dir" "--no-error-map: needs --out-dir" render --no-error-map --out "$tmp/out/a.png"
 
 # ---- plan: --method and --scene ------------------------------------------------------------
 expect_zblend_error "plan method and scene" "^zblend: error: --method, --scene: give one of them" plan --method three-pass --scene cad

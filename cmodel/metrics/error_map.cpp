@@ -1,0 +1,153 @@
+#include "error_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <unordered_map>
+
+#include <fmt/core.h>
+
+#include <stb_easy_font.h>
+
+#include "color_difference.h"
+#include "metrics.h"
+
+namespace zb {
+
+namespace {
+
+constexpr int kStrip = 30;  // the legend strip's height
+constexpr Rgba8 kBlack{0, 0, 0, 255};
+constexpr Rgba8 kText{230, 230, 230, 255};
+
+void fill(Framebuffer& fb, int x0, int y0, int x1, int y1, Rgba8 c) {
+  for (int y = std::max(0, y0); y < std::min(fb.height, y1); ++y)
+    for (int x = std::max(0, x0); x < std::min(fb.width, x1); ++x) fb.color[fb.index(x, y)] = c;
+}
+
+// `text` at (x, y), top-left, in stb_easy_font's built-in strokes (no font file). Returns the
+// x just past it.
+int text_width(std::string text) { return stb_easy_font_width(text.data()); }
+
+int draw_text(Framebuffer& fb, int x, int y, const std::string& text, Rgba8 c) {
+  std::string s = text;
+  static thread_local std::vector<char> buffer(64 * 1024);
+  const int quads = stb_easy_font_print(float(x), float(y), s.data(), nullptr, buffer.data(),
+                                        int(buffer.size()));
+  struct Vertex {
+    float x, y, z;
+    unsigned char rgba[4];
+  };
+  const auto* v = reinterpret_cast<const Vertex*>(buffer.data());
+  for (int q = 0; q < quads; ++q) {
+    const Vertex* a = v + 4 * q;  // corners 0 and 2 are opposite
+    fill(fb, int(std::lround(a[0].x)), int(std::lround(a[0].y)), int(std::lround(a[2].x)),
+         int(std::lround(a[2].y)), c);
+  }
+  return x + text_width(text);
+}
+
+// A canvas: the frame's pixels above a legend strip, at least kLegendWidth wide, black.
+Framebuffer canvas(int width, int height) {
+  return Framebuffer(std::max(width, kLegendWidth), height + kStrip, kDefaultDepthBits, kBlack);
+}
+
+std::string scale_text(double v) {
+  return v >= 10 || v == std::floor(v) ? fmt::format("{:.0f}", v) : fmt::format("{:g}", v);
+}
+
+}  // namespace
+
+std::vector<float> delta_e_map(const Framebuffer& image, const Framebuffer& reference) {
+  std::vector<float> de;
+  if (image.width != reference.width || image.height != reference.height) return de;
+  de.resize(reference.color.size());
+  // Flat-shaded frames hold few distinct pairs of colours: each pair's CIEDE2000 once.
+  std::unordered_map<uint64_t, float> known;
+  auto rgb = [](Rgba8 c) { return uint64_t{c.r} | uint64_t{c.g} << 8 | uint64_t{c.b} << 16; };
+  for (size_t i = 0; i < de.size(); ++i) {
+    const Rgba8 a = image.color[i], b = reference.color[i];
+    if (rgb(a) == rgb(b)) continue;  // 0, as resize left it
+    const auto [it, added] = known.try_emplace(rgb(a) << 24 | rgb(b), 0.0f);
+    if (added) it->second = float(delta_e2000(a, b));
+    de[i] = it->second;
+  }
+  return de;
+}
+
+double percentile(std::vector<float> values, double p) {
+  if (values.empty()) return 0;
+  const double rank = std::ceil(std::clamp(p, 0.0, 1.0) * double(values.size()));
+  const size_t k = std::min(values.size() - 1, size_t(std::max(rank, 1.0)) - 1);
+  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(k), values.end());
+  return values[k];
+}
+
+double nice_error_scale(double value) {
+  if (!(value > kMinErrorScale)) return kMinErrorScale;
+  double decade = std::pow(10.0, std::floor(std::log10(value)));
+  for (;; decade *= 10)
+    for (const double m : {1.0, 2.0, 5.0})
+      if (m * decade >= value * (1 - 1e-12)) return m * decade;
+}
+
+std::pair<int, int> worst_pixel(const std::vector<float>& values, int width) {
+  if (values.empty() || width <= 0) return {0, 0};
+  const size_t i = size_t(std::max_element(values.begin(), values.end()) - values.begin());
+  return {int(i % size_t(width)), int(i / size_t(width))};
+}
+
+Framebuffer error_map_image(const std::vector<float>& de, int width, int height, double scale,
+                            std::optional<std::pair<int, int>> mark) {
+  Framebuffer fb = canvas(width, height);
+  if (de.size() == size_t(width) * size_t(height))
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x)
+        fb.color[fb.index(x, y)] = error_ramp(de[size_t(y) * size_t(width) + size_t(x)] / scale);
+  if (mark) {  // a ring of radius 6, in a colour the ramp never takes
+    const auto [mx, my] = *mark;
+    for (int a = 0; a < 96; ++a) {
+      const double t = a * 2 * 3.14159265358979323846 / 96;
+      for (const int r : {6, 7}) {
+        const int x = mx + int(std::lround(r * std::cos(t))), y = my + int(std::lround(r * std::sin(t)));
+        if (x >= 0 && y >= 0 && x < width && y < height) fb.color[fb.index(x, y)] = Rgba8{0, 255, 255, 255};
+      }
+    }
+  }
+  // The legend: "0", the ramp, the scale and the unit.
+  const int y0 = height + 4, bar = 12;
+  int x = draw_text(fb, 4, y0 + 3, "0", kText) + 4;
+  const std::string top = scale_text(scale) + "+ dE2000";
+  const int bar_end = fb.width - 8 - text_width(top);
+  for (int bx = x; bx < bar_end; ++bx)
+    fill(fb, bx, y0, bx + 1, y0 + bar, error_ramp(double(bx - x) / std::max(1, bar_end - 1 - x)));
+  draw_text(fb, bar_end + 4, y0 + 3, top, kText);
+  return fb;
+}
+
+Framebuffer line_error_map_image(const Framebuffer& image, const LineVisibility& reference,
+                                 Rgba8 visible) {
+  const int w = reference.width, h = reference.height;
+  Framebuffer fb = canvas(w, h);
+  if (image.color.size() == reference.pixels.size())
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const size_t i = size_t(y) * size_t(w) + size_t(x);
+        const bool full = image.color[i] == visible;
+        Rgba8 c = kBlack;
+        switch (reference.pixels[i]) {
+          case EdgePixel::kHidden: c = full ? kHiddenDrawnColor : Rgba8{70, 70, 70, 255}; break;
+          case EdgePixel::kVisible: c = full ? Rgba8{150, 150, 150, 255} : kVisibleMissingColor; break;
+          case EdgePixel::kNone: break;
+        }
+        fb.color[fb.index(x, y)] = c;
+      }
+  const int y0 = h + 4;
+  fill(fb, 4, y0, 14, y0 + 10, kHiddenDrawnColor);
+  int x = draw_text(fb, 18, y0 + 2, "hidden drawn", kText) + 10;
+  fill(fb, x, y0, x + 10, y0 + 10, kVisibleMissingColor);
+  draw_text(fb, x + 14, y0 + 2, "visible missing", kText);
+  return fb;
+}
+
+}  // namespace zb

@@ -1,0 +1,47 @@
+// Error maps: where a method fails, as a picture (docs/lab.md "Error maps"). A shaded method's
+// map is each pixel's CIEDE2000 against its fair reference on a perceptually uniform ramp
+// (error_ramp), with the scale drawn in the picture; a hidden-line method's shows its hidden
+// edges drawn and its visible edges missing in two colours.
+#pragma once
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "reference/line_reference.h"
+#include "rop/framebuffer.h"
+
+namespace zb {
+
+// Each pixel's CIEDE2000 of `image` against `reference` (row-major; empty for frames of
+// different sizes).
+std::vector<float> delta_e_map(const Framebuffer& image, const Framebuffer& reference);
+
+// The value below which a share `p` (0..1) of `values` lie (nearest rank); 0 when empty.
+double percentile(std::vector<float> values, double p);
+
+// A scale for maps that compare: the smallest 1, 2 or 5 x 10^k at or above `value`, at least
+// kMinErrorScale (below it no difference is visible).
+constexpr double kMinErrorScale = 1.0;
+double nice_error_scale(double value);
+
+// The pixel (x, y) of the largest value, the first in row-major order on a tie.
+std::pair<int, int> worst_pixel(const std::vector<float>& values, int width);
+
+// The map of `de` (width x height) at `scale` (that value and above the brightest), a legend
+// strip below it: the ramp from 0 to the scale, both numbers and "dE2000". With `mark`, a ring
+// around that pixel. The picture is at least kLegendWidth wide (the frame left-aligned on black).
+constexpr int kLegendWidth = 200;
+Framebuffer error_map_image(const std::vector<float>& de, int width, int height, double scale,
+                            std::optional<std::pair<int, int>> mark = std::nullopt);
+
+// A hidden-line method's map against the exact line reference (a pixel drawn in the visible
+// style when its colour is `visible`): edges drawn as they should be grey, hidden edges drawn
+// (kHiddenDrawnColor) and visible edges missing (kVisibleMissingColor), the rest black, with a
+// legend strip naming the two.
+constexpr Rgba8 kHiddenDrawnColor{255, 60, 60, 255};
+constexpr Rgba8 kVisibleMissingColor{60, 200, 255, 255};
+Framebuffer line_error_map_image(const Framebuffer& image, const LineVisibility& reference,
+                                 Rgba8 visible);
+
+}  // namespace zb

@@ -1,0 +1,106 @@
+// Error maps (cmodel/metrics/error_map.h): the scale, the worst pixel, the picture and its
+// legend, the hidden-line map's two colours; CIELAB back to sRGB.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "metrics/color_difference.h"
+#include "metrics/error_map.h"
+#include "metrics/metrics.h"
+
+namespace zb {
+namespace {
+
+size_t count(const Framebuffer& fb, Rgba8 c, int y0 = 0, int y1 = 1 << 30) {
+  size_t n = 0;
+  for (int y = y0; y < std::min(fb.height, y1); ++y)
+    for (int x = 0; x < fb.width; ++x) n += fb.color[fb.index(x, y)] == c;
+  return n;
+}
+
+TEST(LabToSrgb, InvertsSrgbToLabAndRefusesOutOfGamut) {
+  for (const Rgba8 c : {Rgba8{0, 0, 0, 255}, Rgba8{255, 255, 255, 255}, Rgba8{200, 30, 7, 255},
+                        Rgba8{12, 250, 99, 255}, Rgba8{0, 0, 255, 255}}) {
+    Rgba8 back;
+    ASSERT_TRUE(lab_to_srgb8(srgb8_to_lab(c), back));
+    EXPECT_EQ(back, c);
+  }
+  Rgba8 out;
+  EXPECT_FALSE(lab_to_srgb8(Lab{50, 150, 0}, out));  // far beyond sRGB's red
+  EXPECT_FALSE(lab_to_srgb8(Lab{100, 0, 100}, out));
+}
+
+TEST(ErrorMap, NiceScaleRoundsUpToOneTwoOrFive) {
+  EXPECT_EQ(nice_error_scale(0), kMinErrorScale);
+  EXPECT_EQ(nice_error_scale(0.3), 1.0);
+  EXPECT_EQ(nice_error_scale(1.0), 1.0);
+  EXPECT_EQ(nice_error_scale(1.2), 2.0);
+  EXPECT_EQ(nice_error_scale(3.0), 5.0);
+  EXPECT_EQ(nice_error_scale(7.0), 10.0);
+  EXPECT_EQ(nice_error_scale(50.0), 50.0);
+  EXPECT_EQ(nice_error_scale(51.0), 100.0);
+}
+
+TEST(ErrorMap, PercentileAndWorstPixel) {
+  std::vector<float> v(100);
+  for (size_t i = 0; i < v.size(); ++i) v[i] = float(i + 1);  // 1..100
+  EXPECT_EQ(percentile(v, 0.99), 99.0);
+  EXPECT_EQ(percentile(v, 1.0), 100.0);
+  EXPECT_EQ(percentile(v, 0.0), 1.0);
+  EXPECT_EQ(percentile({}, 0.5), 0.0);
+  const std::vector<float> m = {0, 1, 5, 2, 5, 0};  // 3 x 2: the first 5 is at (2, 0)
+  EXPECT_EQ(worst_pixel(m, 3), (std::pair<int, int>{2, 0}));
+}
+
+TEST(ErrorMap, PixelsOnTheRampAndALegendBelow) {
+  constexpr int w = 30, h = 20;
+  std::vector<float> de(size_t(w) * h, 0.0f);
+  de[size_t(5) * w + 7] = 10;   // (7, 5): full scale
+  de[size_t(15) * w + 20] = 5;  // (20, 15): half
+  const Framebuffer fb = error_map_image(de, w, h, 10.0);
+  ASSERT_EQ(fb.width, kLegendWidth);  // a narrow frame gets room for its legend
+  ASSERT_GT(fb.height, h);
+  EXPECT_EQ(fb.color_at(0, 0), error_ramp(0));
+  EXPECT_EQ(fb.color_at(7, 5), error_ramp(1));
+  EXPECT_EQ(fb.color_at(20, 15), error_ramp(0.5));
+  // The legend: its ramp shows the brightest colour, and text strokes are drawn.
+  EXPECT_GT(count(fb, error_ramp(1), h, fb.height), 0u);
+  EXPECT_GT(count(fb, Rgba8{230, 230, 230, 255}, h, fb.height), 20u);
+  EXPECT_EQ(count(fb, Rgba8{0, 255, 255, 255}), 0u);  // no ring unasked
+  const Framebuffer marked = error_map_image(de, w, h, 10.0, std::pair<int, int>{7, 5});
+  EXPECT_GT(count(marked, Rgba8{0, 255, 255, 255}, 0, h), 20u);
+  EXPECT_EQ(marked.color_at(7, 5), error_ramp(1));  // the ring leaves the pixel itself
+}
+
+TEST(ErrorMap, DeltaEMapIsPerPixel) {
+  Framebuffer a(2, 1, kDefaultDepthBits, Rgba8{255, 255, 255, 255});
+  Framebuffer b = a;
+  b.color[1] = Rgba8{0, 0, 0, 255};
+  const std::vector<float> de = delta_e_map(b, a);
+  ASSERT_EQ(de.size(), 2u);
+  EXPECT_EQ(de[0], 0.0f);
+  EXPECT_NEAR(de[1], 100.0, 1e-3);
+  EXPECT_TRUE(delta_e_map(Framebuffer(3, 1, 24, Rgba8{}), a).empty());
+}
+
+TEST(ErrorMap, LineMapShowsHiddenDrawnAndVisibleMissing) {
+  LineVisibility ref;
+  ref.width = 4;
+  ref.height = 1;
+  ref.pixels = {EdgePixel::kHidden, EdgePixel::kVisible, EdgePixel::kHidden, EdgePixel::kVisible};
+  const Rgba8 edge{0, 0, 0, 255}, bg{255, 255, 255, 255};
+  Framebuffer img(4, 1, kDefaultDepthBits, bg);
+  img.color = {edge, edge, bg, bg};  // hidden drawn, visible right, hidden right, visible missing
+  const Framebuffer fb = line_error_map_image(img, ref, edge);
+  EXPECT_EQ(fb.color_at(0, 0), kHiddenDrawnColor);
+  EXPECT_EQ(fb.color_at(3, 0), kVisibleMissingColor);
+  EXPECT_NE(fb.color_at(1, 0), kVisibleMissingColor);
+  EXPECT_NE(fb.color_at(2, 0), kHiddenDrawnColor);
+  // The legend's swatches.
+  EXPECT_GT(count(fb, kHiddenDrawnColor, 1, fb.height), 50u);
+  EXPECT_GT(count(fb, kVisibleMissingColor, 1, fb.height), 50u);
+}
+
+}  // namespace
+}  // namespace zb
