@@ -187,6 +187,8 @@ void write_scene_images(const fs::path& dir, const lab::LabScene& s, const lab::
     write_or_fail(write_png((dir / lab::image_path(s.name, run.rows[i].method)).string(), run.images[i]));
     write_or_fail(write_png((dir / lab::error_image_path(s.name, run.rows[i].method)).string(),
                             run.error_images[i]));
+    if (!run.histories[i].empty())
+      write(dir / lab::history_path(s.name, run.rows[i].method), run.histories[i]);
   }
   write_or_fail(write_png((dir / lab::reference_ss_path(s.name)).string(), run.reference_ss));
 }
@@ -210,6 +212,7 @@ std::vector<lab::SceneRun> run_scenes(const std::vector<lab::LabScene>& scenes,
         // Images are on disk: keep only the numbers.
         run.images.clear();
         run.error_images.clear();
+        run.histories.clear();
         run.reference = run.reference_ss = Framebuffer{};
         std::lock_guard<std::mutex> lock(print);
         ++done;

@@ -11,6 +11,8 @@
 #include <fmt/format.h>
 
 #include "geometry/frame_geometry.h"
+#include "history/history_report.h"
+#include "metrics/error_map.h"
 #include "pipeline/passes.h"
 #include "reference/line_reference.h"
 #include "reference/reference.h"
@@ -21,6 +23,19 @@
 
 namespace zb::lab {
 namespace {
+
+// A hidden-line image's first wrong edge pixel (row-major): a hidden one drawn in the visible
+// style, or a visible one not; nothing when there is none.
+std::optional<std::pair<int, int>> first_line_error(const Framebuffer& image,
+                                                    const LineVisibility& lines, Rgba8 visible) {
+  if (image.color.size() != lines.pixels.size()) return std::nullopt;
+  for (size_t i = 0; i < lines.pixels.size(); ++i) {
+    const bool full = image.color[i] == visible;
+    if ((lines.pixels[i] == EdgePixel::kHidden && full) || (lines.pixels[i] == EdgePixel::kVisible && !full))
+      return std::pair<int, int>{int(i % size_t(lines.width)), int(i / size_t(lines.width))};
+  }
+  return std::nullopt;
+}
 
 using Clock = std::chrono::steady_clock;
 constexpr int kHostTimeRuns = 3;
@@ -85,6 +100,8 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
   }
   run.reference_ss = render_reference_supersampled(scene, vp, o.supersample);
   std::optional<LineVisibility> lines;  // the line reference, when a method draws edges
+  std::vector<std::vector<float>> errors;  // per method, its CIEDE2000 map (none for lines)
+  double top = 0;                          // the largest 99th percentile of them
 
   for (const std::string& m : o.methods) {
     LabRow row;
@@ -179,13 +196,41 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
                                                      : std::nullopt);
       row.error_lines = compare_images(image, exact_lines);
       row.lines = compare_lines(image, *lines, kEdgeColor);
-      run.error_images.push_back(error_image(image, exact_lines));
+      row.worst = first_line_error(image, *lines, kEdgeColor);
+      errors.emplace_back();
     } else {
-      run.error_images.push_back(error_image(
+      errors.push_back(delta_e_map(
           image, row.fair == FairReference::kExact ? run.reference : run.reference_ss));
+      if (m != kReferenceMethod) top = std::max(top, percentile(errors.back(), 0.99));
     }
     run.images.push_back(std::move(image));
     run.rows.push_back(std::move(row));
+  }
+  // The error maps, one scale for the scene's methods; the worst pixel of each ringed, and its
+  // history kept for the report.
+  const double scale = nice_error_scale(top);
+  for (size_t i = 0; i < run.rows.size(); ++i) {
+    LabRow& row = run.rows[i];
+    row.error_scale = scale;
+    const std::vector<float>& de = errors[i];
+    if (row.fair == FairReference::kLines) {
+      run.error_images.push_back(line_error_map_image(run.images[i], *lines, kEdgeColor));
+    } else {
+      if (!de.empty() && *std::max_element(de.begin(), de.end()) > 0) row.worst = worst_pixel(de, vp.width);
+      run.error_images.push_back(error_map_image(de, vp.width, vp.height, scale, row.worst));
+    }
+    std::string history;
+    if (const PassPlan* plan = find_plan(row.method); plan && row.worst) {
+      const FrameHistory h = record_history(rs, *plan, {*row.worst});
+      const auto [x, y] = *row.worst;
+      history = row.fair == FairReference::kLines
+                    ? fmt::format("{}, {}: its first wrong edge pixel\n\n", ls.name, row.method)
+                    : fmt::format("{}, {}: the worst pixel of its error map, CIEDE2000 {:.2f} against "
+                                  "the {} reference\n\n", ls.name, row.method,
+                                  de[size_t(y) * size_t(vp.width) + size_t(x)], to_string(row.fair));
+      history += history_text(h, h.pixels[0], &scene);
+    }
+    run.histories.push_back(std::move(history));
   }
   run.ms = ms_since(start);
   return run;

@@ -6,6 +6,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rop/backend.h"
@@ -102,6 +103,10 @@ struct LabRow {
   // edge pixels' error shares (metrics/line_metrics.h).
   ImageError error_lines;
   std::optional<LineError> lines;
+  // The error map's scale (the scene's, every method alike) and the pixel it rings: the largest
+  // error, or a hidden-line method's first wrong edge pixel; none where nothing is wrong.
+  double error_scale = 0;
+  std::optional<std::pair<int, int>> worst;
   const ImageError& fair_error() const {
     return fair == FairReference::kExact ? error
                                          : fair == FairReference::kSupersampled ? error_ss
@@ -114,7 +119,8 @@ struct LabRow {
 struct SceneRun {
   std::vector<LabRow> rows;
   std::vector<Framebuffer> images;
-  std::vector<Framebuffer> error_images;
+  std::vector<Framebuffer> error_images;  // error maps (metrics/error_map.h)
+  std::vector<std::string> histories;     // per method, its worst pixel's history; or empty
   Framebuffer reference;
   Framebuffer reference_ss;
   size_t triangles = 0;

@@ -97,6 +97,19 @@ std::string text(Format f, const std::string& s) {
   return f == Format::kMarkdown ? md_cell(s) : html_escape(s);
 }
 
+std::string link(Format f, const std::string& label, const std::string& target) {
+  return f == Format::kMarkdown ? fmt::format("[{}]({})", label, target)
+                                : fmt::format("<a href=\"{}\">{}</a>", html_escape(target),
+                                              html_escape(label));
+}
+
+// "worst pixel (x, y)" linked to its history, or "" when the map rings none.
+std::string worst_link(Format f, const LabRow& r) {
+  if (!r.worst) return "";
+  return link(f, fmt::format("worst pixel ({}, {})", r.worst->first, r.worst->second),
+              history_path(r.scene, r.method));
+}
+
 // Means per method of one family (or "all").
 Table summary_table(const ReportInput& in, const std::string& family, Format f) {
   const bool rtl = in.rtl;
@@ -146,7 +159,7 @@ Table scene_table(const ReportInput& in, const ReportScene& sc, Format f) {
   const bool md = f == Format::kMarkdown;
   Table t{{"method", "image", md ? "error (ΔE2000)" : "error (&Delta;E2000)",
            md ? "mean ΔE" : "mean &Delta;E", md ? "max ΔE" : "max &Delta;E", "RMSE", "PSNR dB",
-           md ? ">16/255" : "&gt;16/255", "vs", "passes", "fragments"},
+           md ? ">16/255" : "&gt;16/255", "vs", "worst", "passes", "fragments"},
           {}};
   if (in.rtl) t.head.push_back("RTL cycles");
   const int w = std::min(in.width, 320);
@@ -163,6 +176,7 @@ Table scene_table(const ReportInput& in, const ReportScene& sc, Format f) {
         psnr_text(e.psnr),
         fmt::format("{:.1f}%", 100.0 * e.share_over_16),
         to_string(r.fair),
+        worst_link(f, r),
         r.has_cost ? std::to_string(r.passes) : "-",
         r.has_cost ? count_text(double(r.golden.fragments_in)) : "-"};
     if (in.rtl) row.push_back(r.rtl_cycles ? count_text(double(*r.rtl_cycles)) : "-");
@@ -185,14 +199,47 @@ std::string para(Format f, const std::string& s) {
   return f == Format::kMarkdown ? s + "\n\n" : "<p>" + s + "</p>\n";
 }
 
-std::string link(Format f, const std::string& label, const std::string& target) {
-  return f == Format::kMarkdown ? fmt::format("[{}]({})", label, target)
-                                : fmt::format("<a href=\"{}\">{}</a>", html_escape(target),
-                                              html_escape(label));
-}
-
 std::string code(Format f, const std::string& s) {
   return f == Format::kMarkdown ? "`" + s + "`" : "<code>" + html_escape(s) + "</code>";
+}
+
+// A family's grid: its scene with the most fragments, the exact reference first, then each
+// method's image over its error map, the worst pixel ringed there and its history a click away.
+std::string family_grid(const ReportInput& in, const std::string& family, Format f) {
+  const ReportScene* pick = nullptr;
+  for (const ReportScene& s : in.scenes)
+    if (s.family == family && (!pick || s.fragments > pick->fragments)) pick = &s;
+  if (!pick) return "";
+  const int w = std::min(in.width, 240);
+  const bool md = f == Format::kMarkdown;
+  std::string out = para(f, fmt::format("{} (the family's scene with the most fragments): each "
+                                        "method's image above its error map.",
+                                        md ? code(f, pick->name) : link(f, pick->name, "#" + path_name(pick->name))));
+  if (md) {
+    Table t{{"method", "image", "error map", "mean ΔE", "worst"}, {}};
+    for (const LabRow& r : in.rows)
+      if (r.scene == pick->name)
+        t.rows.push_back({text(f, r.method), image(f, image_path(r.scene, r.method), r.method, w),
+                          r.method == kReferenceMethod ? "" : image(f, error_image_path(r.scene, r.method), r.method + " error", w),
+                          fmt::format("{:.2f}", r.fair_error().delta_e_mean), worst_link(f, r)});
+    return out + table(f, t);
+  }
+  out += "<div class=\"grid\">\n";
+  // The reference first: what every map compares with (the supersampled one for the AA methods).
+  for (const LabRow& r : in.rows)
+    if (r.scene == pick->name && r.method == kReferenceMethod)
+      out += "<figure>" + image(f, image_path(r.scene, r.method), "reference", w) + "<br>" +
+             image(f, reference_ss_path(r.scene), "supersampled reference", w) +
+             "<figcaption><b>reference</b><br>exact; below it supersampled</figcaption></figure>\n";
+  for (const LabRow& r : in.rows) {
+    if (r.scene != pick->name || r.method == kReferenceMethod) continue;
+    out += "<figure>" + image(f, image_path(r.scene, r.method), r.method, w) + "<br>" +
+           image(f, error_image_path(r.scene, r.method), r.method + " error", w) +
+           fmt::format("<figcaption><b>{}</b><br>mean &Delta;E {:.2f} against {}<br>{}</figcaption></figure>\n",
+                       html_escape(r.method), r.fair_error().delta_e_mean, to_string(r.fair),
+                       r.worst ? worst_link(f, r) : "nothing wrong to ring");
+  }
+  return out + "</div>\n";
 }
 
 // Headings pushed `levels` deeper, so that a document can sit inside a section of another;
@@ -293,14 +340,18 @@ std::string body(const ReportInput& in, Format f) {
     const std::string chart = family_chart_path(family);
     if (has(in.charts, chart)) out += para(f, image(f, chart, family, 640));
     out += table(f, summary_table(in, family, f));
+    out += family_grid(in, family, f);
   }
 
   out += heading(f, 2, "Scenes");
   out += para(f, fmt::format(
-      "Error images map each pixel's {} against the method's fair reference (the column "
-      "{}): black is exact, purple about {:.0f}, red {:.0f}, orange {:.0f}, pale yellow "
-      "{:.0f} or more.", de, code(f, "vs"), kErrorImageFullScale / 4, kErrorImageFullScale / 2,
-      3 * kErrorImageFullScale / 4, kErrorImageFullScale));
+      "Error maps show each pixel's {} against the method's fair reference (the column {}) on "
+      "a perceptually uniform ramp from black (exact) through violet, red and orange to pale "
+      "yellow at the scene's scale, printed under each map and the same for every method of "
+      "the scene: the largest 99th percentile of their errors, rounded up to 1, 2 or 5 x 10^k. "
+      "A cyan ring marks each method's worst pixel, whose history (every fragment that reached "
+      "it, pass by pass: docs/history.md) the column {} links. Hidden-line methods: hidden "
+      "edges drawn in red, visible ones missing in blue.", de, code(f, "vs"), code(f, "worst")));
   for (const ReportScene& sc : in.scenes) {
     out += heading(f, 3, sc.name, path_name(sc.name));
     out += para(f, text(f, fmt::format("{} (family {}; {} triangles, {} fragments).",
@@ -342,6 +393,10 @@ std::string image_path(const std::string& scene, const std::string& method) {
 
 std::string error_image_path(const std::string& scene, const std::string& method) {
   return "images/" + path_name(scene) + "/" + path_name(method) + "-error.png";
+}
+
+std::string history_path(const std::string& scene, const std::string& method) {
+  return "images/" + path_name(scene) + "/" + path_name(method) + "-worst.txt";
 }
 
 std::string reference_ss_path(const std::string& scene) {
@@ -397,6 +452,9 @@ std::string report_html(const ReportInput& in) {
          "td:first-child, th:first-child { text-align: left; }\n"
          "img { image-rendering: pixelated; }\n"
          "figure { display: inline-block; margin: 0.5em; }\n"
+         ".grid { display: grid; grid-template-columns: repeat(auto-fill, minmax(250px, 1fr)); "
+         "gap: 0.5em; }\n"
+         ".grid figure { margin: 0; }\n"
          "</style>\n</head>\n<body>\n" +
          body(in, Format::kHtml) + "</body>\n</html>\n";
 }

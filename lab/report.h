@@ -38,6 +38,8 @@ std::string path_name(const std::string& name);
 std::string image_path(const std::string& scene, const std::string& method);
 std::string error_image_path(const std::string& scene, const std::string& method);
 std::string reference_ss_path(const std::string& scene);
+// The history of the pixel a method's error map rings (zblend pixel's text).
+std::string history_path(const std::string& scene, const std::string& method);
 
 // The charts scripts/lab_charts.py writes, relative to the output folder.
 std::string main_chart_path();        // delta E against cost, every scene

@@ -1,6 +1,7 @@
 #include "error_map.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <unordered_map>
@@ -10,7 +11,6 @@
 #include <stb_easy_font.h>
 
 #include "color_difference.h"
-#include "metrics.h"
 
 namespace zb {
 
@@ -57,6 +57,47 @@ std::string scale_text(double v) {
 }
 
 }  // namespace
+
+Rgba8 error_ramp(double t) {
+  // A path through CIELAB: lightness 0 to 97 (black to pale yellow), the hue turning from violet
+  // (300 degrees) through red and orange to yellow (100), at the largest chroma up to 70 sRGB
+  // holds. Its 256 entries are spaced evenly along the path's CIEDE2000 length, so every step
+  // looks alike; lightness rises throughout, so brighter reads as worse.
+  static const std::array<Rgba8, 256> ramp = [] {
+    constexpr int kFine = 4096;
+    std::vector<Rgba8> path(kFine + 1);
+    std::vector<double> length(kFine + 1, 0.0);
+    for (int k = 0; k <= kFine; ++k) {
+      const double u = double(k) / kFine;
+      const double L = 97.0 * u, h = (300.0 + 160.0 * u) * 3.14159265358979323846 / 180.0;
+      double lo = 0, hi = k ? 70.0 : 0.0;  // black at 0
+      Rgba8 c{0, 0, 0, 255};
+      lab_to_srgb8(Lab{L, 0, 0}, c);
+      for (int i = 0; i < 20 && k; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        Rgba8 m;
+        if (lab_to_srgb8(Lab{L, mid * std::cos(h), mid * std::sin(h)}, m)) {
+          lo = mid;
+          c = m;
+        } else {
+          hi = mid;
+        }
+      }
+      path[size_t(k)] = c;
+      if (k) length[size_t(k)] = length[size_t(k) - 1] + delta_e2000(path[size_t(k) - 1], c);
+    }
+    std::array<Rgba8, 256> r{};
+    size_t k = 0;
+    for (size_t i = 0; i < r.size(); ++i) {
+      const double at = length.back() * double(i) / double(r.size() - 1);
+      while (k < size_t(kFine) && length[k] < at) ++k;
+      r[i] = path[k];
+    }
+    return r;
+  }();
+  const double u = std::clamp(std::isnan(t) ? 0.0 : t, 0.0, 1.0);
+  return ramp[size_t(std::lround(u * double(ramp.size() - 1)))];
+}
 
 std::vector<float> delta_e_map(const Framebuffer& image, const Framebuffer& reference) {
   std::vector<float> de;

@@ -1,6 +1,6 @@
 // Error maps: where a method fails, as a picture (docs/lab.md "Error maps"). A shaded method's
 // map is each pixel's CIEDE2000 against its fair reference on a perceptually uniform ramp
-// (error_ramp), with the scale drawn in the picture; a hidden-line method's shows its hidden
+// (error_ramp below), with the scale drawn in the picture; a hidden-line method's shows its hidden
 // edges drawn and its visible edges missing in two colours.
 #pragma once
 
@@ -12,6 +12,10 @@
 #include "rop/framebuffer.h"
 
 namespace zb {
+
+// The error maps' colour ramp at t in [0, 1] (clamped; NaN is 0): perceptually uniform, its
+// CIELAB lightness rising evenly from black to pale yellow.
+Rgba8 error_ramp(double t);
 
 // Each pixel's CIEDE2000 of `image` against `reference` (row-major; empty for frames of
 // different sizes).

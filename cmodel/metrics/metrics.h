@@ -18,16 +18,5 @@ struct ImageError {
 // Frames of different sizes compare as an all-zero ImageError.
 ImageError compare_images(const Framebuffer& image, const Framebuffer& reference);
 
-// The error image maps each pixel's CIEDE2000 against the reference, from 0 (black) through
-// violet, red and orange to pale yellow at kErrorImageFullScale and above. About 1 is the
-// smallest difference a viewer notices side by side; 20 is a different colour.
-constexpr double kErrorImageFullScale = 20.0;
-Framebuffer error_image(const Framebuffer& image, const Framebuffer& reference);
-
-// The error maps' colour ramp at t in [0, 1] (clamped): perceptually uniform, its CIELAB
-// lightness rising evenly from black to pale yellow. error_color is it at delta_e /
-// kErrorImageFullScale (error_image's legend).
-Rgba8 error_ramp(double t);
-Rgba8 error_color(double delta_e);
 
 }  // namespace zb

@@ -2,11 +2,14 @@
 // links.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
 
 #include "lab.h"
+#include "metrics/error_map.h"
+#include "metrics/metrics.h"
 #include "rtl_params.h"
 #include "report.h"
 #include "scene/builtin_scenes.h"
@@ -293,6 +296,41 @@ TEST(LabRun, HiddenLineAgainstTheLineReference) {
   EXPECT_NE(lab[2].find(",lines,"), std::string::npos);
 }
 
+// The error maps: one scale for the scene's methods, the worst pixel ringed where the error is
+// largest, its history (which replays: record_history checks it) kept for the report.
+TEST(LabRun, ErrorMapsWorstPixelsAndTheirHistories) {
+  zb::lab::LabScene scene{"cad", "shells", "cad", [] { return *zb::builtin_scene("cad"); }};
+  zb::lab::LabOptions o;
+  o.viewport = zb::Viewport{64, 48};
+  o.methods = {"unsorted", "depth-peel-4", "hidden-line", "reference"};
+  o.rtl = false;
+  const zb::lab::SceneRun run = zb::lab::run_scene(scene, o);
+  ASSERT_EQ(run.histories.size(), 4u);
+  const double scale = run.rows[0].error_scale;
+  EXPECT_GE(scale, zb::kMinErrorScale);
+  for (const zb::lab::LabRow& r : run.rows) EXPECT_EQ(r.error_scale, scale) << r.method;
+  // unsorted is wrong somewhere: its worst pixel is where its map is largest.
+  const zb::lab::LabRow& u = run.rows[0];
+  ASSERT_TRUE(u.worst.has_value());
+  const std::vector<float> de = zb::delta_e_map(run.images[0], run.reference);
+  const auto [x, y] = *u.worst;
+  EXPECT_EQ(de[size_t(y) * 64 + size_t(x)], *std::max_element(de.begin(), de.end()));
+  EXPECT_NEAR(de[size_t(y) * 64 + size_t(x)], u.error.delta_e_max, 1e-3);
+  const std::string at = "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")";
+  EXPECT_NE(run.histories[0].find(at), std::string::npos) << run.histories[0];
+  EXPECT_NE(run.histories[0].find("cad, unsorted: the worst pixel"), std::string::npos);
+  // The map: the frame above a legend, the worst pixel's colour the ramp's at its error.
+  const zb::Framebuffer& map = run.error_images[0];
+  EXPECT_EQ(map.width, zb::kLegendWidth);
+  EXPECT_EQ(map.color_at(x, y), zb::error_ramp(de[size_t(y) * 64 + size_t(x)] / scale));
+  // The reference has no history; a hidden-line method's map has the two colours' legend.
+  EXPECT_TRUE(run.histories[3].empty());
+  EXPECT_FALSE(run.rows[3].worst.has_value());
+  size_t swatch = 0;
+  for (const zb::Rgba8 c : run.error_images[2].color) swatch += c == zb::kHiddenDrawnColor;
+  EXPECT_GT(swatch, 50u);
+}
+
 TEST(LabReport, RelativeLinks) {
   EXPECT_EQ(zb::lab::rebase_markdown_links("![a](x.png) [b](sub/y.csv)", "sweeps"),
             "![a](sweeps/x.png) [b](sweeps/sub/y.csv)");
@@ -302,6 +340,7 @@ TEST(LabReport, RelativeLinks) {
   EXPECT_EQ(zb::lab::path_name(".."), "_..");
   EXPECT_EQ(zb::lab::image_path("cad", "three-pass"), "images/cad/three-pass.png");
   EXPECT_EQ(zb::lab::error_image_path("cad", "three-pass"), "images/cad/three-pass-error.png");
+  EXPECT_EQ(zb::lab::history_path("cad", "three-pass"), "images/cad/three-pass-worst.txt");
 }
 
 TEST(LabReport, ShowsEveryMethodsImageAndErrorImage) {
@@ -314,7 +353,14 @@ TEST(LabReport, ShowsEveryMethodsImageAndErrorImage) {
   in.summaries = zb::lab::summarize(in.rows);
   in.charts = {zb::lab::main_chart_path(), zb::lab::family_chart_path("fam")};
   in.sweeps_markdown = "# Sweeps\n\n![orbit](orbit.png)\n";
+  in.rows[1].worst = std::pair<int, int>{3, 4};
   for (const std::string& doc : {zb::lab::report_markdown(in), zb::lab::report_html(in)}) {
+    // m2's worst pixel links its history, in the scene's table and the family's grid.
+    size_t links = 0;
+    for (size_t at = 0; (at = doc.find("images/s1/m2-worst.txt", at)) != std::string::npos; ++at) ++links;
+    EXPECT_GE(links, 2u);
+    EXPECT_NE(doc.find("worst pixel (3, 4)"), std::string::npos);
+    EXPECT_EQ(doc.find("images/s1/m1-worst.txt"), std::string::npos);  // m1 rings nothing
     for (const char* path : {"images/s1/m1.png", "images/s1/m1-error.png", "images/s1/m2.png",
                              "images/s1/m2-error.png", "charts/main.png", "charts/family-fam.png",
                              "images/s1/reference-supersampled.png"})

@@ -3,11 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "metrics/color_difference.h"
 #include "metrics/error_map.h"
-#include "metrics/metrics.h"
 
 namespace zb {
 namespace {
@@ -29,6 +29,29 @@ TEST(LabToSrgb, InvertsSrgbToLabAndRefusesOutOfGamut) {
   Rgba8 out;
   EXPECT_FALSE(lab_to_srgb8(Lab{50, 150, 0}, out));  // far beyond sRGB's red
   EXPECT_FALSE(lab_to_srgb8(Lab{100, 0, 100}, out));
+}
+
+TEST(ErrorMap, RampIsPerceptuallyUniform) {
+  EXPECT_EQ(error_ramp(0.0), (Rgba8{0, 0, 0, 255}));
+  EXPECT_EQ(error_ramp(1e9), error_ramp(1.0));
+  EXPECT_EQ(error_ramp(-3), error_ramp(0));
+  EXPECT_EQ(error_ramp(std::nan("")), error_ramp(0));
+  EXPECT_GT(srgb8_to_lab(error_ramp(1.0)).L, 95.0);  // pale yellow, nearly white
+  // Perceptually uniform: CIELAB lightness rises at every step of 1/32, and neighbours 1/64
+  // apart differ by about the same CIEDE2000 (1.4 to 3.1 as built; 8-bit rounding and
+  // CIEDE2000's own unevenness keep them from being equal).
+  double last_l = -1;
+  for (int k = 0; k <= 32; ++k) {
+    const double l = srgb8_to_lab(error_ramp(k / 32.0)).L;
+    EXPECT_GT(l, last_l) << k;
+    last_l = l;
+  }
+  for (int k = 1; k <= 64; ++k) {
+    const double step = delta_e2000(error_ramp((k - 1) / 64.0), error_ramp(k / 64.0));
+    EXPECT_GT(step, 1.0) << k;
+    EXPECT_LT(step, 4.0) << k;
+  }
+
 }
 
 TEST(ErrorMap, NiceScaleRoundsUpToOneTwoOrFive) {
