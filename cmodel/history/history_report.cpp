@@ -228,6 +228,21 @@ std::string history_text(const FrameHistory& f, const PixelHistory& h, const Sce
   for (const HistoryEvent& e : h.events) fragments += e.kind == HistoryEvent::Kind::kFragment;
   if (fragments == 0) s += "  no fragment reached the pixel\n";
   s += "final  " + value_text(f, h.final_value) + "\n";
+  if (h.reference) {
+    const ReferencePixel& r = *h.reference;
+    s += fmt::format("exact reference: {} layer{} nearest first", r.layers.size(), r.layers.size() == 1 ? "" : "s");
+    if (r.behind) s += fmt::format(" ({} more behind the opaque one)", r.behind);
+    s += r.layers.empty() ? ", the background" : ":";
+    s += "\n";
+    for (const ReferenceLayer& l : r.layers)
+      s += fmt::format("  {}: z {:.6f} colour {}\n",
+                       scene ? triangle_source(*scene, l.prim) : fmt::format("triangle {}", l.prim),
+                       l.z_exact, rgba_text(l.color));
+    s += fmt::format("  composited: colour {}; this method's CIEDE2000 against it {:.2f}", rgba_text(r.color), h.delta_e);
+    bool edges = false;
+    for (const PassRecord& p : f.passes) edges = edges || p.edges;
+    s += edges ? " (its fair reference is the exact line reference: docs/lab.md)\n" : "\n";
+  }
   return s;
 }
 
@@ -261,8 +276,19 @@ std::string history_json(const FrameHistory& f, const std::string& scene_name, c
       if (scene && e.kind == HistoryEvent::Kind::kFragment && !f.passes.at(e.pass).edges)
         events.back()["fragment"]["source"] = triangle_source(*scene, e.fragment.fragment.prim);
     }
-    pixels.push_back({{"x", h.x}, {"y", h.y}, {"first", value_json(h.first)}, {"events", events},
-                      {"final", value_json(h.final_value)}});
+    json p{{"x", h.x}, {"y", h.y}, {"first", value_json(h.first)}, {"events", events},
+           {"final", value_json(h.final_value)}};
+    if (h.reference) {
+      json layers = json::array();
+      for (const ReferenceLayer& l : h.reference->layers) {
+        layers.push_back({{"prim", l.prim}, {"z_exact", l.z_exact}, {"color", rgba_json(l.color)}});
+        if (scene) layers.back()["source"] = triangle_source(*scene, l.prim);
+      }
+      p["reference"] = {{"layers", layers}, {"behind", h.reference->behind},
+                        {"color", rgba_json(h.reference->color)}};
+      p["delta_e"] = h.delta_e;
+    }
+    pixels.push_back(std::move(p));
   }
   const json doc{{"zblend_pixel_history", 1}, {"scene", scene_name}, {"method", method},
                  {"from_scene", f.from_scene},
@@ -303,6 +329,16 @@ FrameHistory parse_history_json(const std::string& text) {
       h.y = p.at("y").get<int>();
       h.first = value_from(p.at("first"));
       h.final_value = value_from(p.at("final"));
+      if (p.contains("reference")) {
+        const json& r = p.at("reference");
+        ReferencePixel ref;
+        for (const json& l : r.at("layers"))
+          ref.layers.push_back({l.at("prim").get<uint32_t>(), l.at("z_exact").get<double>(), rgba_from(l.at("color"))});
+        ref.behind = r.at("behind").get<size_t>();
+        ref.color = rgba_from(r.at("color"));
+        h.reference = ref;
+        h.delta_e = p.at("delta_e").get<double>();
+      }
       for (const json& e : p.at("events")) {
         h.events.push_back(event_from(e, h.x, h.y));
         if (h.events.back().pass + (h.events.back().kind == HistoryEvent::Kind::kFragment) > f.passes.size())

@@ -4,6 +4,8 @@
 
 #include <fmt/core.h>
 
+#include "metrics/color_difference.h"
+
 namespace zb {
 
 PixelValue PixelValue::of(const Framebuffer& fb, size_t i) {
@@ -185,6 +187,11 @@ FrameHistory record_history(const RasterizedScene& rs, const PassPlan& plan,
   f.from_scene = true;
   for (size_t p = 0; p < f.passes.size(); ++p)
     f.passes[p].edges = plan.passes[p].filter == PrimFilter::kEdges;
+  const std::vector<ReferencePixel> ref = reference_pixels(rs, pixels);
+  for (size_t k = 0; k < f.pixels.size(); ++k) {
+    f.pixels[k].reference = ref[k];
+    f.pixels[k].delta_e = delta_e2000(f.pixels[k].final_value.color, ref[k].color);
+  }
   return checked(std::move(f));
 }
 

@@ -13,6 +13,7 @@
 
 #include "io/trace.h"
 #include "pipeline/render.h"
+#include "reference/reference.h"
 #include "rop/rop.h"
 
 namespace zb {
@@ -63,6 +64,10 @@ struct PixelHistory {
   PixelValue first;        // at the frame's start
   std::vector<HistoryEvent> events;
   PixelValue final_value;  // the framebuffer's at the frame's end
+  // A scene's: the exact reference there (its sorted layers, its colour) and the method's
+  // CIEDE2000 against it.
+  std::optional<ReferencePixel> reference;
+  double delta_e = 0;
 };
 
 struct FrameHistory {
@@ -109,7 +114,8 @@ class HistoryRecorder final : public Backend {
 std::optional<std::string> replay_error(const PixelHistory& h, const FrameHistory& f);
 
 // Renders `plan` on the golden model recording `pixels`' histories, each checked by
-// replay_error (a history that does not add up is std::logic_error: an internal error).
+// replay_error (a history that does not add up is std::logic_error: an internal error), with
+// the exact reference at each pixel.
 FrameHistory record_history(const RasterizedScene& rs, const PassPlan& plan,
                             const std::vector<std::pair<int, int>>& pixels);
 // The same for a trace's replay (a .zbt file, a conformance test's stream).

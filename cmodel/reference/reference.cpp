@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 namespace zb {
 namespace {
@@ -22,10 +23,30 @@ struct ExactFrame {
   std::vector<uint32_t> depth;
 };
 
-// Per pixel: fragments sorted by unrounded depth, ties in submit order (the earlier one counts
-// as nearer, as depth LESS keeps it). The nearest opaque fragment (or the background) is the
-// base; the transparent fragments in front of it are composited over it back to front,
-// c = a*s + (1-a)*c with a = alpha/255, in double.
+// One pixel's fragments `f[0..n)` (indices into rs.fragments, in submit order): sorted by
+// unrounded depth, ties in submit order (the earlier one counts as nearer, as depth LESS keeps
+// it). The nearest opaque fragment (or the background) is the base; the transparent fragments in
+// front of it are composited over it back to front, c = a*s + (1-a)*c with a = alpha/255, in
+// double. Leaves f sorted.
+Rgb composite_pixel(const RasterizedScene& rs, uint32_t* f, size_t n) {
+  uint32_t* first = f;
+  uint32_t* last = f + n;
+  std::stable_sort(first, last,
+                   [&](uint32_t a, uint32_t b) { return rs.z_exact[a] < rs.z_exact[b]; });
+  uint32_t* base = std::find_if(first, last, [&](uint32_t i) { return rs.fragments[i].color.a == 255; });
+  const Rgba8 under = base == last ? rs.background : rs.fragments[*base].color;
+  Rgb c{double(under.r), double(under.g), double(under.b)};
+  for (uint32_t* it = base; it != first;) {
+    const Rgba8 s = rs.fragments[*--it].color;
+    const double a = s.a / 255.0;
+    c[0] = a * s.r + (1.0 - a) * c[0];
+    c[1] = a * s.g + (1.0 - a) * c[1];
+    c[2] = a * s.b + (1.0 - a) * c[2];
+  }
+  return c;
+}
+
+// Per pixel, composite_pixel.
 ExactFrame composite_exact(const RasterizedScene& rs) {
   const Viewport& vp = rs.viewport;
   const size_t pixels = static_cast<size_t>(vp.width) * vp.height;
@@ -46,18 +67,7 @@ ExactFrame composite_exact(const RasterizedScene& rs) {
     auto first = order.begin() + start[p];
     auto last = order.begin() + start[p + 1];
     if (first == last) continue;
-    std::stable_sort(first, last,
-                     [&](uint32_t a, uint32_t b) { return rs.z_exact[a] < rs.z_exact[b]; });
-    auto base = std::find_if(first, last, [&](uint32_t i) { return rs.fragments[i].color.a == 255; });
-    const Rgba8 under = base == last ? bg : rs.fragments[*base].color;
-    Rgb c{double(under.r), double(under.g), double(under.b)};
-    for (auto it = base; it != first;) {
-      const Rgba8 s = rs.fragments[*--it].color;
-      const double a = s.a / 255.0;
-      c[0] = a * s.r + (1.0 - a) * c[0];
-      c[1] = a * s.g + (1.0 - a) * c[1];
-      c[2] = a * s.b + (1.0 - a) * c[2];
-    }
+    const Rgb c = composite_pixel(rs, &*first, size_t(last - first));
     out.color[p] = c;
     out.depth[p] = rs.fragments[*first].z;
   }
@@ -65,6 +75,36 @@ ExactFrame composite_exact(const RasterizedScene& rs) {
 }
 
 }  // namespace
+
+std::vector<ReferencePixel> reference_pixels(const RasterizedScene& rs,
+                                             const std::vector<std::pair<int, int>>& at) {
+  // One pass over the fragments, each kept for the asked pixel it lies on.
+  std::unordered_map<uint64_t, size_t> slot;
+  for (size_t k = 0; k < at.size(); ++k)
+    slot.emplace(uint64_t(uint32_t(at[k].second)) << 32 | uint32_t(at[k].first), k);
+  std::vector<std::vector<uint32_t>> here(at.size());
+  for (uint32_t i = 0; i < rs.fragments.size(); ++i) {
+    const Fragment& f = rs.fragments[i];
+    if (const auto it = slot.find(uint64_t(f.y) << 32 | f.x); it != slot.end()) here[it->second].push_back(i);
+  }
+  std::vector<ReferencePixel> out(at.size());
+  for (size_t k = 0; k < at.size(); ++k) {
+    ReferencePixel& p = out[k];
+    const Rgb c = here[k].empty() ? Rgb{double(rs.background.r), double(rs.background.g),
+                                        double(rs.background.b)}
+                                  : composite_pixel(rs, here[k].data(), here[k].size());
+    p.color = {to_unorm8(c[0]), to_unorm8(c[1]), to_unorm8(c[2]), 255};
+    for (const uint32_t i : here[k]) {  // sorted now, nearest first
+      const Fragment& f = rs.fragments[i];
+      if (!p.layers.empty() && p.layers.back().color.a == 255) {
+        ++p.behind;
+        continue;
+      }
+      p.layers.push_back({f.prim, rs.z_exact[i], f.color});
+    }
+  }
+  return out;
+}
 
 Framebuffer render_reference(const RasterizedScene& rs) {
   const Viewport& vp = rs.viewport;

@@ -2,6 +2,9 @@
 // composited back to front in floating point. Ground truth, not a hardware method.
 #pragma once
 
+#include <utility>
+#include <vector>
+
 #include "rop/framebuffer.h"
 #include "pipeline/render.h"
 #include "scene/scene.h"
@@ -9,6 +12,23 @@
 namespace zb {
 
 Framebuffer render_reference(const RasterizedScene& rs);
+
+// The exact reference at each pixel of `at` (x, y): the scene's fragments there, nearest first,
+// up to and including the nearest opaque one (what it composites over the background, or over
+// that fragment), how many lie behind that one, and the pixel's colour as render_reference
+// gives it.
+struct ReferenceLayer {
+  uint32_t prim = 0;  // the scene's triangle
+  double z_exact = 0;
+  Rgba8 color;
+};
+struct ReferencePixel {
+  std::vector<ReferenceLayer> layers;
+  size_t behind = 0;
+  Rgba8 color;
+};
+std::vector<ReferencePixel> reference_pixels(const RasterizedScene& rs,
+                                             const std::vector<std::pair<int, int>>& at);
 
 // The reference for anti-aliased methods: the exact reference at `factor` times the width and
 // height, box-filtered down to `vp`. Each pixel averages the factor x factor sub-pixel colours

@@ -87,8 +87,19 @@ TEST(PixelHistory, ThreePassPixelByHand) {
   EXPECT_EQ(h.final_value.color, (Rgba8{192, 0, 63, 159}));
   EXPECT_EQ(h.final_value.depth, 0x400000u);
 
+  // The exact reference there: red (alpha 128/255) over blue, in double, rounded once:
+  // R 255 * 128/255 = 128, B 255 * 127/255 = 127. three-pass blends red twice.
+  ASSERT_TRUE(h.reference.has_value());
+  ASSERT_EQ(h.reference->layers.size(), 2u);
+  EXPECT_EQ(h.reference->layers[0].color, (Rgba8{255, 0, 0, 128}));
+  EXPECT_EQ(h.reference->layers[1].color, (Rgba8{0, 0, 255, 255}));
+  EXPECT_EQ(h.reference->behind, 0u);
+  EXPECT_EQ(h.reference->color, (Rgba8{128, 0, 127, 255}));
+  EXPECT_GT(h.delta_e, 5.0);
+
   const std::string text = history_text(f, h);
   EXPECT_NE(text.find("depth less 0x400000"), std::string::npos) << text;
+  EXPECT_NE(text.find("composited: colour (128,0,127,255)"), std::string::npos) << text;
   EXPECT_NE(text.find("= (128,0,127,191)"), std::string::npos) << text;
   EXPECT_NE(text.find("final  colour (192,0,63,159)"), std::string::npos) << text;
 }
