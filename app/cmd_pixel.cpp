@@ -1,6 +1,7 @@
 // zblend pixel and conformance pixel: the history of a few pixels of a scene under one method,
 // of a trace file, or of a conformance test's stream (docs/history.md).
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <algorithm>
 #include <regex>
@@ -18,6 +19,9 @@
 #include "vectors.h"
 #include "pipeline/passes.h"
 #include "pipeline/render.h"
+#include "pixel_retires.h"
+#include "rtl_params.h"
+#include "tile_io.h"
 #include "scene_options.h"
 
 namespace zb::app {
@@ -31,6 +35,8 @@ constexpr size_t kMaxPixels = 4096;  // the histories are held whole; a frame's 
 struct PixelOptions {
   FrameOptions frame;
   std::string method = "three-pass";
+  std::string backend = "golden";
+  std::string schedule = "tile";
   std::string trace;
   std::string at;
   std::string json;
@@ -82,6 +88,24 @@ void write_histories(const FrameHistory& f, const std::string& title, const std:
   if (!json.empty()) write_or_fail(write_file_atomic(json, history_json(f, source, method, scene)));
 }
 
+void add_rtl(FrameHistory& f, const std::string& schedule_text,
+             const std::function<void(Backend&)>& run) {
+  RtlOptions o;
+  if (!parse_schedule(schedule_text, o.schedule))
+    throw UsageError(fmt::format("--schedule: unknown schedule '{}' (choose from tile, pass)", schedule_text));
+  add_rtl_retires(f, o, run);
+}
+
+void check_backend(const CLI::App& cmd, const PixelOptions& o, int depth_bits) {
+  if (o.backend != "golden" && o.backend != "rtl")
+    throw UsageError(fmt::format("--backend: unknown backend '{}' (choose from golden, rtl)", o.backend));
+  if (o.backend == "golden" && cmd.count("--schedule"))
+    throw UsageError("--schedule: needs --backend rtl");
+  if (o.backend == "rtl" && depth_bits != kRtlDepthBits)
+    throw UsageError(fmt::format("--backend rtl: the RTL model is built with {}-bit depth, not {}",
+                                 kRtlDepthBits, depth_bits));
+}
+
 void check_json(const std::string& json) {
   if (!json.empty() && json != "-") check_writable("--json", json, ".json");
 }
@@ -99,7 +123,9 @@ void run_trace_pixel(const CLI::App& cmd, const PixelOptions& o) {
   } catch (const TraceError& e) {
     throw UsageError(e.what());
   }
-  const FrameHistory f = record_history(trace, parse_at(o.at, trace.width, trace.height));
+  check_backend(cmd, o, trace.depth_bits);
+  FrameHistory f = record_history(trace, parse_at(o.at, trace.width, trace.height));
+  if (o.backend == "rtl") add_rtl(f, o.schedule, [&](Backend& b) { replay_trace(trace, b); });
   write_histories(f, fmt::format("trace {} ({} passes)", o.trace, f.passes.size()), o.trace, "", o.json, nullptr);
 }
 
@@ -110,11 +136,13 @@ void run_pixel(const CLI::App& cmd, const PixelOptions& o) {
   const PassPlan* plan = find_plan(o.method);
   if (!plan)
     throw UsageError(fmt::format("--method: unknown method '{}' (see 'zblend methods')", o.method));
+  check_backend(cmd, o, vp.depth_bits);
   check_json(o.json);
   const Scene scene = resolve_scene_with_background(o.frame, o.background);
   if (!o.quiet) print_warnings("zblend pixel", scene);
   const RasterizedScene rs = rasterize_scene(scene, vp);
-  const FrameHistory f = record_history(rs, *plan, pixels);  // replay-checked
+  FrameHistory f = record_history(rs, *plan, pixels);  // replay-checked
+  if (o.backend == "rtl") add_rtl(f, o.schedule, [&](Backend& b) { render(rs, *plan, b); });
   write_histories(f, fmt::format("scene {}, method {} ({} passes)", o.frame.scene, o.method, f.passes.size()),
                   o.frame.scene, o.method, o.json, &scene);
 }
@@ -152,6 +180,11 @@ void add_pixel_command(CLI::App& app) {
   add_frame_options(cmd, o->frame);
   cmd->add_option("--method,-m", o->method, "Method (see 'zblend methods')")->capture_default_str();
   cmd->add_option("--trace", o->trace, "A trace file (.zbt, zblend trace) instead of a scene and method");
+  cmd->add_option("--backend,-b", o->backend,
+                  "golden, or rtl: the Verilated RTL runs the frame too, and each fragment's "
+                  "retire (its cycles, and a write that is not the golden model's) is shown")
+      ->capture_default_str();
+  cmd->add_option("--schedule", o->schedule, "RTL: tile or pass (as zblend render)")->capture_default_str();
   cmd->add_option("--at", o->at, "Pixel X,Y (column, row from the top-left); several: X,Y;X,Y")
       ->required();
   cmd->add_option("--json", o->json, "The histories as JSON to this file (- : to stdout, instead of the text)");

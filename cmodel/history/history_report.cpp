@@ -104,6 +104,25 @@ std::string fragment_text(const FrameHistory& f, const PassRecord& pass, const H
   return s + writes_text(f, r.writes) + "\n";
 }
 
+// The RTL's retires of the event's fragment: the cycles, and any write that is not the golden
+// model's.
+std::string rtl_text(const FrameHistory& f, const PixelHistory& h, const HistoryEvent& e) {
+  std::string s;
+  bool accepted = false;
+  for (const RetireRecord& r : h.rtl) {
+    if (r.extra || r.pass != e.pass || r.index != e.fragment.index) continue;
+    if (!accepted) s += fmt::format("    rtl: accepted at cycle {}", r.accepted);
+    accepted = true;
+    if (r.missing) {
+      s += fmt::format("; {} MISSING: never retired", r.x11 ? "X11" : "X4");
+      continue;
+    }
+    s += fmt::format("; {} at cycle {}", r.x11 ? "X11" : "X4", r.cycle);
+    if (!same_stage_writes(r, e.fragment.writes)) s += " MISMATCH: the RTL " + writes_text(f, r.writes);
+  }
+  return accepted ? s + "\n" : "    rtl: no retire of this fragment seen\n";
+}
+
 std::string op_text(const FrameHistory& f, const HistoryEvent& e) {
   std::string s = fmt::format("  frame operation {}", to_string(e.op.kind));
   if (e.op.kind == FrameOpKind::kClearColor || e.op.kind == FrameOpKind::kResolveUnder)
@@ -223,11 +242,19 @@ std::string history_text(const FrameHistory& f, const PixelHistory& h, const Sce
       shown = e.pass;
     }
     s += fragment_text(f, f.passes.at(e.pass), e, scene);
+    if (h.rtl_ran) s += rtl_text(f, h, e);
   }
   size_t fragments = 0;
   for (const HistoryEvent& e : h.events) fragments += e.kind == HistoryEvent::Kind::kFragment;
   if (fragments == 0) s += "  no fragment reached the pixel\n";
+  for (const RetireRecord& r : h.rtl)
+    if (r.extra) s += fmt::format("  rtl: EXTRA {} write at cycle {} with no fragment waiting: {}\n",
+                                  r.x11 ? "X11" : "X4", r.cycle, writes_text(f, r.writes));
   s += "final  " + value_text(f, h.final_value) + "\n";
+  if (h.rtl_ran)
+    s += h.rtl_final == h.final_value
+             ? "rtl    the same on every plane\n"
+             : "rtl    DIFFERS: " + value_text(f, h.rtl_final) + "\n";
   if (h.reference) {
     const ReferencePixel& r = *h.reference;
     s += fmt::format("exact reference: {} layer{} nearest first", r.layers.size(), r.layers.size() == 1 ? "" : "s");
@@ -273,11 +300,27 @@ std::string history_json(const FrameHistory& f, const std::string& scene_name, c
     json events = json::array();
     for (const HistoryEvent& e : h.events) {
       events.push_back(event_json(e));
+      if (h.rtl_ran && e.kind == HistoryEvent::Kind::kFragment) {
+        json rtl = json::array();
+        for (const RetireRecord& r : h.rtl)
+          if (!r.extra && r.pass == e.pass && r.index == e.fragment.index)
+            rtl.push_back({{"stage", r.x11 ? "X11" : "X4"}, {"missing", r.missing},
+                           {"accepted", r.accepted}, {"cycle", r.cycle},
+                           {"same_as_golden", !r.missing && same_stage_writes(r, e.fragment.writes)}});
+        events.back()["rtl"] = rtl;
+      }
       if (scene && e.kind == HistoryEvent::Kind::kFragment && !f.passes.at(e.pass).edges)
         events.back()["fragment"]["source"] = triangle_source(*scene, e.fragment.fragment.prim);
     }
     json p{{"x", h.x}, {"y", h.y}, {"first", value_json(h.first)}, {"events", events},
            {"final", value_json(h.final_value)}};
+    if (h.rtl_ran) {
+      json extra = json::array();
+      for (const RetireRecord& r : h.rtl)
+        if (r.extra) extra.push_back({{"stage", r.x11 ? "X11" : "X4"}, {"cycle", r.cycle}});
+      p["rtl_extra"] = extra;
+      p["rtl_final"] = value_json(h.rtl_final);
+    }
     if (h.reference) {
       json layers = json::array();
       for (const ReferenceLayer& l : h.reference->layers) {

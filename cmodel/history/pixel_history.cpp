@@ -109,6 +109,15 @@ FrameHistory HistoryRecorder::take() {
   return std::move(frame_);
 }
 
+bool same_stage_writes(const RetireRecord& r, const PixelWrites& g) {
+  const PixelWrites& w = r.writes;
+  if (!r.x11)
+    return w.depth == g.depth && (!w.depth || w.z == g.z) && w.coverage == g.coverage &&
+           (!w.coverage || w.cov == g.cov);
+  return w.color == g.color && (!w.color || w.rgba == g.rgba) && w.accum == g.accum &&
+         (!w.accum || (w.acc == g.acc && w.reveal == g.reveal));
+}
+
 namespace {
 
 // The planes where two values differ, "colour, depth".

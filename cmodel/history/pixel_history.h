@@ -59,6 +59,22 @@ struct PassRecord {
   bool edges = false;      // draws the scene's edges (Fragment::prim an edge), not triangles
 };
 
+// The RTL's retire of a fragment at the pixel (zblend pixel --backend rtl): its stage (X4 writes
+// depth and coverage, X11 colour or the accumulation), the cycles since reset it was accepted
+// and its write landed, and what the RTL wrote. An extra retire has no fragment; a missing one
+// never wrote.
+struct RetireRecord {
+  bool x11 = false;
+  bool extra = false, missing = false;
+  size_t pass = 0;
+  uint32_t index = 0;
+  uint64_t accepted = 0, cycle = 0;
+  PixelWrites writes;
+};
+
+// Whether an RTL retire's writes are the golden model's for its stage.
+bool same_stage_writes(const RetireRecord& r, const PixelWrites& golden);
+
 struct PixelHistory {
   int x = 0, y = 0;
   PixelValue first;        // at the frame's start
@@ -68,6 +84,9 @@ struct PixelHistory {
   // CIEDE2000 against it.
   std::optional<ReferencePixel> reference;
   double delta_e = 0;
+  std::vector<RetireRecord> rtl;  // with the RTL beside: its retires at the pixel, in order
+  bool rtl_ran = false;
+  PixelValue rtl_final;           // and the RTL's frame there at the end
 };
 
 struct FrameHistory {

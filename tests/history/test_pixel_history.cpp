@@ -219,6 +219,34 @@ TEST(PixelHistory, JsonParsesBackAndReplays) {
   EXPECT_THROW(parse_history_json(R"({"zblend_pixel_history": 1, "width": 2})"), std::invalid_argument);
 }
 
+// The RTL's retires as the text shows them: cycles; a write that is not the golden model's, a
+// retire missing, an extra one, a fragment with none, a final value that differs.
+TEST(PixelHistory, RtlRetiresInTheText) {
+  FrameHistory f = record_history(two_squares(), *find_plan("opaque"), {{2, 2}});
+  PixelHistory& h = f.pixels[0];
+  ASSERT_EQ(h.events.size(), 2u);
+  const HistoryEvent& a = h.events[0];
+  h.rtl_ran = true;
+  h.rtl_final = h.final_value;
+  h.rtl.push_back({false, false, false, a.pass, uint32_t(a.fragment.index), 100, 108, a.fragment.writes});
+  h.rtl.push_back({true, false, false, a.pass, uint32_t(a.fragment.index), 100, 115, a.fragment.writes});
+  std::string t = history_text(f, h);
+  EXPECT_NE(t.find("rtl: accepted at cycle 100; X4 at cycle 108; X11 at cycle 115\n"), std::string::npos) << t;
+  EXPECT_NE(t.find("rtl: no retire of this fragment seen"), std::string::npos) << t;  // the second
+  EXPECT_NE(t.find("rtl    the same on every plane"), std::string::npos) << t;
+  EXPECT_EQ(t.find("MISMATCH"), std::string::npos);
+
+  h.rtl[1].writes.rgba.r ^= 1;  // X11 wrote another colour
+  h.rtl[0].missing = true;
+  h.rtl.push_back({true, true, false, 0, 0, 0, 130, a.fragment.writes});
+  h.rtl_final.color.r ^= 1;
+  t = history_text(f, h);
+  EXPECT_NE(t.find("X4 MISSING: never retired"), std::string::npos) << t;
+  EXPECT_NE(t.find("X11 at cycle 115 MISMATCH: the RTL wrote colour"), std::string::npos) << t;
+  EXPECT_NE(t.find("rtl: EXTRA X11 write at cycle 130"), std::string::npos) << t;
+  EXPECT_NE(t.find("rtl    DIFFERS"), std::string::npos) << t;
+}
+
 TEST(PixelHistory, PixelsOutsideTheFrameOrTwiceAreRefused) {
   const RasterizedScene rs = two_squares();
   EXPECT_THROW(record_history(rs, *find_plan("opaque"), {{kW, 0}}), std::invalid_argument);
