@@ -4,6 +4,8 @@
 // is checked word by word by the kit's decoder (vectors.h decode_stream) before it is replayed.
 #include "zb_golden.h"
 
+#include <cstring>
+
 #include <exception>
 #include <memory>
 #include <new>
@@ -13,6 +15,7 @@
 
 #include "geometry/geometry.h"
 #include "rop/rop.h"
+#include "history/history_report.h"
 #include "vectors.h"
 
 struct zb_golden {
@@ -161,6 +164,31 @@ int zb_golden_replay_file(zb_golden** out, const char* stream_path) {
     }
     g->started = true;
     *out = g.release();
+    return kOk;
+  });
+}
+
+int zb_golden_pixel_history(const char* stream_path, int x, int y, char* json, size_t size,
+                            size_t* needed) {
+  return handleless("zb_golden_pixel_history", [&]() -> Failure {
+    if (!stream_path) return {ZB_EARG, "stream_path is NULL (give a test's stream.hex)"};
+    zb::Trace t;
+    try {
+      t = zb::conformance::read_stream(stream_path);
+    } catch (const zb::TraceError& e) {
+      return {ZB_EARG, e.what()};
+    }
+    if (x < 0 || y < 0 || x >= t.width || y >= t.height)
+      return {ZB_EARG, fmt::format("pixel ({}, {}) is outside the {}x{} frame of {}", x, y, t.width,
+                                   t.height, stream_path)};
+    for (zb::TracePass& p : t.passes) p.name.clear();  // stream.hex names none
+    const std::string text = zb::history_json(zb::record_history(t, {{x, y}}), stream_path, "");
+    if (needed) *needed = text.size() + 1;
+    if (!json && size == 0) return kOk;  // the length asked for
+    if (!json || size < text.size() + 1)
+      return {ZB_EARG, fmt::format("json holds {} bytes; the history needs {} (ask with size 0)",
+                                   json ? size : 0, text.size() + 1)};
+    std::memcpy(json, text.c_str(), text.size() + 1);
     return kOk;
   });
 }

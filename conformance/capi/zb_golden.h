@@ -113,6 +113,16 @@ int zb_golden_read(zb_golden* g, int plane, int x, int y, uint32_t* value);
  * be read or is not a valid stream, ZB_ENOMEM for a frame too big. */
 int zb_golden_replay_file(zb_golden** out, const char* stream_path);
 
+/* The history of pixel (x, y) in the replay of a stream.hex (`zblend pixel`'s JSON,
+ * docs/history.md): every fragment that reached the pixel, pass by pass, the tests' outcomes,
+ * the blend, what was written, the frame operations and the final value, checked by replaying
+ * its writes. The JSON and its NUL go to json[0..size) when they fit; *needed (may be NULL)
+ * gets their length either way, so a call with json NULL and size 0 asks for it. ZB_EARG for
+ * a bad stream, a pixel outside its frame, or a json too small (left untouched);
+ * zb_golden_last_error(NULL) says which. */
+int zb_golden_pixel_history(const char* stream_path, int x, int y, char* json, size_t size,
+                            size_t* needed);
+
 /* The frame's widths, as created (or read from FRAME); any pointer may be NULL. */
 int zb_golden_frame_info(zb_golden* g, int* width, int* height, int* depth_bits,
                          int* coverage_samples, int* acc_bits, int* rev_bits, int* weight_bits);

@@ -4,7 +4,8 @@
   test_kit.py errors LIB SUITE TEST      zbgolden's errors: each a ZbGoldenError carrying the
                                          C API's line (a missing stream, a truncated one, a bad
                                          plane name, a closed frame, a suite without the test),
-                                         and a changed expect word found at its pixel
+                                         a changed expect word found at its pixel, and a pixel's
+                                         history ending at its expect words
   test_kit.py program KIT ZBLEND WORK    zblend-conformance's export equals zblend's byte for
                                          byte (--quick), and its check passes on the expect
                                          files as got files
@@ -79,6 +80,26 @@ def errors(lib, suite_dir, test):
     check(result["depth"] == (1, (3, 1)) and all(n == 0 for p, (n, _) in result.items()
                                                   if p != "depth"),
           f"a changed depth word is found at (3, 1): {result}")
+    # The pixel's history from the suite alone (the frame's middle, where the scene is): it
+    # ends at the expect words, after fragments that reached it.
+    x, y = w // 2, suite.test(test)["height"] // 2
+    h = suite.history(test, x, y, zbgolden.load(lib))["pixels"][0]
+    r, g, b, a = h["final"]["color"]
+    colour = int(suite.expect(test, "color")[y, x])
+    check((h["x"], h["y"]) == (x, y) and r | g << 8 | b << 16 | a << 24 == colour and
+          h["final"]["depth"] == int(suite.expect(test, "depth")[y, x]),
+          f"the history of ({x}, {y}) ends at its expect words ({len(h['events'])} events)")
+    kinds = [e["kind"] for e in h["events"]]
+    check("fragment" in kinds and set(kinds) <= {"fragment", "frame_op"},
+          f"the history holds the fragments that reached the pixel: {kinds}")
+    check(raises(lambda: suite.history(test, w, 0, zbgolden.load(lib)), "zb_golden_pixel_history:",
+                 f"pixel ({w}, 0) is outside"), "a pixel outside the frame raises")
+    with open(stream, "w") as f:
+        f.writelines(lines[:40])
+    check(raises(lambda: zbgolden.Suite(work).history(test, 0, 0, zbgolden.load(lib)), stream,
+                 "truncated"), "the history of a truncated stream raises, naming the file")
+    with open(stream, "w") as f:
+        f.writelines(lines)
 
 
 def program(kit, zblend, work):
@@ -108,6 +129,9 @@ def program(kit, zblend, work):
     tests = sum(os.path.isdir(os.path.join(a, t)) for t in os.listdir(a))
     check(r.returncode == 0 and f"{tests} of {tests} tests pass" in r.stdout,
           "zblend-conformance check passes the expect files")
+    r = subprocess.run([kit, "pixel", a, "hazard", "--at", "3,3"], capture_output=True, text=True)
+    check(r.returncode == 0 and "pixel (3, 3)" in r.stdout and "\nfinal  colour" in r.stdout,
+          f"zblend-conformance pixel prints a history: {r.stdout[:200]}{r.stderr}")
     r = subprocess.run([kit, "check", a], capture_output=True, text=True)
     check(r.returncode == 2 and r.stderr.startswith("zblend-conformance") and
           r.stderr.count("\n") == 1, f"a usage error: exit 2, one line: {r.stderr.strip()}")

@@ -66,6 +66,8 @@ _SIGNATURES = {  # name: (result, argument types), as zb_golden.h declares them
     "zb_golden_frame_info": (_I, [ctypes.c_void_p] + [_P(_I)] * 7),
     "zb_golden_read_plane": (_I, [ctypes.c_void_p, _I, _P(_U32), ctypes.c_size_t]),
     "zb_golden_last_error": (ctypes.c_char_p, [ctypes.c_void_p]),
+    "zb_golden_pixel_history": (_I, [ctypes.c_char_p, _I, _I, ctypes.c_char_p, ctypes.c_size_t,
+                                     _P(ctypes.c_size_t)]),
 }
 _lib = None
 
@@ -191,6 +193,21 @@ class Suite:
     def replay(self, name, lib=None):
         self.test(name)
         return Frame.replay(os.path.join(self.path, name, "stream.hex"), lib)
+
+    def history(self, name, x, y, lib=None):
+        """Pixel (x, y)'s history in the test (zblend pixel's JSON as a dict, docs/history.md):
+        ["pixels"][0]["events"] are the fragments that reached it and the frame operations."""
+        self.test(name)
+        lib = lib or load()
+        path = os.fsencode(os.path.join(self.path, name, "stream.hex"))
+        needed = ctypes.c_size_t()
+        for size in (0, None):
+            buf = None if size == 0 else ctypes.create_string_buffer(needed.value)
+            status = lib.zb_golden_pixel_history(path, x, y, buf, needed.value if buf else 0,
+                                                 ctypes.byref(needed))
+            if status != ZB_OK:
+                raise ZbGoldenError(lib.zb_golden_last_error(None).decode(), status)
+        return json.loads(buf.value.decode())
 
     def expect(self, name, plane):
         """expect.<plane>.hex as plane() returns it (plane one of EXPECT_PLANES)."""

@@ -1,0 +1,64 @@
+// conformance pixel (zblend and the kit's zblend-conformance): the history of a few pixels of a
+// conformance test's stream, from the suite alone (docs/history.md).
+#include <algorithm>
+#include <memory>
+
+#include <fmt/core.h>
+
+#include "check.h"
+#include "cli.h"
+#include "commands.h"
+#include "history/pixel_history.h"
+#include "io/trace.h"
+#include "pixel_common.h"
+#include "vectors.h"
+
+namespace zb::app {
+
+using namespace cli;
+
+namespace {
+
+struct SuitePixelOptions {
+  std::string suite, test, at, json;
+};
+
+void run_suite_pixel(const SuitePixelOptions& o) {
+  std::vector<std::string> names;
+  try {
+    names = conformance::suite_test_names(o.suite);
+  } catch (const std::exception& e) {
+    throw UsageError(e.what());
+  }
+  if (std::find(names.begin(), names.end(), o.test) == names.end())
+    throw UsageError(fmt::format("TEST: '{}' is not a test of {} (its manifest.json names them)",
+                                 o.test, o.suite));
+  check_json(o.json);
+  Trace trace;
+  try {
+    trace = conformance::read_stream(o.suite + "/" + o.test + "/stream.hex");
+  } catch (const TraceError& e) {
+    throw UsageError(e.what());
+  }
+  for (TracePass& p : trace.passes) p.name.clear();  // stream.hex names none: decode numbers them
+  const FrameHistory f = record_history(trace, parse_at(o.at, trace.width, trace.height));
+  write_histories(f, fmt::format("conformance test {} of {} ({} passes)", o.test, o.suite, f.passes.size()),
+                  o.suite + "/" + o.test, "", o.json, nullptr);
+}
+
+}  // namespace
+
+void add_suite_pixel_command(CLI::App& parent) {
+  auto o = std::make_shared<SuitePixelOptions>();
+  CLI::App* cmd = parent.add_subcommand(
+      "pixel", "The history of a pixel of a test of SUITE, from the suite alone: every fragment "
+               "of its stream that reached the pixel and what the golden model did with it");
+  cmd->add_option("SUITE", o->suite, "The suite's directory (conformance export)")->required();
+  cmd->add_option("TEST", o->test, "The test's name (its directory in SUITE)")->required();
+  cmd->add_option("--at", o->at, "Pixel X,Y (column, row from the top-left); several: X,Y;X,Y")
+      ->required();
+  cmd->add_option("--json", o->json, "The histories as JSON to this file (- : to stdout, instead of the text)");
+  cmd->callback([o] { run_suite_pixel(*o); });
+}
+
+}  // namespace zb::app

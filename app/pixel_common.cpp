@@ -1,0 +1,60 @@
+#include "pixel_common.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <regex>
+
+#include <fmt/core.h>
+
+#include "cli.h"
+#include "history/history_report.h"
+#include "io/image.h"
+#include "output_paths.h"
+
+namespace zb::app {
+
+using namespace cli;
+
+std::vector<std::pair<int, int>> parse_at(const std::string& text, int width, int height) {
+  if (text.empty()) throw UsageError("--at: give the pixel as X,Y (several: X,Y;X,Y)");
+  static const std::regex one(R"(\s*(\d{1,6})\s*,\s*(\d{1,6})\s*)");
+  std::vector<std::pair<int, int>> out;
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t end = std::min(text.find(';', start), text.size());
+    const std::string part = text.substr(start, end - start);
+    std::smatch m;
+    if (!std::regex_match(part, m, one))
+      throw UsageError(fmt::format("--at: '{}' is not X,Y (two whole numbers, pixel column and "
+                                   "row from the top-left)", part));
+    const int x = std::stoi(m[1]), y = std::stoi(m[2]);
+    if (x >= width || y >= height)
+      throw UsageError(fmt::format("--at: pixel ({}, {}) is outside the {}x{} frame (columns 0 to "
+                                   "{}, rows 0 to {})", x, y, width, height, width - 1, height - 1));
+    for (const auto& p : out)
+      if (p == std::make_pair(x, y)) throw UsageError(fmt::format("--at: pixel ({}, {}) given twice", x, y));
+    out.emplace_back(x, y);
+    if (out.size() > kMaxPixels)
+      throw UsageError(fmt::format("--at: more than {} pixels; render the frame instead", kMaxPixels));
+    start = end + 1;
+  }
+  return out;
+}
+
+void check_json(const std::string& json) {
+  if (!json.empty() && json != "-") check_writable("--json", json, ".json");
+}
+
+void write_histories(const FrameHistory& f, const std::string& title, const std::string& source,
+                     const std::string& method, const std::string& json, const Scene* scene) {
+  if (json == "-") {
+    std::fputs(history_json(f, source, method, scene).c_str(), stdout);
+    return;
+  }
+  std::string text = title + "\n";
+  for (const PixelHistory& h : f.pixels) text += "\n" + history_text(f, h, scene);
+  std::fputs(text.c_str(), stdout);
+  if (!json.empty()) write_or_fail(write_file_atomic(json, history_json(f, source, method, scene)));
+}
+
+}  // namespace zb::app
