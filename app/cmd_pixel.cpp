@@ -9,6 +9,7 @@
 
 #include "cli.h"
 #include "commands.h"
+#include "output_paths.h"
 #include "pixel_common.h"
 #include "io/trace.h"
 #include "pipeline/passes.h"
@@ -29,6 +30,7 @@ struct PixelOptions {
   std::string method = "three-pass";
   std::string backend = "golden";
   std::string schedule = "tile";
+  std::string waves;
   std::string trace;
   std::string at;
   std::string json;
@@ -36,19 +38,26 @@ struct PixelOptions {
   bool quiet = false;
 };
 
-void add_rtl(FrameHistory& f, const std::string& schedule_text,
-             const std::function<void(Backend&)>& run) {
+void add_rtl(FrameHistory& f, const PixelOptions& po, const std::function<void(Backend&)>& run) {
   RtlOptions o;
-  if (!parse_schedule(schedule_text, o.schedule))
-    throw UsageError(fmt::format("--schedule: unknown schedule '{}' (choose from tile, pass)", schedule_text));
+  if (!parse_schedule(po.schedule, o.schedule))
+    throw UsageError(fmt::format("--schedule: unknown schedule '{}' (choose from tile, pass)", po.schedule));
+  o.trace_path = po.waves;
   add_rtl_retires(f, o, run);
+  if (!po.waves.empty()) {
+    const std::string gtkw = write_pixel_save_file(f, po.waves);
+    fmt::print(stderr, "zblend pixel: waves: {} (the whole run), {} (gtkwave {}): markers at the "
+                       "first pixel's accepts and writes\n", po.waves, gtkw, gtkw);
+  }
 }
 
 void check_backend(const CLI::App& cmd, const PixelOptions& o, int depth_bits) {
   if (o.backend != "golden" && o.backend != "rtl")
     throw UsageError(fmt::format("--backend: unknown backend '{}' (choose from golden, rtl)", o.backend));
-  if (o.backend == "golden" && cmd.count("--schedule"))
-    throw UsageError("--schedule: needs --backend rtl");
+  for (const char* option : {"--schedule", "--waves"})
+    if (o.backend == "golden" && cmd.count(option))
+      throw UsageError(fmt::format("{}: needs --backend rtl", option));
+  if (!o.waves.empty()) check_writable("--waves", o.waves, ".fst");
   if (o.backend == "rtl" && depth_bits != kRtlDepthBits)
     throw UsageError(fmt::format("--backend rtl: the RTL model is built with {}-bit depth, not {}",
                                  kRtlDepthBits, depth_bits));
@@ -69,7 +78,7 @@ void run_trace_pixel(const CLI::App& cmd, const PixelOptions& o) {
   }
   check_backend(cmd, o, trace.depth_bits);
   FrameHistory f = record_history(trace, parse_at(o.at, trace.width, trace.height));
-  if (o.backend == "rtl") add_rtl(f, o.schedule, [&](Backend& b) { replay_trace(trace, b); });
+  if (o.backend == "rtl") add_rtl(f, o, [&](Backend& b) { replay_trace(trace, b); });
   write_histories(f, fmt::format("trace {} ({} passes)", o.trace, f.passes.size()), o.trace, "", o.json, nullptr);
 }
 
@@ -86,7 +95,7 @@ void run_pixel(const CLI::App& cmd, const PixelOptions& o) {
   if (!o.quiet) print_warnings("zblend pixel", scene);
   const RasterizedScene rs = rasterize_scene(scene, vp);
   FrameHistory f = record_history(rs, *plan, pixels);  // replay-checked
-  if (o.backend == "rtl") add_rtl(f, o.schedule, [&](Backend& b) { render(rs, *plan, b); });
+  if (o.backend == "rtl") add_rtl(f, o, [&](Backend& b) { render(rs, *plan, b); });
   write_histories(f, fmt::format("scene {}, method {} ({} passes)", o.frame.scene, o.method, f.passes.size()),
                   o.frame.scene, o.method, o.json, &scene);
 }
@@ -106,6 +115,9 @@ void add_pixel_command(CLI::App& app) {
                   "retire (its cycles, and a write that is not the golden model's) is shown")
       ->capture_default_str();
   cmd->add_option("--schedule", o->schedule, "RTL: tile or pass (as zblend render)")->capture_default_str();
+  cmd->add_option("--waves", o->waves,
+                  "RTL: the run's FST, and beside it a GTKWave save file with a marker at each "
+                  "accept and write of the (first) pixel");
   cmd->add_option("--at", o->at, "Pixel X,Y (column, row from the top-left); several: X,Y;X,Y")
       ->required();
   cmd->add_option("--json", o->json, "The histories as JSON to this file (- : to stdout, instead of the text)");

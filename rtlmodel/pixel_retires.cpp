@@ -41,6 +41,7 @@ void PixelRetires::settle(const RtlRop& rtl) {
       const size_t k = rtl.pass_of(r.fragment);
       p.pass = pass0 + k;
       p.index = r.fragment - first[k];
+      p.stream = r.fragment;
       p.accepted = rtl.accept_cycles().at(r.fragment);
     }
     done_.push_back(p);
@@ -81,10 +82,32 @@ void add_rtl_retires(FrameHistory& f, const RtlOptions& options,
     for (const PixelRetire& r : retires.retires())
       if (r.x == h.x && r.y == h.y)
         h.rtl.push_back(RetireRecord{r.stage == RetireStage::kX11, r.extra, r.missing, r.pass,
-                                     r.index, r.accepted, r.cycle, r.writes});
+                                     r.index, r.stream, r.accepted, r.cycle, r.writes});
     std::stable_sort(h.rtl.begin(), h.rtl.end(),
                      [](const RetireRecord& a, const RetireRecord& b) { return a.cycle < b.cycle; });
   }
+}
+
+std::string write_pixel_save_file(const FrameHistory& f, const std::string& fst) {
+  std::vector<WaveMarker> all;
+  for (const PixelHistory& h : f.pixels)
+    for (const RetireRecord& r : h.rtl) {
+      if (r.extra || r.missing) continue;
+      const std::string n = "#" + std::to_string(r.stream);
+      if (!r.x11) all.push_back({r.accepted, n + " accepted"});
+      all.push_back({r.cycle, n + (r.x11 ? " X11" : " X4")});
+    }
+  std::stable_sort(all.begin(), all.end(),
+                   [](const WaveMarker& a, const WaveMarker& b) { return a.cycle < b.cycle; });
+  WaveView view;
+  view.markers.assign(all.begin(), all.begin() + std::ptrdiff_t(std::min<size_t>(all.size(), 26)));
+  if (!view.markers.empty()) {
+    view.from = view.markers.front().cycle > 8 ? view.markers.front().cycle - 8 : 0;
+    view.to = view.markers.back().cycle + 8;
+  }
+  if (!f.pixels.empty())
+    view.title = "pixel (" + std::to_string(f.pixels[0].x) + ", " + std::to_string(f.pixels[0].y) + ")";
+  return write_save_file(fst, view);
 }
 
 }  // namespace zb

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <mutex>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -22,6 +23,7 @@ struct PixelRetire {
   RetireStage stage = RetireStage::kX4;
   size_t pass = 0;                      // in the frame, from 0
   uint32_t index = 0;                   // the fragment's in its pass
+  uint32_t stream = 0;                  // and in its group's stream (the waveform's tb.*_index)
   uint64_t accepted = 0, cycle = 0;     // cycles since reset: accepted, the write's edge
   PixelWrites writes;                   // the RTL's
 };
@@ -77,5 +79,10 @@ class SettledRtl final : public Backend {
 // order, with the RTL's final value there.
 void add_rtl_retires(FrameHistory& f, const RtlOptions& options,
                      const std::function<void(Backend&)>& run);
+
+// The save file of a run's FST (options.trace_path of add_rtl_retires) zoomed on f's first
+// pixels' retires, a marker at each accept ("#N accepted") and write ("#N X4", "#N X11"), the
+// first 26 in cycle order. Returns its path.
+std::string write_pixel_save_file(const FrameHistory& f, const std::string& fst);
 
 }  // namespace zb

@@ -10,7 +10,8 @@ The FST is read with GTKWave's own fst2vcd, not with the code that wrote both fi
   - a marker "first wrong write #N" sits on a rising edge (10 ns clock: 5 ns past a multiple of
     10) where tb.mismatch is 1 (and was 0 the cycle before) and the X4 or X11 probe names
     fragment N; a marker "#N accepted" on a rising edge where, in that cycle, zb_rop offered
-    fragment N (tb.frag_index) with frag_valid_i and frag_ready_o high;
+    fragment N (tb.frag_index) with frag_valid_i and frag_ready_o high; a marker "#N X4" or
+    "#N X11" (zblend pixel's) on a rising edge where that stage's probe retires fragment N;
   - the zoom's span holds every marker.
 With --gtkwave, GTKWave itself (under Xvfb) opens the save file: it must show every listed
 signal and group, and its named marker A at the save file's time.
@@ -114,7 +115,14 @@ def check(path, window, use_gtkwave):
             errors.append(f"marker {letter} ({name}) at {t} ps is outside the zoomed span")
         m = re.fullmatch(r"first wrong write(?: #(\d+))?", name)
         a = re.fullmatch(r"#(\d+) accepted", name)
-        if m:
+        w = re.fullmatch(r"#(\d+) (X4|X11)", name)
+        if w:
+            n, st = int(w.group(1)), w.group(2).lower()
+            if not (value_at(ch, f"tb.{st}_retire", t) == 1 and
+                    value_at(ch, f"tb.{st}_index[31:0]", t) == n):
+                errors.append(f"marker {letter} ({name}) at {t}: no {w.group(2)} retire of "
+                              f"fragment {n} there")
+        elif m:
             if value_at(ch, "tb.mismatch", t) != 1 or value_at(ch, "tb.mismatch", t - PERIOD) != 0:
                 errors.append(f"marker {letter} ({name}) at {t}: tb.mismatch is not 1 there and 0 "
                               "the cycle before")

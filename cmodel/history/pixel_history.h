@@ -67,7 +67,8 @@ struct RetireRecord {
   bool x11 = false;
   bool extra = false, missing = false;
   size_t pass = 0;
-  uint32_t index = 0;
+  uint32_t index = 0;       // the fragment's in its pass
+  uint32_t stream = 0;      // in the RTL run's stream (its group's passes in order)
   uint64_t accepted = 0, cycle = 0;
   PixelWrites writes;
 };

@@ -228,8 +228,9 @@ TEST(PixelHistory, RtlRetiresInTheText) {
   const HistoryEvent& a = h.events[0];
   h.rtl_ran = true;
   h.rtl_final = h.final_value;
-  h.rtl.push_back({false, false, false, a.pass, uint32_t(a.fragment.index), 100, 108, a.fragment.writes});
-  h.rtl.push_back({true, false, false, a.pass, uint32_t(a.fragment.index), 100, 115, a.fragment.writes});
+  const auto i = uint32_t(a.fragment.index);
+  h.rtl.push_back({false, false, false, a.pass, i, i, 100, 108, a.fragment.writes});
+  h.rtl.push_back({true, false, false, a.pass, i, i, 100, 115, a.fragment.writes});
   std::string t = history_text(f, h);
   EXPECT_NE(t.find("rtl: accepted at cycle 100; X4 at cycle 108; X11 at cycle 115\n"), std::string::npos) << t;
   EXPECT_NE(t.find("rtl: no retire of this fragment seen"), std::string::npos) << t;  // the second
@@ -238,7 +239,7 @@ TEST(PixelHistory, RtlRetiresInTheText) {
 
   h.rtl[1].writes.rgba.r ^= 1;  // X11 wrote another colour
   h.rtl[0].missing = true;
-  h.rtl.push_back({true, true, false, 0, 0, 0, 130, a.fragment.writes});
+  h.rtl.push_back({true, true, false, 0, 0, 0, 0, 130, a.fragment.writes});
   h.rtl_final.color.r ^= 1;
   t = history_text(f, h);
   EXPECT_NE(t.find("X4 MISSING: never retired"), std::string::npos) << t;

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# zblend pixel --backend rtl --waves (docs/history.md "Beside the RTL"): the save file's markers
+# at the pixel's accepts and X4 and X11 writes are where the FST shows them (check_waves.py,
+# GTKWave under Xvfb), and the check refuses a write marker moved one cycle.
+set -u
+zblend=$(realpath "${1:?usage: test_pixel_waves.sh PATH/TO/zblend}")
+root=$(cd "$(dirname "$0")/../.." && pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+cd "$tmp" || exit 2
+
+"$zblend" pixel -q --scene cad -W 64 -H 48 -m depth-peel-2 --at "30,20" --backend rtl \
+  --waves px.fst >px.txt 2>px.err || fail "zblend pixel --waves: $(cat px.err)"
+[[ -s px.fst && -s px.gtkw ]] || fail "no FST or save file: $(ls)"
+grep -q "(gtkwave px.gtkw)" px.err || fail "stderr does not name the save file: $(cat px.err)"
+markers=$(grep -c '^\[markername\]' px.gtkw)
+[[ $markers -ge 6 ]] || fail "$markers markers, want an accept and two writes for two fragments at least"
+python3 "$root/scripts/check_waves.py" px.gtkw --gtkwave >check.txt 2>&1 || { cat check.txt; fail "check_waves.py"; }
+echo "ok: $(cat check.txt)"
+
+# Marker B (the first X4 write) one cycle late: refused, saying why.
+b=$(sed -n 's/^\*[^ ]* [0-9-]* [0-9-]* \([0-9]*\) .*/\1/p' px.gtkw)
+[[ -n $b ]] || fail "no marker B in the save file's marker line"
+sed "s/^\(\*[^ ]* [0-9-]* [0-9-]*\) $b /\1 $((b + 10000)) /" px.gtkw >late.gtkw
+python3 "$root/scripts/check_waves.py" late.gtkw >late.txt 2>&1 && fail "check_waves.py accepts an X4 marker one cycle late"
+grep -q "marker B (#[0-9]* X4) at $((b + 10000)): no X4 retire of fragment" late.txt ||
+  { cat late.txt; fail "check_waves.py does not say what is wrong with the late X4 marker"; }
+echo "ok: check_waves.py refuses an X4 marker one cycle late"
