@@ -6,6 +6,8 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
+#include "rop/blend.h"
+
 namespace zb {
 
 using json = nlohmann::json;
@@ -70,6 +72,37 @@ std::string writes_text(const FrameHistory& f, const PixelWrites& w) {
   return s.empty() ? "nothing written" : "wrote " + s;
 }
 
+// The blend's roundings per channel, as datapath.md pins them (m(x, y) the unorm8 multiply of
+// rop/blend.h): "R m(0,77)+m(255,178)=0+178=178, ...". Empty for modes without them here.
+std::string rounding_text(BlendMode mode, Rgba8 s, Rgba8 d) {
+  const uint8_t sv[4] = {s.r, s.g, s.b, s.a}, dv[4] = {d.r, d.g, d.b, d.a};
+  const char names[4] = {'R', 'G', 'B', 'A'};
+  const uint8_t a = s.a, t = uint8_t(255 - d.a);
+  std::string out;
+  for (int c = 0; c < 4; ++c) {
+    const uint8_t x = sv[c], y = dv[c];
+    std::string one;
+    if (mode == BlendMode::kAlpha) {
+      const int p = mul_unorm8(x, a), q = mul_unorm8(y, uint8_t(255 - a));
+      one = fmt::format("m({},{})+m({},{})={}+{}={}", x, a, y, 255 - a, p, q, std::min(255, p + q));
+    } else if (mode == BlendMode::kAdditive) {
+      const int p = mul_unorm8(x, a);
+      one = fmt::format("{}+m({},{})={}+{}={}", y, x, a, y, p, std::min(255, y + p));
+    } else if (mode == BlendMode::kUnder && c < 3) {
+      const uint8_t p = mul_unorm8(x, a);
+      const int q = mul_unorm8(p, t);
+      one = fmt::format("{}+m(m({},{}),{})={}+m({},{})={}", y, x, a, t, y, p, t, std::min(255, y + q));
+    } else if (mode == BlendMode::kUnder) {
+      const int q = mul_unorm8(a, t);
+      one = fmt::format("{}+m({},{})={}+{}={}", y, a, t, y, q, std::min(255, y + q));
+    } else {
+      return "";
+    }
+    out += fmt::format("{}{} {}", c ? ", " : "", names[c], one);
+  }
+  return out;
+}
+
 std::string fragment_text(const FrameHistory& f, const PassRecord& pass, const HistoryEvent& e,
                           const Scene* scene) {
   const FragmentRecord& r = e.fragment;
@@ -101,7 +134,12 @@ std::string fragment_text(const FrameHistory& f, const PassRecord& pass, const H
                        rgba_text(g.color), rgba_text(e.before.color), rgba_text(r.blended),
                        mask_text(pass.state.color_mask));
   }
-  return s + writes_text(f, r.writes) + "\n";
+  s += writes_text(f, r.writes) + "\n";
+  if (r.depth_passed && r.peel_passed) {
+    const std::string steps = rounding_text(pass.state.blend, g.color, e.before.color);
+    if (!steps.empty()) s += "    roundings: " + steps + "\n";
+  }
+  return s;
 }
 
 // The RTL's retires of the event's fragment: the cycles, and any write that is not the golden

@@ -94,8 +94,8 @@ case $mode in
     run --define ZB_CONF_INJECT_RESOLVE_BUG "$@"
     rc=$?
     [[ $rc == 1 ]] || fail "conformance.py exited $rc with the resolve defect, want 1"
-    line=$(grep -E "^FAIL  $tests: color pixel \(.*, accum ok\]$" "$out/log.txt") ||
-      fail "the checker did not name a colour pixel of $tests with the accumulation plane ok"
+    line=$(grep -E "^FAIL  $tests: color pixel \(.*, accum ok\]; why: .* conformance pixel .* $tests --at [0-9]+,[0-9]+$" "$out/log.txt") ||
+      fail "the checker did not name a colour pixel of $tests with the accumulation plane ok, and the command for its history"
     echo "ok: the wrong resolve caught under $sim: $line"
     ;;
   accum-bug)

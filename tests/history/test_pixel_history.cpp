@@ -100,6 +100,10 @@ TEST(PixelHistory, ThreePassPixelByHand) {
   const std::string text = history_text(f, h);
   EXPECT_NE(text.find("depth less 0x400000"), std::string::npos) << text;
   EXPECT_NE(text.find("composited: colour (128,0,127,255)"), std::string::npos) << text;
+  // Pass 1's roundings, as worked out above.
+  EXPECT_NE(text.find("roundings: R m(255,128)+m(0,127)=128+0=128, G m(0,128)+m(0,127)=0+0=0, "
+                      "B m(0,128)+m(255,127)=0+127=127, A m(128,128)+m(255,127)=64+127=191\n"),
+            std::string::npos) << text;
   EXPECT_NE(text.find("= (128,0,127,191)"), std::string::npos) << text;
   EXPECT_NE(text.find("final  colour (192,0,63,159)"), std::string::npos) << text;
 }

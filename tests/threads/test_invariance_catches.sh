@@ -22,7 +22,7 @@ expect_fail() {  # change, pattern the report must hold
   fi
 }
 expect_fail counter "FAIL: summary.csv: --threads 1 and --threads 3 differ at line 2"
-expect_fail png "FAIL: opaque.png: --threads 1 and --threads 3 differ at byte"
+expect_fail png "FAIL: opaque-error.png: --threads 1 and --threads 3 differ at byte"  # the first PNG: an error map
 if ! log=$(run host 2>&1); then
   printf '%s\n' "$log"
   echo "FAIL: host time and memory alone changed, and the checker failed"
