@@ -55,9 +55,7 @@ void add_suite_pixel_command(CLI::App& parent) {
                "of its stream that reached the pixel and what the golden model did with it");
   cmd->add_option("SUITE", o->suite, "The suite's directory (conformance export)")->required();
   cmd->add_option("TEST", o->test, "The test's name (its directory in SUITE)")->required();
-  cmd->add_option("--at", o->at, "Pixel X,Y (column, row from the top-left); several: X,Y;X,Y")
-      ->required();
-  cmd->add_option("--json", o->json, "The histories as JSON to this file (- : to stdout, instead of the text)");
+  add_at_json_options(cmd, o->at, o->json);
   cmd->callback([o] { run_suite_pixel(*o); });
 }
 

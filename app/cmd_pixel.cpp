@@ -118,9 +118,7 @@ void add_pixel_command(CLI::App& app) {
   cmd->add_option("--waves", o->waves,
                   "RTL: the run's FST, and beside it a GTKWave save file with a marker at each "
                   "accept and write of the (first) pixel");
-  cmd->add_option("--at", o->at, "Pixel X,Y (column, row from the top-left); several: X,Y;X,Y")
-      ->required();
-  cmd->add_option("--json", o->json, "The histories as JSON to this file (- : to stdout, instead of the text)");
+  add_at_json_options(cmd, o->at, o->json);
   add_background_option(cmd, o->background);
   cmd->add_flag("--quiet,-q", o->quiet, "No scene warnings");
   cmd->callback([o, cmd] { run_pixel(*cmd, *o); });

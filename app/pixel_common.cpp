@@ -15,6 +15,12 @@ namespace zb::app {
 
 using namespace cli;
 
+void add_at_json_options(CLI::App* cmd, std::string& at, std::string& json) {
+  cmd->add_option("--at", at, "Pixel X,Y (column, row from the top-left); several: X,Y;X,Y")
+      ->required();
+  cmd->add_option("--json", json, "The histories as JSON to this file (- : to stdout, instead of the text)");
+}
+
 std::vector<std::pair<int, int>> parse_at(const std::string& text, int width, int height) {
   if (text.empty()) throw UsageError("--at: give the pixel as X,Y (several: X,Y;X,Y)");
   static const std::regex one(R"(\s*(\d{1,6})\s*,\s*(\d{1,6})\s*)");

@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "history/pixel_history.h"
 #include "scene/scene.h"
 
@@ -13,6 +15,8 @@ namespace zb::app {
 
 constexpr size_t kMaxPixels = 4096;  // the histories are held whole; a frame's worth is a render
 
+// Registers --at (required) and --json on `cmd`.
+void add_at_json_options(CLI::App* cmd, std::string& at, std::string& json);
 // "X,Y[;X,Y...]" inside a width x height frame; UsageError naming --at otherwise.
 std::vector<std::pair<int, int>> parse_at(const std::string& text, int width, int height);
 // --json: "", "-" (stdout) or a writable .json path.

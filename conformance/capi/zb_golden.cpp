@@ -144,17 +144,27 @@ int zb_golden_create(zb_golden** out, int width, int height, int depth_bits,
   });
 }
 
+namespace {
+
+// A test's stream.hex into `t`, or the failure naming the file (and the line).
+Failure read_stream(const char* stream_path, zb::Trace& t) {
+  if (!stream_path) return {ZB_EARG, "stream_path is NULL (give a test's stream.hex)"};
+  try {
+    t = zb::conformance::read_stream(stream_path);
+  } catch (const zb::TraceError& e) {
+    return {ZB_EARG, e.what()};
+  }
+  return kOk;
+}
+
+}  // namespace
+
 int zb_golden_replay_file(zb_golden** out, const char* stream_path) {
   return handleless("zb_golden_replay_file", [&]() -> Failure {
     if (!out) return {ZB_EARG, kNoHandle};
     *out = nullptr;
-    if (!stream_path) return {ZB_EARG, "stream_path is NULL (give a test's stream.hex)"};
     zb::Trace t;
-    try {
-      t = zb::conformance::read_stream(stream_path);
-    } catch (const zb::TraceError& e) {
-      return {ZB_EARG, e.what()};
-    }
+    if (const Failure f = read_stream(stream_path, t); f.status != ZB_OK) return f;
     auto g = std::make_unique<zb_golden>();
     try {
       zb::replay_trace(t, g->rop);
@@ -171,13 +181,8 @@ int zb_golden_replay_file(zb_golden** out, const char* stream_path) {
 int zb_golden_pixel_history(const char* stream_path, int x, int y, char* json, size_t size,
                             size_t* needed) {
   return handleless("zb_golden_pixel_history", [&]() -> Failure {
-    if (!stream_path) return {ZB_EARG, "stream_path is NULL (give a test's stream.hex)"};
     zb::Trace t;
-    try {
-      t = zb::conformance::read_stream(stream_path);
-    } catch (const zb::TraceError& e) {
-      return {ZB_EARG, e.what()};
-    }
+    if (const Failure f = read_stream(stream_path, t); f.status != ZB_OK) return f;
     if (x < 0 || y < 0 || x >= t.width || y >= t.height)
       return {ZB_EARG, fmt::format("pixel ({}, {}) is outside the {}x{} frame of {}", x, y, t.width,
                                    t.height, stream_path)};
