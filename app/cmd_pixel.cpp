@@ -52,13 +52,13 @@ void add_rtl(FrameHistory& f, const PixelOptions& po, const std::function<void(B
 }
 
 void check_backend(const CLI::App& cmd, const PixelOptions& o, int depth_bits) {
-  if (o.backend != "golden" && o.backend != "rtl")
-    throw UsageError(fmt::format("--backend: unknown backend '{}' (choose from golden, rtl)", o.backend));
+  if (o.backend != "golden" && o.backend != "rtl" && o.backend != "both")
+    throw UsageError(fmt::format("--backend: unknown backend '{}' (choose from golden, rtl, both)", o.backend));
   for (const char* option : {"--schedule", "--waves"})
     if (o.backend == "golden" && cmd.count(option))
-      throw UsageError(fmt::format("{}: needs --backend rtl", option));
+      throw UsageError(fmt::format("{}: needs --backend rtl or both", option));
   if (!o.waves.empty()) check_writable("--waves", o.waves, ".fst");
-  if (o.backend == "rtl" && depth_bits != kRtlDepthBits)
+  if (o.backend != "golden" && depth_bits != kRtlDepthBits)
     throw UsageError(fmt::format("--backend rtl: the RTL model is built with {}-bit depth, not {}",
                                  kRtlDepthBits, depth_bits));
 }
@@ -78,7 +78,7 @@ void run_trace_pixel(const CLI::App& cmd, const PixelOptions& o) {
   }
   check_backend(cmd, o, trace.depth_bits);
   FrameHistory f = record_history(trace, parse_at(o.at, trace.width, trace.height));
-  if (o.backend == "rtl") add_rtl(f, o, [&](Backend& b) { replay_trace(trace, b); });
+  if (o.backend != "golden") add_rtl(f, o, [&](Backend& b) { replay_trace(trace, b); });
   write_histories(f, fmt::format("trace {} ({} passes)", o.trace, f.passes.size()), o.trace, "", o.json, nullptr);
 }
 
@@ -95,7 +95,7 @@ void run_pixel(const CLI::App& cmd, const PixelOptions& o) {
   if (!o.quiet) print_warnings("zblend pixel", scene);
   const RasterizedScene rs = rasterize_scene(scene, vp);
   FrameHistory f = record_history(rs, *plan, pixels);  // replay-checked
-  if (o.backend == "rtl") add_rtl(f, o, [&](Backend& b) { render(rs, *plan, b); });
+  if (o.backend != "golden") add_rtl(f, o, [&](Backend& b) { render(rs, *plan, b); });
   write_histories(f, fmt::format("scene {}, method {} ({} passes)", o.frame.scene, o.method, f.passes.size()),
                   o.frame.scene, o.method, o.json, &scene);
 }
@@ -111,8 +111,8 @@ void add_pixel_command(CLI::App& app) {
   cmd->add_option("--method,-m", o->method, "Method (see 'zblend methods')")->capture_default_str();
   cmd->add_option("--trace", o->trace, "A trace file (.zbt, zblend trace) instead of a scene and method");
   cmd->add_option("--backend,-b", o->backend,
-                  "golden, or rtl: the Verilated RTL runs the frame too, and each fragment's "
-                  "retire (its cycles, and a write that is not the golden model's) is shown")
+                  "golden, or rtl (both: the same): the Verilated RTL runs the frame too, and each "
+                  "fragment's retire (its cycles, and a write that is not the golden model's) is shown")
       ->capture_default_str();
   cmd->add_option("--schedule", o->schedule, "RTL: tile or pass (as zblend render)")->capture_default_str();
   cmd->add_option("--waves", o->waves,

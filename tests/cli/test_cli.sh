@@ -239,12 +239,13 @@ expect_zblend_error "pixel trace outside" "^zblend: error: --at: pixel \(64, 0\)
 printf 'not a trace' >"$tmp/bad.zbt"
 expect_zblend_error "pixel bad trace" "^zblend: error: .*bad.zbt" pixel --trace "$tmp/bad.zbt" --at 1,1
 # Beside the RTL: each fragment's retire, the final planes the same.
-if "$zblend" pixel -q --scene quads --method three-pass -W 64 -H 48 --at 32,24 --backend rtl >"$tmp/pxr.txt" &&
+if "$zblend" pixel -q --scene quads --method three-pass -W 64 -H 48 --at 32,24 --backend both >"$tmp/pxr.txt" &&
    [[ $(grep -c "^  fragment " "$tmp/pxr.txt") -gt 0 &&
       $(grep -c "^    rtl: accepted at cycle [0-9]*; X4 at cycle [0-9]*; X11 at cycle [0-9]*$" "$tmp/pxr.txt") == $(grep -c "^  fragment " "$tmp/pxr.txt") ]] &&
    grep -q "^rtl    the same on every plane$" "$tmp/pxr.txt"; then ok
 else fail "pixel --backend rtl: $(head -12 "$tmp/pxr.txt")"; fi
-expect_zblend_error "pixel schedule on golden" "^zblend: error: --schedule: needs --backend rtl" pixel --at 1,1 --schedule pass
+expect_zblend_error "pixel schedule on golden" "^zblend: error: --schedule: needs --backend rtl or both" pixel --at 1,1 --schedule pass
+expect_zblend_error "pixel waves on golden" "^zblend: error: --waves: needs --backend rtl or both" pixel --at 1,1 --waves "$tmp/out/p.fst"
 expect_zblend_error "pixel rtl depth" "^zblend: error: --backend rtl: the RTL model is built with 24-bit depth, not 16" pixel --at 1,1 --backend rtl --depth-bits 16
 expect_zblend_error "pixel backend" "^zblend: error: --backend: unknown backend 'fpga'" pixel --at 1,1 --backend fpga
 expect_zblend_error "pixel outside" "^zblend: error: --at: pixel \(64, 0\) is outside the 64x48 frame" pixel -W 64 -H 48 --at 64,0 --json "$tmp/out/bad.json"
