@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <regex>
+#include <cctype>
 
 #include <fmt/core.h>
 
@@ -21,19 +21,42 @@ void add_at_json_options(CLI::App* cmd, std::string& at, std::string& json) {
   cmd->add_option("--json", json, "The histories as JSON to this file (- : to stdout, instead of the text)");
 }
 
+namespace {
+
+// "X,Y" with spaces around either number: whole numbers of at most 6 digits.
+bool parse_pair(const std::string& text, int& x, int& y) {
+  size_t i = 0;
+  auto spaces = [&] { while (i < text.size() && text[i] == ' ') ++i; };
+  auto number = [&](int& v) {
+    const size_t from = i;
+    v = 0;
+    while (i < text.size() && i - from < 7 && std::isdigit(static_cast<unsigned char>(text[i])))
+      v = v * 10 + (text[i++] - '0');
+    return i > from && i - from <= 6;
+  };
+  spaces();
+  if (!number(x)) return false;
+  spaces();
+  if (i >= text.size() || text[i++] != ',') return false;
+  spaces();
+  if (!number(y)) return false;
+  spaces();
+  return i == text.size();
+}
+
+}  // namespace
+
 std::vector<std::pair<int, int>> parse_at(const std::string& text, int width, int height) {
   if (text.empty()) throw UsageError("--at: give the pixel as X,Y (several: X,Y;X,Y)");
-  static const std::regex one(R"(\s*(\d{1,6})\s*,\s*(\d{1,6})\s*)");
   std::vector<std::pair<int, int>> out;
   size_t start = 0;
   while (start <= text.size()) {
     const size_t end = std::min(text.find(';', start), text.size());
     const std::string part = text.substr(start, end - start);
-    std::smatch m;
-    if (!std::regex_match(part, m, one))
+    int x = 0, y = 0;
+    if (!parse_pair(part, x, y))
       throw UsageError(fmt::format("--at: '{}' is not X,Y (two whole numbers, pixel column and "
                                    "row from the top-left)", part));
-    const int x = std::stoi(m[1]), y = std::stoi(m[2]);
     if (x >= width || y >= height)
       throw UsageError(fmt::format("--at: pixel ({}, {}) is outside the {}x{} frame (columns 0 to "
                                    "{}, rows 0 to {})", x, y, width, height, width - 1, height - 1));
