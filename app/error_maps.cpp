@@ -46,12 +46,9 @@ double write_error_maps(const std::vector<MethodRun>& runs, const Framebuffer& r
   }
   const double scale = nice_error_scale(top);
   for (const Map& m : maps) {
-    std::optional<std::pair<int, int>> worst;  // ringed, where there is an error to see
-    if (!m.de.empty() && *std::max_element(m.de.begin(), m.de.end()) > 0)
-      worst = worst_pixel(m.de, vp.width);
-    const Framebuffer picture = m.de.empty()
-                                    ? line_error_map_image(m.run->image, *lines, kEdgeColor)
-                                    : error_map_image(m.de, vp.width, vp.height, scale, worst);
+    const Framebuffer picture =
+        m.de.empty() ? line_error_map_image(m.run->image, *lines, kEdgeColor)
+                     : error_map_image(m.de, vp.width, vp.height, scale, worst_pixel(m.de, vp.width));
     cli::write_or_fail(write_png(error_map_path(out, out_dir, m.run->method), picture));
   }
   return scale;

@@ -216,7 +216,7 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
     if (row.fair == FairReference::kLines) {
       run.error_images.push_back(line_error_map_image(run.images[i], *lines, kEdgeColor));
     } else {
-      if (!de.empty() && *std::max_element(de.begin(), de.end()) > 0) row.worst = worst_pixel(de, vp.width);
+      row.worst = worst_pixel(de, vp.width);
       run.error_images.push_back(error_map_image(de, vp.width, vp.height, scale, row.worst));
     }
     std::string history;

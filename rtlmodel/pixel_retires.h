@@ -65,7 +65,7 @@ class SettledRtl final : public Backend {
   const Framebuffer& framebuffer() const override { return rtl_.framebuffer(); }
 
  private:
-  RtlOptions with_sink(RtlOptions o, PixelRetires& r) {
+  static RtlOptions with_sink(RtlOptions o, PixelRetires& r) {
     o.retire_sink = &r;
     return o;
   }

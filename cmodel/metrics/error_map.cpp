@@ -132,10 +132,12 @@ double nice_error_scale(double value) {
       if (m * decade >= value * (1 - 1e-12)) return m * decade;
 }
 
-std::pair<int, int> worst_pixel(const std::vector<float>& values, int width) {
-  if (values.empty() || width <= 0) return {0, 0};
-  const size_t i = size_t(std::max_element(values.begin(), values.end()) - values.begin());
-  return {int(i % size_t(width)), int(i / size_t(width))};
+std::optional<std::pair<int, int>> worst_pixel(const std::vector<float>& values, int width) {
+  if (values.empty() || width <= 0) return std::nullopt;
+  const auto it = std::max_element(values.begin(), values.end());
+  if (!(*it > 0)) return std::nullopt;
+  const size_t i = size_t(it - values.begin());
+  return std::pair<int, int>{int(i % size_t(width)), int(i / size_t(width))};
 }
 
 Framebuffer error_map_image(const std::vector<float>& de, int width, int height, double scale,

@@ -29,8 +29,9 @@ double percentile(std::vector<float> values, double p);
 constexpr double kMinErrorScale = 1.0;
 double nice_error_scale(double value);
 
-// The pixel (x, y) of the largest value, the first in row-major order on a tie.
-std::pair<int, int> worst_pixel(const std::vector<float>& values, int width);
+// The pixel (x, y) of the largest value, the first in row-major order on a tie; none when no
+// value is above 0 (nothing wrong to point at).
+std::optional<std::pair<int, int>> worst_pixel(const std::vector<float>& values, int width);
 
 // The map of `de` (width x height) at `scale` (that value and above the brightest), a legend
 // strip below it: the ramp from 0 to the scale, both numbers and "dE2000". With `mark`, a ring
