@@ -45,9 +45,9 @@ void add_rtl(FrameHistory& f, const PixelOptions& po, const std::function<void(B
   o.trace_path = po.waves;
   add_rtl_retires(f, o, run);
   if (!po.waves.empty()) {
-    const std::string gtkw = write_pixel_save_file(f, po.waves);
-    fmt::print(stderr, "zblend pixel: waves: {} (the whole run), {} (gtkwave {}): markers at the "
-                       "first pixel's accepts and writes\n", po.waves, gtkw, gtkw);
+    for (const std::string& gtkw : write_pixel_save_files(f, po.waves))
+      fmt::print(stderr, "zblend pixel: waves: {} (the whole run), {} (gtkwave {}): markers at "
+                         "the pixel's accepts and writes\n", po.waves, gtkw, gtkw);
   }
 }
 
@@ -116,8 +116,8 @@ void add_pixel_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--schedule", o->schedule, "RTL: tile or pass (as zblend render)")->capture_default_str();
   cmd->add_option("--waves", o->waves,
-                  "RTL: the run's FST, and beside it a GTKWave save file with a marker at each "
-                  "accept and write of the (first) pixel");
+                  "RTL: the run's FST, and beside it a GTKWave save file per pixel with a marker at "
+                  "each of its accepts and writes (F.gtkw; F-X-Y.gtkw for several pixels)");
   add_at_json_options(cmd, o->at, o->json);
   add_background_option(cmd, o->background);
   cmd->add_flag("--quiet,-q", o->quiet, "No scene warnings");

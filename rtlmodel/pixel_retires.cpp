@@ -1,6 +1,7 @@
 #include "pixel_retires.h"
 
 #include <algorithm>
+#include <filesystem>
 
 namespace zb {
 
@@ -88,26 +89,35 @@ void add_rtl_retires(FrameHistory& f, const RtlOptions& options,
   }
 }
 
-std::string write_pixel_save_file(const FrameHistory& f, const std::string& fst) {
-  std::vector<WaveMarker> all;
-  for (const PixelHistory& h : f.pixels)
+std::vector<std::string> write_pixel_save_files(const FrameHistory& f, const std::string& fst) {
+  std::vector<std::string> paths;
+  for (const PixelHistory& h : f.pixels) {
+    std::vector<WaveMarker> all;
     for (const RetireRecord& r : h.rtl) {
       if (r.extra || r.missing) continue;
       const std::string n = "#" + std::to_string(r.stream);
       if (!r.x11) all.push_back({r.accepted, n + " accepted"});
       all.push_back({r.cycle, n + (r.x11 ? " X11" : " X4")});
     }
-  std::stable_sort(all.begin(), all.end(),
-                   [](const WaveMarker& a, const WaveMarker& b) { return a.cycle < b.cycle; });
-  WaveView view;
-  view.markers.assign(all.begin(), all.begin() + std::ptrdiff_t(std::min<size_t>(all.size(), 26)));
-  if (!view.markers.empty()) {
-    view.from = view.markers.front().cycle > 8 ? view.markers.front().cycle - 8 : 0;
-    view.to = view.markers.back().cycle + 8;
+    std::stable_sort(all.begin(), all.end(),
+                     [](const WaveMarker& a, const WaveMarker& b) { return a.cycle < b.cycle; });
+    WaveView view;
+    view.markers.assign(all.begin(), all.begin() + std::ptrdiff_t(std::min<size_t>(all.size(), 26)));
+    if (!view.markers.empty()) {
+      view.from = view.markers.front().cycle > 8 ? view.markers.front().cycle - 8 : 0;
+      view.to = view.markers.back().cycle + 8;
+    }
+    const std::string xy = std::to_string(h.x) + ", " + std::to_string(h.y);
+    view.title = "pixel (" + xy + ")";
+    std::string gtkw;
+    if (f.pixels.size() > 1) {
+      std::filesystem::path p(fst);
+      gtkw = (p.parent_path() / (p.stem().string() + "-" + std::to_string(h.x) + "-" +
+                                 std::to_string(h.y) + ".gtkw")).string();
+    }
+    paths.push_back(write_save_file(fst, view, gtkw));
   }
-  if (!f.pixels.empty())
-    view.title = "pixel (" + std::to_string(f.pixels[0].x) + ", " + std::to_string(f.pixels[0].y) + ")";
-  return write_save_file(fst, view);
+  return paths;
 }
 
 }  // namespace zb

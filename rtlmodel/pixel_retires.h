@@ -80,9 +80,10 @@ class SettledRtl final : public Backend {
 void add_rtl_retires(FrameHistory& f, const RtlOptions& options,
                      const std::function<void(Backend&)>& run);
 
-// The save file of a run's FST (options.trace_path of add_rtl_retires) zoomed on f's first
-// pixels' retires, a marker at each accept ("#N accepted") and write ("#N X4", "#N X11"), the
-// first 26 in cycle order. Returns its path.
-std::string write_pixel_save_file(const FrameHistory& f, const std::string& fst);
+// The save files of a run's FST (options.trace_path of add_rtl_retires), one a pixel (GTKWave
+// names 26 markers, A to Z): zoomed on the pixel's retires, a marker at each accept
+// ("#N accepted") and write ("#N X4", "#N X11"), the first 26 in cycle order. FST's own .gtkw for
+// one pixel, FST's stem with "-X-Y.gtkw" for each of several. Returns their paths.
+std::vector<std::string> write_pixel_save_files(const FrameHistory& f, const std::string& fst);
 
 }  // namespace zb

@@ -138,9 +138,10 @@ std::string wave_rise_text(uint64_t cycle) {
   return std::to_string(wave_rise_ps(cycle) / 1000) + " ns";
 }
 
-std::string write_save_file(const std::string& fst, const WaveView& v) {
+std::string write_save_file(const std::string& fst, const WaveView& v, const std::string& gtkw) {
   const Hierarchy h = read_hierarchy(fst);
-  const std::filesystem::path path = std::filesystem::path(fst).replace_extension(".gtkw");
+  const std::filesystem::path path =
+      gtkw.empty() ? std::filesystem::path(fst).replace_extension(".gtkw") : std::filesystem::path(gtkw);
   std::ofstream o(path);
   if (!o) throw std::runtime_error("save file: cannot write " + path.string());
   const std::string abs_fst = std::filesystem::absolute(fst).string();

@@ -68,7 +68,8 @@ class ProbeSink final : public RetireSink {
 
 // Writes `fst`'s save file (the same path with .gtkw): the testbench's signals, zb_rop's ports,
 // then each pipeline stage's own signals in pipeline order, each a group; the markers; the
-// view's cycles. The signals are the FST's (its hierarchy is read back). Returns its path.
-std::string write_save_file(const std::string& fst, const WaveView& view);
+// view's cycles. The signals are the FST's (its hierarchy is read back). Returns its path;
+// `gtkw`, when given, is the path instead.
+std::string write_save_file(const std::string& fst, const WaveView& view, const std::string& gtkw = "");
 
 }  // namespace zb

@@ -103,6 +103,62 @@ std::string rounding_text(BlendMode mode, Rgba8 s, Rgba8 d) {
   return out;
 }
 
+// The accumulate blend's steps ("7. Accumulate blend"): the depth weight, each channel's term
+// and saturating add, the revealage.
+std::string accumulate_text(const FrameHistory& f, const Fragment& g, const PixelValue& before) {
+  const WboitFormat& w = f.wboit;
+  const uint32_t u = ((depth_max(f.depth_bits) - g.z) >> (f.depth_bits - 8)) & 0xffu;
+  const uint32_t weight_f = wboit_depth_weight(g.z, f.depth_bits, w.weight_bits);
+  const uint32_t weight = g.color.a * weight_f;
+  const int shift = wboit_term_shift(w);
+  std::string s = fmt::format("u={} F=max(1,u^3>>{})={} w=a*F={}*{}={} S={}", u, 24 - w.weight_bits,
+                              weight_f, g.color.a, weight_f, weight, shift);
+  const uint8_t sv[3] = {g.color.r, g.color.g, g.color.b};
+  const char names[4] = {'R', 'G', 'B', 'A'};
+  for (int c = 0; c < 4; ++c) {
+    const uint8_t p = c < 3 ? mul_unorm8(sv[c], g.color.a) : g.color.a;
+    const uint32_t term = wboit_term(p, weight, shift);
+    const uint32_t acc = before.acc[size_t(c)];
+    s += fmt::format("; {} {}{}, p*w>>S={}, acc {}+{}={}", names[c],
+                     c < 3 ? fmt::format("p=m({},{})=", sv[c], g.color.a) : "p=a=", p, term, acc,
+                     term, wboit_accumulate(acc, term, w.acc_bits));
+  }
+  const uint32_t k = 255u - g.color.a;
+  return s + fmt::format("; revealage k=255-a={} t=k+(k>>7)={} ({}*t+128)>>8={}", k, k + (k >> 7),
+                         before.reveal, wboit_reveal(before.reveal, g.color.a));
+}
+
+// The coverage blend's case and its proportionate blend ("5. Coverage blend").
+std::string coverage_text(const FrameHistory& f, const Fragment& g, const PixelValue& before) {
+  const int n = f.coverage_samples, k = g.coverage, cs = before.coverage;
+  const uint32_t z = g.z, zs = before.depth;
+  const int combined = std::min(n, k + cs);
+  std::string which, w_text;
+  int w = k;
+  bool p_first = true;
+  if (z < zs) {
+    which = "nearer (z < Zs)", w_text = "w=k";
+  } else if (z > zs) {
+    which = "farther (z > Zs)", w_text = "stored keeps its cs", w = cs, p_first = false;
+  } else if (k + cs >= n) {
+    return fmt::format("case equal and full (z == Zs, k+cs={}+{} >= N={}): the fragment's colour, "
+                       "coverage N={}", k, cs, n, n);
+  } else {
+    which = fmt::format("equal, not full (z == Zs, k+cs={}+{} < N={})", k, cs, n), w_text = "w=k";
+  }
+  std::string s = fmt::format("case {}: {}={}, coverage min(N,k+cs)=min({},{}+{})={}", which, w_text,
+                              w, n, k, cs, combined);
+  const uint8_t fv[4] = {g.color.r, g.color.g, g.color.b, g.color.a};
+  const uint8_t dv[4] = {before.color.r, before.color.g, before.color.b, before.color.a};
+  const char names[4] = {'R', 'G', 'B', 'A'};
+  for (int c = 0; c < 4; ++c) {
+    const uint8_t p = p_first ? fv[c] : dv[c], d = p_first ? dv[c] : fv[c];
+    s += fmt::format("; {} ({}*{}+{}*{}+{})>>{}={}", names[c], w, p, n - w, d, n / 2,
+                     coverage_log2(n), blend_coverage(p, d, uint32_t(w), n));
+  }
+  return s;
+}
+
 std::string fragment_text(const FrameHistory& f, const PassRecord& pass, const HistoryEvent& e,
                           const Scene* scene) {
   const FragmentRecord& r = e.fragment;
@@ -136,7 +192,11 @@ std::string fragment_text(const FrameHistory& f, const PassRecord& pass, const H
   }
   s += writes_text(f, r.writes) + "\n";
   if (r.depth_passed && r.peel_passed) {
-    const std::string steps = rounding_text(pass.state.blend, g.color, e.before.color);
+    const BlendMode mode = pass.state.blend;
+    const std::string steps =
+        mode == BlendMode::kAccumulate ? (pass.state.color_mask ? accumulate_text(f, g, e.before) : "")
+        : mode == BlendMode::kCoverage ? coverage_text(f, g, e.before)
+                                       : rounding_text(mode, g.color, e.before.color);
     if (!steps.empty()) s += "    roundings: " + steps + "\n";
   }
   return s;

@@ -99,7 +99,10 @@ struct FrameHistory {
 };
 
 // The golden model, recording the histories of `pixels` (each inside the frame, distinct).
-// Every other fragment takes the model's own path: a render without histories is unchanged.
+// Fragments at other pixels are counted in the stream and dropped: the datapath and the frame
+// operations are per pixel, so the asked pixels end as in a full render, at the cost of their
+// own fragments. framebuffer() holds the asked pixels only; a render without histories does not
+// come here.
 class HistoryRecorder final : public Backend {
  public:
   explicit HistoryRecorder(std::vector<std::pair<int, int>> pixels) : asked_(std::move(pixels)) {}

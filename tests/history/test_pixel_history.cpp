@@ -9,6 +9,7 @@
 
 #include "history/history_report.h"
 #include "history/pixel_history.h"
+#include "io/trace.h"
 #include "pipeline/passes.h"
 #include "pipeline/render.h"
 #include "rop/rop.h"
@@ -131,6 +132,59 @@ TEST(PixelHistory, AFailedDepthTestWritesNothing) {
   EXPECT_NE(history_text(r, r.pixels[0]).find(": fail; nothing written"), std::string::npos);
 }
 
+Fragment at(int x, int y, uint32_t z, Rgba8 c, uint8_t coverage = 0) {
+  Fragment f;
+  f.x = uint16_t(x), f.y = uint16_t(y), f.z = z, f.color = c, f.coverage = coverage;
+  return f;
+}
+
+// The coverage blend's cases and the accumulate blend's terms, step by step, by hand from
+// docs/datapath.md (N = 4 samples, 24-bit depth cleared to ZMAX = 0xffffff, A = 16, R = 8, W = 4).
+//   coverage at (1, 1) on (0,0,0,255), cs 0:
+//     z 0x400000 < ZMAX, nearer, w = k = 3: R (3*200+1*0+2)>>2 = 150, G (300+2)>>2 = 75, B 0,
+//       A (765+255+2)>>2 = 255; coverage min(4, 3+0) = 3.
+//     z 0x800000 > 0x400000, farther, w = cs = 3 on the stored colour: R (3*150+1*0+2)>>2 = 113,
+//       G (225+2)>>2 = 56, B (0+255+2)>>2 = 64; coverage min(4, 2+3) = 4.
+//   accumulate at (2, 2) from acc 0, r 255:
+//     z 0x7fffff: u = 0x800000 >> 16 = 128, F = 128^3 >> 20 = 2, w = 128*2 = 256, S = 4+20-16 = 8;
+//       R p = m(255,128) = 128, term 128*256>>8 = 128; G p = m(128,128) = 64, term 64; B 0;
+//       A p = 128, term 128; revealage k = 127, t = 127, (255*127+128)>>8 = 127.
+//     z 0x3fffff: u = 192, F = 7077888 >> 20 = 6, w = 255*6 = 1530; B p = m(255,255) = 255,
+//       term 255*1530>>8 = 1524, acc 0+1524 = 1524; A acc 128+1524 = 1652; revealage t = 0: 0.
+TEST(PixelHistory, CoverageAndAccumulateStepsByHand) {
+  Trace t;
+  t.width = t.height = 4;
+  t.coverage_samples = 4;
+  t.clear_color = Rgba8{0, 0, 0, 255};
+  TracePass cov;
+  cov.state.blend = BlendMode::kCoverage;
+  cov.fragments = {at(1, 1, 0x400000, {200, 100, 0, 255}, 3), at(1, 1, 0x800000, {0, 0, 255, 255}, 2)};
+  TracePass acc;
+  acc.state.blend = BlendMode::kAccumulate;
+  acc.state.depth_write = false;
+  acc.fragments = {at(2, 2, 0x7fffff, {255, 128, 0, 128}), at(2, 2, 0x3fffff, {0, 0, 255, 255})};
+  t.passes = {cov, acc};
+  const FrameHistory f = record_history(t, {{1, 1}, {2, 2}});
+  const std::string c = history_text(f, f.pixels[0]), a = history_text(f, f.pixels[1]);
+  EXPECT_NE(c.find("case nearer (z < Zs): w=k=3, coverage min(N,k+cs)=min(4,3+0)=3; "
+                   "R (3*200+1*0+2)>>2=150; G (3*100+1*0+2)>>2=75; B (3*0+1*0+2)>>2=0; "
+                   "A (3*255+1*255+2)>>2=255"), std::string::npos) << c;
+  EXPECT_NE(c.find("case farther (z > Zs): stored keeps its cs=3, coverage min(N,k+cs)=min(4,2+3)=4; "
+                   "R (3*150+1*0+2)>>2=113; G (3*75+1*0+2)>>2=56; B (3*0+1*255+2)>>2=64"),
+            std::string::npos) << c;
+  EXPECT_EQ(f.pixels[0].final_value.color, (Rgba8{113, 56, 64, 255}));
+  EXPECT_NE(a.find("u=128 F=max(1,u^3>>20)=2 w=a*F=128*2=256 S=8; R p=m(255,128)=128, p*w>>S=128, "
+                   "acc 0+128=128; G p=m(128,128)=64, p*w>>S=64, acc 0+64=64; B p=m(0,128)=0, p*w>>S=0, "
+                   "acc 0+0=0; A p=a=128, p*w>>S=128, acc 0+128=128; revealage k=255-a=127 "
+                   "t=k+(k>>7)=127 (255*t+128)>>8=127"), std::string::npos) << a;
+  EXPECT_NE(a.find("u=192 F=max(1,u^3>>20)=6 w=a*F=255*6=1530 S=8"), std::string::npos) << a;
+  EXPECT_NE(a.find("B p=m(255,255)=255, p*w>>S=1524, acc 0+1524=1524; A p=a=255, p*w>>S=1524, "
+                   "acc 128+1524=1652; revealage k=255-a=0 t=k+(k>>7)=0 (127*t+128)>>8=0"),
+            std::string::npos) << a;
+  EXPECT_EQ(f.pixels[1].final_value.acc, (std::array<uint32_t, 4>{128, 64, 1524, 1652}));
+  EXPECT_EQ(f.pixels[1].final_value.reveal, 0u);
+}
+
 // Every pixel of a small frame of each built-in scene under every method: each history replays
 // (record_history throws otherwise) and ends at the golden model's own framebuffer, rendered
 // without a recorder.
@@ -156,6 +210,40 @@ TEST(PixelHistory, EveryPixelOfSmallFramesReplaysToTheFramebuffer) {
   }
   EXPECT_GT(fragments, 10000u);  // the frames are not empty
   EXPECT_GT(ops, 1000u);         // depth peeling's frame operations are in them
+}
+
+// A few scattered pixels, so the recorder drops every other pixel's fragments: their histories
+// still end at a full golden render's planes, from a scene and from the same frame's trace (a
+// datapath step that read a neighbour would show here). The stream indices count every fragment.
+TEST(PixelHistory, ScatteredPixelsEndAsInAFullRender) {
+  constexpr int w = 40, h = 30;
+  std::vector<std::pair<int, int>> some;
+  for (int k = 0; k < w * h; k += 37) some.emplace_back(k % w, k / w);
+  size_t events = 0;
+  for (const char* scene : {"cad", "parts"}) {
+    const RasterizedScene rs = rasterize_scene(*builtin_scene(scene), Viewport{w, h});
+    for (const PassPlan& plan : pass_plans()) {
+      GoldenRop golden;
+      const Framebuffer fb = render(rs, plan, golden).framebuffer;
+      const Trace trace = make_trace(rs, plan);
+      for (const FrameHistory& f : {record_history(rs, plan, some), record_history(trace, some)}) {
+        ASSERT_EQ(f.pixels.size(), some.size());
+        for (const PixelHistory& p : f.pixels) {
+          ASSERT_EQ(p.final_value, PixelValue::of(fb, fb.index(p.x, p.y)))
+              << scene << " " << plan.name << " (" << p.x << ", " << p.y << ")";
+          for (const HistoryEvent& e : p.events) {
+            if (e.kind != HistoryEvent::Kind::kFragment) continue;
+            const std::vector<Fragment>& stream = trace.passes[e.pass].fragments;
+            ASSERT_LT(e.fragment.index, stream.size());
+            const Fragment& g = stream[e.fragment.index];
+            EXPECT_TRUE(g.x == p.x && g.y == p.y && g.z == e.fragment.fragment.z);
+            ++events;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(events, 1000u);
 }
 
 // The first history with a write in it, of depth-peel-2 on `cad` (frame operations too).

@@ -27,3 +27,16 @@ python3 "$root/scripts/check_waves.py" late.gtkw >late.txt 2>&1 && fail "check_w
 grep -q "marker B (#[0-9]* X4) at $((b + 10000)): no X4 retire of fragment" late.txt ||
   { cat late.txt; fail "check_waves.py does not say what is wrong with the late X4 marker"; }
 echo "ok: check_waves.py refuses an X4 marker one cycle late"
+
+# Two pixels: a save file each (GTKWave names 26 markers), each checked against the same FST.
+"$zblend" pixel -q --scene cad -W 64 -H 48 -m depth-peel-2 --at "30,20;31,20" --backend rtl \
+  --waves two.fst >two.txt 2>two.err || fail "zblend pixel --waves, two pixels: $(cat two.err)"
+for xy in 30-20 31-20; do
+  [[ -s two-$xy.gtkw ]] || fail "no save file two-$xy.gtkw: $(ls)"
+  grep -q "(gtkwave two-$xy.gtkw)" two.err || fail "stderr does not name two-$xy.gtkw: $(cat two.err)"
+  grep -q "^\[\*\] zblend: pixel (${xy/-/, })" two-$xy.gtkw || fail "two-$xy.gtkw is not titled with its pixel"
+  python3 "$root/scripts/check_waves.py" two-$xy.gtkw >two-$xy.txt 2>&1 ||
+    { cat two-$xy.txt; fail "check_waves.py on two-$xy.gtkw"; }
+done
+cmp -s two-30-20.gtkw two-31-20.gtkw && fail "the two pixels' save files are the same"
+echo "ok: a save file a pixel, each checked"
