@@ -72,7 +72,7 @@ regress: build ## Run GROUP (default nightly) of tb/regressions.json: out/regres
 # The RTL's speed is measured beside BASELINE's build (built once in build-baseline; empty: none).
 BASELINE ?= d91dc3f
 
-bench: build ## Benchmarks: datapath, golden vs llvmpipe, memory, RTL (beside BASELINE's and PGO's), cost growth: out/bench/
+bench: build ## Benchmarks: datapath, golden vs llvmpipe, memory, RTL (beside BASELINE's and PGO's), cost growth, render and lab against BASELINE: out/bench/
 	@scripts/setup.sh bench
 	@cmake --build $(BUILD) -j $(JOBS) --target zblend_bench zblend_bench_rtl zblend_bench_rtl_assert zblend_window_sweep
 	@$(if $(BASELINE),scripts/bench_baseline.sh $(BASELINE) build-baseline -j $(JOBS))

@@ -13,7 +13,9 @@ Runs, on this machine, one after another:
      (--baseline, scripts/bench_baseline.sh) and the speed build with PGO (--pgo,
      scripts/pgo.sh) run in the same bench;
   5. cost growth: render time against resolution, against triangle count, and with the frame
-     growing around an object of fixed size on screen.
+     growing around an object of fixed size on screen;
+  6. with --baseline: `zblend render` (golden) and `zblend lab` (golden only) wall time, this
+     build against the baseline's, runs alternated so that the machine's drift falls on both.
 Writes OUT/bench.csv (every figure with its command), OUT/bench.md (the table), OUT/growth.csv
 and OUT/growth.png, and prints the table. Exit 1 when a run fails or a frame is not bit-exact.
 """
@@ -92,7 +94,7 @@ class Bench:
 
 
 def step(n, text):
-    print(f"[{n}/5] {text}", file=sys.stderr, flush=True)
+    print(f"[{n}/6] {text}", file=sys.stderr, flush=True)
 
 
 def datapath(b, reps):
@@ -279,6 +281,43 @@ def growth(b, scene, reps, quick):
               "", cmd)
 
 
+# The host side against a baseline commit: a golden render and a golden-only lab.
+HOST_RENDER = ["render", "-q", "-s", "cad", "-W", "640", "-H", "480", "-m", METHOD]
+HOST_LAB = ["lab", "-q", "--no-rtl", "--no-charts", "-j", "1",
+            "--scenes", "cad,parts,layers-4-a50,crossing-quads,bunny"]
+
+
+def wall_s(b, cmd):
+    start = time.perf_counter()
+    b.run(cmd)
+    return time.perf_counter() - start
+
+
+def host_against_baseline(b, baseline, reps):
+    """Median wall time of each command on both builds, alternated; the ratio this / baseline."""
+    with open(os.path.join(baseline, "..", "rev")) as f:
+        base = f.read().strip()[:7]
+    out = os.path.join(b.out, "host")
+    os.makedirs(out, exist_ok=True)
+    for name, args, n in [("zblend render (golden), cad three-pass 640x480", HOST_RENDER
+                           + ["--out", os.path.join(out, "render.png")], 5 * reps),
+                          ("zblend lab, golden only, 5 scenes", HOST_LAB
+                           + ["--out-dir", os.path.join(out, "lab")], reps)]:
+        times = {"this": [], "base": []}
+        for _ in range(n):
+            for who, build in (("base", baseline), ("this", b.build)):
+                times[who].append(wall_s(b, [os.path.join(build, "zblend")] + args))
+        this, then = statistics.median(times["this"]), statistics.median(times["base"])
+        cmd = shlex.join(["zblend"] + args)
+
+        def spread(runs):
+            return f"runs {min(runs):.4g} to {max(runs):.4g} s"
+        b.add(f"{name}: this build, median of {n} ({spread(times['this'])})", this, "s", "", cmd)
+        b.add(f"{name}: baseline {base}, alternated with it ({spread(times['base'])})", then, "s",
+              "", cmd)
+        b.add(f"{name}: this build / baseline {base}", this / then, "x", "1 within noise", cmd)
+
+
 def number(value, unit):
     """Four significant digits; six for percentages, which live near 100."""
     return f"{value:.6g}" if unit == "%" else f"{value:.4g}"
@@ -338,6 +377,9 @@ def main():
     cosim(b)
     step(5, "cost growth")
     growth(b, scene, reps, a.quick)
+    if a.baseline:
+        step(6, "render and lab against the baseline")
+        host_against_baseline(b, a.baseline, 3 if a.quick else 5)
     write_table(b, started)
 
 

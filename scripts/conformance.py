@@ -67,7 +67,7 @@ SV = os.path.join(ROOT, "conformance", "sv")
 if not os.path.isdir(SV):
     SV = os.path.join(ROOT, "sv")
 CHECKERS = [os.path.join(ROOT, "build", "zblend"),
-            os.path.join(ROOT, "..", "..", "bin", "zblend-conformance"),
+            os.path.normpath(os.path.join(ROOT, "..", "..", "bin", "zblend-conformance")),
             os.path.join(ROOT, "build-kit", "zblend-conformance")]
 DEFAULT_PROFILE = os.path.join(SV, "zb_rop.profile.json")
 # The manifest's feature names (conformance/export.cpp trace_features): a profile's pattern must
