@@ -27,12 +27,10 @@ void PixelRetires::settle(const RtlRop& rtl) {
   for (size_t k = passes; k-- > 0;) first[k] = std::min(first[k], first[k + 1]);
   const size_t pass0 = size_t(rtl.pass_number()) + 1 - passes;
   for (const Retire& r : pending_) {
-    PixelRetire p;
-    p.x = r.x;
-    p.y = r.y;
+    RetireRecord p;
+    p.x11 = r.stage == RetireStage::kX11;
     p.extra = r.kind == Retire::Kind::kExtra;
     p.missing = r.kind == Retire::Kind::kMissing;
-    p.stage = r.stage;
     p.writes = r.writes;
     uint64_t base = 0;
     for (const TileRun& t : rtl.tile_runs())
@@ -45,7 +43,7 @@ void PixelRetires::settle(const RtlRop& rtl) {
       p.stream = r.fragment;
       p.accepted = rtl.accept_cycles().at(r.fragment);
     }
-    done_.push_back(p);
+    done_.push_back({r.x, r.y, p});
   }
   pending_.clear();
 }
@@ -81,9 +79,7 @@ void add_rtl_retires(FrameHistory& f, const RtlOptions& options,
     h.rtl_ran = true;
     h.rtl_final = PixelValue::of(fb, fb.index(h.x, h.y));
     for (const PixelRetire& r : retires.retires())
-      if (r.x == h.x && r.y == h.y)
-        h.rtl.push_back(RetireRecord{r.stage == RetireStage::kX11, r.extra, r.missing, r.pass,
-                                     r.index, r.stream, r.accepted, r.cycle, r.writes});
+      if (r.x == h.x && r.y == h.y) h.rtl.push_back(r.record);
     std::stable_sort(h.rtl.begin(), h.rtl.end(),
                      [](const RetireRecord& a, const RetireRecord& b) { return a.cycle < b.cycle; });
   }

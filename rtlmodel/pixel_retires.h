@@ -17,15 +17,10 @@
 
 namespace zb {
 
+// A retire at one of the asked pixels, as the history holds it.
 struct PixelRetire {
   int x = 0, y = 0;
-  bool extra = false, missing = false;  // Retire::Kind
-  RetireStage stage = RetireStage::kX4;
-  size_t pass = 0;                      // in the frame, from 0
-  uint32_t index = 0;                   // the fragment's in its pass
-  uint32_t stream = 0;                  // and in its group's stream (the waveform's tb.*_index)
-  uint64_t accepted = 0, cycle = 0;     // cycles since reset: accepted, the write's edge
-  PixelWrites writes;                   // the RTL's
+  RetireRecord record;
 };
 
 // A retire sink keeping the retires at `pixels`; every other one passes. Thread-safe (models
@@ -71,7 +66,6 @@ class SettledRtl final : public Backend {
   }
   PixelRetires& retires_;
   RtlRop rtl_;
-  uint64_t settled_pass_ = ~uint64_t{0};
 };
 
 // Runs the frame of `f` again on the RTL (`run` drives the backend it is given: a render or a
