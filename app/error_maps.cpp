@@ -1,6 +1,5 @@
 #include "error_maps.h"
 
-#include <algorithm>
 #include <filesystem>
 
 #include "cli.h"
@@ -26,30 +25,24 @@ double write_error_maps(const std::vector<MethodRun>& runs, const Framebuffer& r
                         const Viewport& vp, const std::string& out, const std::string& out_dir) {
   const int supersample = lab::LabOptions{}.supersample;  // the lab's fair reference, the same
   std::optional<Framebuffer> supersampled;
-  struct Map {
-    const MethodRun* run;
-    std::vector<float> de;  // empty for a hidden-line method
-  };
-  std::vector<Map> maps;
-  double top = 0;
+  std::vector<const MethodRun*> shown;
+  std::vector<std::vector<float>> de;  // per shown run; empty for a hidden-line method
   for (const MethodRun& r : runs) {
     if (r.method == kReferenceMethod) continue;
     const lab::FairReference fair = lab::fair_reference(r.method);
-    Map m{&r, {}};
-    if (fair != lab::FairReference::kLines) {
-      if (fair == lab::FairReference::kSupersampled && !supersampled)
-        supersampled = render_reference_supersampled(scene, vp, supersample);
-      m.de = delta_e_map(r.image, fair == lab::FairReference::kExact ? reference : *supersampled);
-      top = std::max(top, percentile(m.de, 0.99));
-    }
-    maps.push_back(std::move(m));
+    shown.push_back(&r);
+    de.emplace_back();
+    if (fair == lab::FairReference::kLines) continue;
+    if (fair == lab::FairReference::kSupersampled && !supersampled)
+      supersampled = render_reference_supersampled(scene, vp, supersample);
+    de.back() = delta_e_map(r.image, fair == lab::FairReference::kExact ? reference : *supersampled);
   }
-  const double scale = nice_error_scale(top);
-  for (const Map& m : maps) {
+  const double scale = shared_error_scale(de);
+  for (size_t i = 0; i < shown.size(); ++i) {
     const Framebuffer picture =
-        m.de.empty() ? line_error_map_image(m.run->image, *lines, kEdgeColor)
-                     : error_map_image(m.de, vp.width, vp.height, scale, worst_pixel(m.de, vp.width));
-    cli::write_or_fail(write_png(error_map_path(out, out_dir, m.run->method), picture));
+        de[i].empty() ? line_error_map_image(shown[i]->image, *lines, kEdgeColor)
+                      : error_map_image(de[i], vp.width, vp.height, scale, worst_pixel(de[i], vp.width));
+    cli::write_or_fail(write_png(error_map_path(out, out_dir, shown[i]->method), picture));
   }
   return scale;
 }

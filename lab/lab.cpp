@@ -24,19 +24,6 @@
 namespace zb::lab {
 namespace {
 
-// A hidden-line image's first wrong edge pixel (row-major): a hidden one drawn in the visible
-// style, or a visible one not; nothing when there is none.
-std::optional<std::pair<int, int>> first_line_error(const Framebuffer& image,
-                                                    const LineVisibility& lines, Rgba8 visible) {
-  if (image.color.size() != lines.pixels.size()) return std::nullopt;
-  for (size_t i = 0; i < lines.pixels.size(); ++i) {
-    const bool full = image.color[i] == visible;
-    if ((lines.pixels[i] == EdgePixel::kHidden && full) || (lines.pixels[i] == EdgePixel::kVisible && !full))
-      return std::pair<int, int>{int(i % size_t(lines.width)), int(i / size_t(lines.width))};
-  }
-  return std::nullopt;
-}
-
 using Clock = std::chrono::steady_clock;
 constexpr int kHostTimeRuns = 3;
 
@@ -101,7 +88,6 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
   run.reference_ss = render_reference_supersampled(scene, vp, o.supersample);
   std::optional<LineVisibility> lines;  // the line reference, when a method draws edges
   std::vector<std::vector<float>> errors;  // per method, its CIEDE2000 map (none for lines)
-  double top = 0;                          // the largest 99th percentile of them
 
   for (const std::string& m : o.methods) {
     LabRow row;
@@ -201,14 +187,13 @@ SceneRun run_scene(const LabScene& ls, const LabOptions& o) {
     } else {
       errors.push_back(delta_e_map(
           image, row.fair == FairReference::kExact ? run.reference : run.reference_ss));
-      if (m != kReferenceMethod) top = std::max(top, percentile(errors.back(), 0.99));
     }
     run.images.push_back(std::move(image));
     run.rows.push_back(std::move(row));
   }
   // The error maps, one scale for the scene's methods; the worst pixel of each ringed, and its
   // history kept for the report.
-  const double scale = nice_error_scale(top);
+  const double scale = shared_error_scale(errors);  // the reference's map is all 0
   for (size_t i = 0; i < run.rows.size(); ++i) {
     LabRow& row = run.rows[i];
     row.error_scale = scale;

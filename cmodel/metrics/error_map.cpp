@@ -11,6 +11,7 @@
 #include <stb_easy_font.h>
 
 #include "color_difference.h"
+#include "line_metrics.h"
 
 namespace zb {
 
@@ -25,10 +26,10 @@ void fill(Framebuffer& fb, int x0, int y0, int x1, int y1, Rgba8 c) {
     for (int x = std::max(0, x0); x < std::min(fb.width, x1); ++x) fb.color[fb.index(x, y)] = c;
 }
 
-// `text` at (x, y), top-left, in stb_easy_font's built-in strokes (no font file). Returns the
-// x just past it.
 int text_width(std::string text) { return stb_easy_font_width(text.data()); }
 
+// `text` at (x, y), top-left, in stb_easy_font's built-in strokes (no font file). Returns the
+// x just past it.
 int draw_text(Framebuffer& fb, int x, int y, const std::string& text, Rgba8 c) {
   std::string s = text;
   static thread_local std::vector<char> buffer(64 * 1024);
@@ -132,6 +133,12 @@ double nice_error_scale(double value) {
       if (m * decade >= value * (1 - 1e-12)) return m * decade;
 }
 
+double shared_error_scale(const std::vector<std::vector<float>>& maps) {
+  double top = 0;
+  for (const std::vector<float>& m : maps) top = std::max(top, percentile(m, 0.99));
+  return nice_error_scale(top);
+}
+
 std::optional<std::pair<int, int>> worst_pixel(const std::vector<float>& values, int width) {
   if (values.empty() || width <= 0) return std::nullopt;
   const auto it = std::max_element(values.begin(), values.end());
@@ -175,15 +182,10 @@ Framebuffer line_error_map_image(const Framebuffer& image, const LineVisibility&
   if (image.color.size() == reference.pixels.size())
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
-        const size_t i = size_t(y) * size_t(w) + size_t(x);
-        const bool full = image.color[i] == visible;
-        Rgba8 c = kBlack;
-        switch (reference.pixels[i]) {
-          case EdgePixel::kHidden: c = full ? kHiddenDrawnColor : Rgba8{70, 70, 70, 255}; break;
-          case EdgePixel::kVisible: c = full ? Rgba8{150, 150, 150, 255} : kVisibleMissingColor; break;
-          case EdgePixel::kNone: break;
-        }
-        fb.color[fb.index(x, y)] = c;
+        static constexpr Rgba8 kColors[] = {kBlack, {70, 70, 70, 255}, {150, 150, 150, 255},
+                                            kHiddenDrawnColor, kVisibleMissingColor};  // LinePixel
+        const LinePixel p = line_pixel(image, reference, visible, size_t(y) * size_t(w) + size_t(x));
+        fb.color[fb.index(x, y)] = kColors[size_t(p)];
       }
   const int y0 = h + 4;
   fill(fb, 4, y0, 14, y0 + 10, kHiddenDrawnColor);

@@ -29,6 +29,10 @@ double percentile(std::vector<float> values, double p);
 constexpr double kMinErrorScale = 1.0;
 double nice_error_scale(double value);
 
+// The one scale of maps shown side by side: the largest 99th percentile of theirs (an empty map
+// counts 0), as nice_error_scale rounds it.
+double shared_error_scale(const std::vector<std::vector<float>>& maps);
+
 // The pixel (x, y) of the largest value, the first in row-major order on a tie; none when no
 // value is above 0 (nothing wrong to point at).
 std::optional<std::pair<int, int>> worst_pixel(const std::vector<float>& values, int width);

@@ -4,6 +4,9 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <utility>
 
 #include "reference/line_reference.h"
 #include "rop/framebuffer.h"
@@ -21,6 +24,24 @@ struct LineError {
  private:
   double share(size_t n) const { return edge_pixels ? double(n) / double(edge_pixels) : 0.0; }
 };
+
+// One pixel of a hidden-line image against the exact line reference.
+enum class LinePixel : uint8_t {
+  kNoEdge,          // no edge there in the reference
+  kHiddenRight,     // a hidden edge, not drawn in the visible style
+  kVisibleRight,    // a visible edge, drawn in the visible style
+  kHiddenDrawn,     // a hidden edge drawn in the visible style
+  kVisibleMissing,  // a visible edge not drawn in the visible style
+};
+// Pixel i (row-major) of `image` (the reference's size), drawn in the visible style when its
+// colour is `visible`.
+LinePixel line_pixel(const Framebuffer& image, const LineVisibility& reference, Rgba8 visible,
+                     size_t i);
+
+// The first wrong pixel (kHiddenDrawn or kVisibleMissing) in row-major order; none when there is
+// none or the sizes differ.
+std::optional<std::pair<int, int>> first_line_error(const Framebuffer& image,
+                                                    const LineVisibility& reference, Rgba8 visible);
 
 // `image` against `reference`, a pixel being drawn in the visible style when its colour is
 // `visible` (a dimmed hidden edge, or nothing, is not). For a method that dims hidden edges,
