@@ -8,7 +8,6 @@
 #include "check.h"
 #include "cli.h"
 #include "commands.h"
-#include "history/pixel_history.h"
 #include "io/trace.h"
 #include "pixel_common.h"
 #include "vectors.h"
@@ -40,8 +39,7 @@ void run_suite_pixel(const SuitePixelOptions& o) {
   } catch (const TraceError& e) {
     throw UsageError(e.what());
   }
-  for (TracePass& p : trace.passes) p.name.clear();  // stream.hex names none: decode numbers them
-  const FrameHistory f = record_history(trace, parse_at(o.at, trace.width, trace.height));
+  const FrameHistory f = conformance::stream_history(trace, parse_at(o.at, trace.width, trace.height));
   write_histories(f, fmt::format("conformance test {} of {} ({} passes)", o.test, o.suite, f.passes.size()),
                   o.suite + "/" + o.test, "", o.json, nullptr);
 }

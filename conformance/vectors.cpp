@@ -348,6 +348,11 @@ Trace read_stream(const std::string& path) {
   return decode_stream(bytes.str(), path);
 }
 
+FrameHistory stream_history(Trace t, const std::vector<std::pair<int, int>>& pixels) {
+  for (TracePass& p : t.passes) p.name.clear();
+  return record_history(t, pixels);
+}
+
 const char* to_string(Plane p) {
   switch (p) {
     case Plane::kColor: return "color";

@@ -186,8 +186,8 @@ int zb_golden_pixel_history(const char* stream_path, int x, int y, char* json, s
     if (x < 0 || y < 0 || x >= t.width || y >= t.height)
       return {ZB_EARG, fmt::format("pixel ({}, {}) is outside the {}x{} frame of {}", x, y, t.width,
                                    t.height, stream_path)};
-    for (zb::TracePass& p : t.passes) p.name.clear();  // stream.hex names none
-    const std::string text = zb::history_json(zb::record_history(t, {{x, y}}), stream_path, "");
+    const std::string text =
+        zb::history_json(zb::conformance::stream_history(t, {{x, y}}), stream_path, "");
     if (needed) *needed = text.size() + 1;
     if (!json && size == 0) return kOk;  // the length asked for
     if (!json || size < text.size() + 1)
