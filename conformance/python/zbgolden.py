@@ -111,6 +111,12 @@ def load(path=None):
     return lib
 
 
+def _check_handleless(lib, status):
+    """Raises a failed call without a frame handle with the library's last error."""
+    if status != ZB_OK:
+        raise ZbGoldenError(lib.zb_golden_last_error(None).decode(), status)
+
+
 class Frame:
     """One frame of the golden model (a zb_golden handle); close() or `with` frees it."""
 
@@ -126,9 +132,8 @@ class Frame:
         """A new frame with the stream.hex at `stream_path` replayed on it."""
         lib = lib or load()
         h = ctypes.c_void_p()
-        status = lib.zb_golden_replay_file(ctypes.byref(h), os.fsencode(stream_path))
-        if status != ZB_OK:
-            raise ZbGoldenError(lib.zb_golden_last_error(None).decode(), status)
+        _check_handleless(lib, lib.zb_golden_replay_file(ctypes.byref(h),
+                                                         os.fsencode(stream_path)))
         return cls(h, lib)
 
     def _check(self, status):
@@ -201,12 +206,10 @@ class Suite:
         lib = lib or load()
         path = os.fsencode(os.path.join(self.path, name, "stream.hex"))
         needed = ctypes.c_size_t()
-        for size in (0, None):
-            buf = None if size == 0 else ctypes.create_string_buffer(needed.value)
-            status = lib.zb_golden_pixel_history(path, x, y, buf, needed.value if buf else 0,
-                                                 ctypes.byref(needed))
-            if status != ZB_OK:
-                raise ZbGoldenError(lib.zb_golden_last_error(None).decode(), status)
+        _check_handleless(lib, lib.zb_golden_pixel_history(path, x, y, None, 0,
+                                                           ctypes.byref(needed)))
+        buf = ctypes.create_string_buffer(needed.value)
+        _check_handleless(lib, lib.zb_golden_pixel_history(path, x, y, buf, needed.value, None))
         return json.loads(buf.value.decode())
 
     def expect(self, name, plane):
