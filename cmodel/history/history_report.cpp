@@ -107,7 +107,7 @@ std::string rounding_text(BlendMode mode, Rgba8 s, Rgba8 d) {
 // and saturating add, the revealage.
 std::string accumulate_text(const FrameHistory& f, const Fragment& g, const PixelValue& before) {
   const WboitFormat& w = f.wboit;
-  const uint32_t u = ((depth_max(f.depth_bits) - g.z) >> (f.depth_bits - 8)) & 0xffu;
+  const uint32_t u = wboit_depth_u(g.z, f.depth_bits);
   const uint32_t weight_f = wboit_depth_weight(g.z, f.depth_bits, w.weight_bits);
   const uint32_t weight = g.color.a * weight_f;
   const int shift = wboit_term_shift(w);
@@ -123,9 +123,8 @@ std::string accumulate_text(const FrameHistory& f, const Fragment& g, const Pixe
                      c < 3 ? fmt::format("p=m({},{})=", sv[c], g.color.a) : "p=a=", p, term, acc,
                      term, wboit_accumulate(acc, term, w.acc_bits));
   }
-  const uint32_t k = 255u - g.color.a;
-  return s + fmt::format("; revealage k=255-a={} t=k+(k>>7)={} ({}*t+128)>>8={}", k, k + (k >> 7),
-                         before.reveal, wboit_reveal(before.reveal, g.color.a));
+  return s + fmt::format("; revealage k=255-a={} t=k+(k>>7)={} ({}*t+128)>>8={}", 255 - g.color.a,
+                         wboit_transmit(g.color.a), before.reveal, wboit_reveal(before.reveal, g.color.a));
 }
 
 // The coverage blend's case and its proportionate blend ("5. Coverage blend").

@@ -60,8 +60,11 @@ constexpr uint8_t blend_coverage(uint8_t p, uint8_t d, uint32_t w, int n) {
 // w = a * max(1e-2, 3e3 * (1 - d)^3), in fixed point: the depth weight
 // F = max(1, u^3 >> (24 - W)), u the top 8 bits of ZMAX - z (1 - d), so F runs from 1 to
 // 2^W - 1 (the paper's range is 3e5, W = 18).
+constexpr uint32_t wboit_depth_u(uint32_t z, int depth_bits) {
+  return ((depth_max(depth_bits) - z) >> (depth_bits - 8)) & 0xffu;
+}
 constexpr uint32_t wboit_depth_weight(uint32_t z, int depth_bits, int weight_bits) {
-  const uint32_t u = ((depth_max(depth_bits) - z) >> (depth_bits - 8)) & 0xffu;
+  const uint32_t u = wboit_depth_u(z, depth_bits);
   const uint32_t f = (u * u * u) >> (24 - weight_bits);
   return f == 0 ? 1u : f;
 }
@@ -90,11 +93,11 @@ constexpr uint32_t wboit_reveal_one(int rev_bits) { return (uint32_t{1} << rev_b
 
 // Revealage times 1 - a: (r * t + 128) >> 8 with t = k + (k >> 7), k = 255 - a, which maps
 // 0..255 onto 0..256 (a = 0 keeps r exactly, a = 255 makes it 0).
-constexpr uint32_t wboit_reveal(uint32_t r, uint8_t a) {
+constexpr uint32_t wboit_transmit(uint8_t a) {
   const uint32_t k = 255u - a;
-  const uint32_t t = k + (k >> 7);
-  return (r * t + 128u) >> 8;
+  return k + (k >> 7);
 }
+constexpr uint32_t wboit_reveal(uint32_t r, uint8_t a) { return (r * wboit_transmit(a) + 128u) >> 8; }
 
 // The resolve of one colour channel (frame operation 4): the weighted average
 // avg = min(255, (acc * 255 + acc_a / 2) / acc_a) (0 when acc_a = 0; the alpha channel's avg
