@@ -27,7 +27,7 @@ struct ExactFrame {
 // unrounded depth, ties in submit order (the earlier one counts as nearer, as depth LESS keeps
 // it). The nearest opaque fragment (or the background) is the base; the transparent fragments in
 // front of it are composited over it back to front, c = a*s + (1-a)*c with a = alpha/255, in
-// double. Leaves f sorted.
+// double; no fragments give the background. Leaves f sorted.
 Rgb composite_pixel(const RasterizedScene& rs, uint32_t* f, size_t n) {
   uint32_t* first = f;
   uint32_t* last = f + n;
@@ -90,9 +90,7 @@ std::vector<ReferencePixel> reference_pixels(const RasterizedScene& rs,
   std::vector<ReferencePixel> out(at.size());
   for (size_t k = 0; k < at.size(); ++k) {
     ReferencePixel& p = out[k];
-    const Rgb c = here[k].empty() ? Rgb{double(rs.background.r), double(rs.background.g),
-                                        double(rs.background.b)}
-                                  : composite_pixel(rs, here[k].data(), here[k].size());
+    const Rgb c = composite_pixel(rs, here[k].data(), here[k].size());  // none: the background
     p.color = {to_unorm8(c[0]), to_unorm8(c[1]), to_unorm8(c[2]), 255};
     for (const uint32_t i : here[k]) {  // sorted now, nearest first
       const Fragment& f = rs.fragments[i];
