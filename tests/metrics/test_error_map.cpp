@@ -72,6 +72,10 @@ TEST(ErrorMap, PercentileAndWorstPixel) {
   EXPECT_EQ(percentile(v, 1.0), 100.0);
   EXPECT_EQ(percentile(v, 0.0), 1.0);
   EXPECT_EQ(percentile({}, 0.5), 0.0);
+  // Maps side by side: the largest 99th percentile (99 here; an empty map counts 0), rounded up.
+  EXPECT_EQ(shared_error_scale({{}, v, std::vector<float>(10, 3.0f)}), 100.0);
+  EXPECT_EQ(shared_error_scale({{}, std::vector<float>(10, 3.0f)}), 5.0);
+  EXPECT_EQ(shared_error_scale({}), kMinErrorScale);
   const std::vector<float> m = {0, 1, 5, 2, 5, 0};  // 3 x 2: the first 5 is at (2, 0)
   EXPECT_EQ(worst_pixel(m, 3), (std::pair<int, int>{2, 0}));
 }
