@@ -272,6 +272,7 @@ BinCounts trace_reach(const Trace& t, const DutShape& shape) {
     const RopState& s = t.passes[p].state;
     if (first) {
       ++bins["frame_ops.state_write"];
+      if (!load) ++bins["pass_resident.boundary"];  // the state written with the tile resident
       gap_all();  // the wait for idle_o, the state write
     }
     if (load) {
@@ -338,6 +339,7 @@ BinList reach_bins(const DutShape& shape) {
     for (const char* op : {"LoadFirstBeat", "LoadLastBeat"})
       plan.push_back(fmt::format("plane_ops[plane={},op={}]", p, op));
   plan.push_back("frame_ops.state_write");
+  plan.push_back("pass_resident.boundary");
 
   std::vector<std::string>& goals = out.goals;
   for (const std::string& s : states)

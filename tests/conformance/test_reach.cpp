@@ -120,6 +120,10 @@ TEST(Reach, ResidentScheduleKeepsTheStreamsBins) {
   }
   // One load a tile instead of one a pass and tile: half the state writes' tiles.
   EXPECT_EQ(get(a, "store.first_beat"), 2 * get(b, "store.first_beat"));
+  // The second pass's state written on each resident tile: a pass boundary there, never under
+  // the pass schedule (a load before every pass's first fragment).
+  EXPECT_EQ(get(a, "pass_resident.boundary"), 0u);
+  EXPECT_EQ(get(b, "pass_resident.boundary"), get(b, "store.first_beat"));
 }
 
 TEST(Reach, Visibility) {
@@ -161,12 +165,12 @@ TEST(Reach, GeneratorMeetsItsGoals) {
 
 TEST(Reach, BinListsAndRanking) {
   const BinList l = reach_bins(DutShape{});
-  EXPECT_EQ(l.plan.size(), 3553u);
+  EXPECT_EQ(l.plan.size(), 3554u);  // the plan's kit-reachable bins (with pass_resident.boundary)
   EXPECT_EQ(std::set<std::string>(l.plan.begin(), l.plan.end()).size(), l.plan.size());
   EXPECT_EQ(std::set<std::string>(l.goals.begin(), l.goals.end()).size(), l.goals.size());
   DutShape w4;
   w4.window = 4;
-  EXPECT_EQ(reach_bins(w4).plan.size(), 3553u - 2 * 4);  // distances 1..5, not 1..9
+  EXPECT_EQ(reach_bins(w4).plan.size(), 3554u - 2 * 4);  // distances 1..5, not 1..9
   // Test 1 holds all that 0 has and more; 2 adds one: 1, then 2, and 0 adds nothing.
   const std::vector<BinCounts> r = {{{"a", 1}}, {{"a", 1}, {"b", 3}}, {{"c", 1}}};
   const auto order = rank_tests(r, {"a", "b", "c"});
