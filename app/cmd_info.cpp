@@ -91,7 +91,7 @@ void print_plan(const std::string& method) {
   }
 }
 
-// zblend plan --scene S --max-error E: a model sized to the scene (lab/sizing.h).
+// zblend plan --scene S --max-error E: a model sized to the scene (app/lab/sizing.h).
 struct SizingCommand {
   std::string scene;
   std::string camera;
@@ -139,7 +139,7 @@ void run_sizing(const SizingCommand& c) {
 }
 
 // zblend plan --scene S --max-hidden-drawn P --max-visible-missing Q: the hidden-line depth
-// offset for the scene (lab/offset_plan.h).
+// offset for the scene (app/lab/offset_plan.h).
 void run_offset_plan(const SizingCommand& c) {
   for (const auto& [name, v] : {std::pair{"--max-hidden-drawn", c.max_hidden_drawn},
                                 std::pair{"--max-visible-missing", c.max_visible_missing}})
@@ -163,7 +163,7 @@ void run_offset_plan(const SizingCommand& c) {
 }
 
 // zblend plan --scene S --max-delta-e D: weighted blended OIT's planes for the scene
-// (lab/wboit_plan.h).
+// (app/lab/wboit_plan.h).
 void run_wboit_plan(const SizingCommand& c) {
   if (!(c.max_delta_e >= 0 && c.max_delta_e <= 100))
     throw UsageError(fmt::format("--max-delta-e: {} is out of range (0 to 100, mean CIEDE2000)",

@@ -1,5 +1,5 @@
 // zblend lab: methods x scenes, cost against error, charts and a report (docs/lab.md).
-// The runs are in lab/lab.h and the report in lab/report.h; this file picks the scenes,
+// The runs are in app/lab/lab.h and the report in app/lab/report.h; this file picks the scenes,
 // spreads them over threads, writes the files and calls scripts/lab_charts.py.
 #include <algorithm>
 #include <atomic>

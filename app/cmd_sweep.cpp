@@ -1,5 +1,5 @@
 // zblend sweep: one parameter moved in small steps, a CSV and a chart each (docs/sweeps.md).
-// The sweeps themselves are in lab/sweeps.h; this file parses, writes and charts.
+// The sweeps themselves are in app/lab/sweeps.h; this file parses, writes and charts.
 #include <algorithm>
 #include <chrono>
 #include <filesystem>

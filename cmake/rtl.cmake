@@ -1,6 +1,6 @@
 # The RTL as the C++ side builds it: its sources, its widths (one set of -G parameters for every
 # Verilated model and for the C++ mirrors), Verilator's options, and zblend_verilate(), the one
-# place a model of zb_rop is Verilated (rtlmodel/ for the testbench, systemc/ with --sc).
+# place a model of zb_rop is Verilated (tb/rtlmodel/ for the testbench, tb/systemc/ with --sc).
 # The package first: its types are used by every module after it.
 file(GLOB ZBLEND_RTL CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/rtl/*.sv)
 list(REMOVE_ITEM ZBLEND_RTL ${PROJECT_SOURCE_DIR}/rtl/zb_pkg.sv)
@@ -53,7 +53,7 @@ endforeach()
 set(ZBLEND_RTL_PARAMS -GWINDOW=${ZBLEND_RTL_WINDOW} -GBEAT=${ZBLEND_RTL_BEAT} -GDEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS} -GCOV_SAMPLES=${ZBLEND_RTL_COV_SAMPLES}
     -GTILE_W=${ZBLEND_RTL_TILE} -GTILE_H=${ZBLEND_RTL_TILE} -GACC_BITS=${ZBLEND_RTL_ACC_BITS}
     -GREV_BITS=${ZBLEND_RTL_REV_BITS} -GWEIGHT_BITS=${ZBLEND_RTL_WEIGHT_BITS})
-# The same values for the C++ mirrors (rtlmodel/rtl_params.h).
+# The same values for the C++ mirrors (tb/rtlmodel/rtl_params.h).
 set(ZBLEND_RTL_DEFINES ZBLEND_RTL_DEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS}
     ZBLEND_RTL_COV_SAMPLES=${ZBLEND_RTL_COV_SAMPLES} ZBLEND_RTL_TILE=${ZBLEND_RTL_TILE}
     ZBLEND_RTL_WINDOW=${ZBLEND_RTL_WINDOW} ZBLEND_RTL_BEAT=${ZBLEND_RTL_BEAT}
@@ -90,14 +90,14 @@ endif()
 # widths above: the assertion build (--assert: SVA and unique-case checks), or with FAST the
 # speed build (no assertion code at all: ZB_NO_SVA, no --assert; docs/rtl.md "Two builds"). BUG adds the deliberate defects the checkers must catch, each switched on by a
 # plusarg (+zb_bug_window, +zb_bug_accum; the blend's without either); SYSTEMC builds it with --sc. MUTANTS builds Yosys's
-# netlist of zb_rop's mutants (mutation/CMakeLists.txt) in its wrapper instead of rtl/: a
+# netlist of zb_rop's mutants (tb/mutation/CMakeLists.txt) in its wrapper instead of rtl/: a
 # generated netlist, so no -Wall, and no assertions (Yosys drops them). TRACE adds FST tracing
 # and the waveform probe, model PREFIX_probe. COVERAGE counts lines, toggles and the RTL's
 # covers; FUNCTIONAL_COVERAGE the covers only, with the coverage plan's module bound in.
 function(zblend_verilate target)
   cmake_parse_arguments(V "SYSTEMC;BUG;FAST;COVERAGE;FUNCTIONAL_COVERAGE;TRACE" "PREFIX;DIRECTORY;MUTANTS" "" ${ARGN})
   set(args --assert ${ZBLEND_VERILATOR_OPT} -Wall ${ZBLEND_RTL_PARAMS})
-  set(sources ${PROJECT_SOURCE_DIR}/rtlmodel/zb_rop_public.vlt ${ZBLEND_RTL_WAIVERS} ${ZBLEND_RTL_SIM})
+  set(sources ${PROJECT_SOURCE_DIR}/tb/rtlmodel/zb_rop_public.vlt ${ZBLEND_RTL_WAIVERS} ${ZBLEND_RTL_SIM})
   if(V_FAST)
     # Signals only the assertions read are unused here: the assertion build lints them.
     set(args ${ZBLEND_VERILATOR_OPT} -Wall -Wno-UNUSEDSIGNAL -Wno-UNUSEDPARAM +define+ZB_NO_SVA
@@ -106,9 +106,9 @@ function(zblend_verilate target)
   if(V_MUTANTS)
     set(args ${ZBLEND_VERILATOR_OPT} -Wno-fatal -Wno-lint -Wno-style -Wno-UNOPTFLAT
         ${ZBLEND_RTL_PARAMS})
-    set(sources ${PROJECT_SOURCE_DIR}/mutation/zb_rop_mutant.vlt
+    set(sources ${PROJECT_SOURCE_DIR}/tb/mutation/zb_rop_mutant.vlt
         ${PROJECT_SOURCE_DIR}/rtl/zb_pkg.sv ${V_MUTANTS}
-        ${PROJECT_SOURCE_DIR}/mutation/zb_rop_mutant.sv)
+        ${PROJECT_SOURCE_DIR}/tb/mutation/zb_rop_mutant.sv)
   endif()
   if(V_BUG)
     list(APPEND args +define+ZB_INJECT_BLEND_BUG +define+ZB_INJECT_WINDOW_BUG
@@ -152,9 +152,9 @@ function(zblend_verilate target)
     verilator_link_systemc(${target})  # verilate() only sets VM_SC; this adds libsystemc
   endif()
   if(V_TRACE)
-    # The testbench's probe (rtlmodel/zb_wave_probe.sv), traced into the same FST as zb_rop.
+    # The testbench's probe (tb/rtlmodel/zb_wave_probe.sv), traced into the same FST as zb_rop.
     verilate(${target} TRACE_FST
-      SOURCES ${PROJECT_SOURCE_DIR}/rtlmodel/zb_wave_probe.sv
+      SOURCES ${PROJECT_SOURCE_DIR}/tb/rtlmodel/zb_wave_probe.sv
       TOP_MODULE zb_wave_probe PREFIX ${V_PREFIX}_probe
       DIRECTORY ${V_DIRECTORY}_probe
       VERILATOR_ARGS -Wall)

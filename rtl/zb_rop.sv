@@ -509,7 +509,7 @@ module zb_rop
 `ifdef __ICARUS__
   // Icarus 11 may leave a continuous assignment from a word of an unpacked array of this module
   // at X (docs/rtl.md "Simulators"). Only there: a process would renumber Yosys's cells, which
-  // mutation/reasons.json names.
+  // tb/mutation/reasons.json names.
   always_comb begin
     mon_x4_addr_o  = x_addr_q[4];
     mon_x11_addr_o = x_addr_q[Last];

@@ -5,7 +5,7 @@
   conformance_mutate.py --build DIR --suite DIR --out DIR [-j N] [--sample N | --mutants LIST]
                         [--resume]
 
-The mutants are the mutation tool's sample (docs/mutation.md: build/mutation/mutants.v, one
+The mutants are the mutation tool's sample (docs/mutation.md: build/tb/mutation/mutants.v, one
 netlist with every mutant behind +zb_mutant=N, at the build's widths). The kit's testbench is
 built once around that netlist with zb_rop's adapter (scripts/conformance.py, mutant 0, which
 must pass every test it runs), then every mutant runs the suite's tests of the netlist's own
@@ -41,7 +41,7 @@ def parse_args():
                                  formatter_class=argparse.RawDescriptionHelpFormatter,
                                  epilog=__doc__.split("\n\n", 1)[1])
     ap.add_argument("--build", default=os.path.join(ROOT, "build"),
-                    help="the tree with mutation/mutants.v and zblend (default build/)")
+                    help="the tree with tb/mutation/mutants.v and zblend (default build/)")
     ap.add_argument("--suite", required=True, help="an exported suite (zblend conformance export)")
     ap.add_argument("--out", required=True)
     ap.add_argument("-j", "--jobs", type=int, default=os.cpu_count() or 1)
@@ -59,7 +59,7 @@ def parse_args():
 
 
 def count_mutants(build):
-    path = os.path.join(build, "mutation", "mutations.txt")
+    path = os.path.join(build, "tb", "mutation", "mutations.txt")
     try:
         with open(path) as f:
             lines = [ln.rstrip("\n") for ln in f if ln.strip()]
@@ -94,9 +94,9 @@ def instance_of(description):
 def build_testbench(a):
     """conformance.py on mutant 0 over the configuration's tests: builds the testbench around
     the netlist and proves the unmutated netlist passes; returns (binary, {test: seconds})."""
-    mut = os.path.join(a.build, "mutation", "mutants.v")
+    mut = os.path.join(a.build, "tb", "mutation", "mutants.v")
     dut = [os.path.join(ROOT, "rtl", "zb_pkg.sv"), mut,
-           os.path.join(ROOT, "mutation", "zb_rop_mutant.sv"),
+           os.path.join(ROOT, "tb", "mutation", "zb_rop_mutant.sv"),
            os.path.join(ROOT, "conformance", "sv", "zb_conf_adapter.sv")]
     base = os.path.join(a.out, "mutant0")
     with open(os.path.join(a.suite, "manifest.json")) as f:

@@ -8,7 +8,7 @@ proofs, the mutants and Icarus read) and its simulation view in rtl/sim/X.sv (wh
 Verilated model runs). For each such module this
 finds every parameter set zb_rop gives it, at every lint parameter set (rtl/lint_sets.txt), and
 proves the views equal there with Yosys: both views elaborated through the module's harness
-(formal/), `equiv_make` pairing their signals by name, `equiv_simple`, `equiv_induct`,
+(tb/formal/), `equiv_make` pairing their signals by name, `equiv_simple`, `equiv_induct`,
 `equiv_status -assert`: from equal states, equal forever.
   zb_mul8: the harness drives k3_i as zb_rop does; every register and output is paired.
   zb_resolve: combinational; the simulation view computes the products only when en_i
@@ -41,7 +41,7 @@ import time
 
 from zbscript import ROOT
 
-# module: (harness module in formal/<harness>.sv, the modules it reads besides, planted
+# module: (harness module in tb/formal/<harness>.sv, the modules it reads besides, planted
 # difference in the simulation view: a signal tied to 0, or ("edit", text, replacement) for a
 # view whose signals are all ports or a function's)
 VIEWS = {
@@ -145,7 +145,7 @@ def equiv_script(module, values, defect, out):
     harness, others, planted = VIEWS[module]
     chparam = " ".join(f"-set {k} {v}" for k, v in values)
     sources = " ".join(["rtl/zb_pkg.sv"] + [f"rtl/{m}.sv" for m in others + [module]] +
-                       [f"formal/{harness}.sv"])
+                       [f"tb/formal/{harness}.sv"])
     def view(tag, sim):
         reg_taps, mem_taps = plane_taps(values, sim) if module == "zb_plane" else ("", "")
         view_file = f"rtl/sim/{module}.sv"
@@ -186,7 +186,7 @@ def planted_view(module, edit, out):
 
 
 def plane_taps(values, sim):
-    """connect commands for zb_plane_views' taps (formal/zb_plane_views.sv) in one view: the
+    """connect commands for zb_plane_views' taps (tb/formal/zb_plane_views.sv) in one view: the
     registers' (before the memories are mapped, which drops unread wires) and the memory words'
     (after)."""
     p = dict(values)

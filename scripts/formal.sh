@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # zblend formal proofs (make formal; docs/formal.md): the flow SymbiYosys would generate, written
 # out for Debian's yosys 0.23, yosys-smtbmc and z3. Per job:
-#   1. yosys: read_verilog -formal -sv -DSYNTHESIS -Iformal rtl/zb_pkg.sv rtl/*.sv formal/<harness>.sv
+#   1. yosys: read_verilog -formal -sv -DSYNTHESIS -Itb/formal rtl/zb_pkg.sv rtl/*.sv tb/formal/<harness>.sv
 #      (the RTL's concurrent SVA is beyond yosys 0.23's reader: the harnesses restate it); chparam;
 #      hierarchy; flatten; the harness's taps (`// formal-tap: <wire> <path>` lines, in the harness
-#      or a formal/ header it includes, become `connect -nounset -set`, so a harness reads DUT
+#      or a tb/formal/ header it includes, become `connect -nounset -set`, so a harness reads DUT
 #      internals after flattening; a path ending in [*] is a memory's words, connected after
 #      memory_map, sat only) and, for a defect run,
 #      a forced signal; proc; prep; memory_nordff; async2sync; chformal -assume -early; opt -full
@@ -237,7 +237,7 @@ for r in "${runs[@]}"; do
   job=$name; [[ -n $dname ]] && job="defect_$dname"
   dir="$out/$job"
   rm -rf "$dir"; mkdir -p "$dir"
-  harness="formal/$top.sv"
+  harness="tb/formal/$top.sv"
   [[ -f $harness ]] || { echo "formal.sh: $harness missing" >&2; exit 1; }
 
   defines="" force=""
@@ -245,10 +245,10 @@ for r in "${runs[@]}"; do
     define\ *) defines="-D${dhow#define }" ;;
     force\ *) lhs=${dhow#force }; force="connect -set ${lhs%%=*} ${lhs#*=};" ;;
   esac
-  # Taps sit in the harness or in the formal/ headers it includes. A path ending in [*] is a
+  # Taps sit in the harness or in the tb/formal/ headers it includes. A path ending in [*] is a
   # memory: its words, word 0 lowest, taken after memory_map (sat only).
   srcs="$harness"
-  for f in $(sed -n 's|^ *`include "\([A-Za-z0-9_.]*\)".*|formal/\1|p' "$harness"); do
+  for f in $(sed -n 's|^ *`include "\([A-Za-z0-9_.]*\)".*|tb/formal/\1|p' "$harness"); do
     [[ -f $f ]] && srcs+=" $f"
   done
   taps=$(sed -n 's|^ *// formal-tap: *\([A-Za-z0-9_]*\) *\([][A-Za-z0-9_.]*\) *$|connect -nounset -set \1 \2;|p' $srcs)
@@ -274,7 +274,7 @@ for r in "${runs[@]}"; do
   start=$SECONDS
   note=""
   if ! yosys -q -l "$dir/yosys.log" -p "
-      read_verilog -formal -sv -DSYNTHESIS -Iformal $defines $rtl $harness;
+      read_verilog -formal -sv -DSYNTHESIS -Itb/formal $defines $rtl $harness;
       chparam $(chparams "$params") $top;
       hierarchy -check -top $top; proc; flatten; rename -top $top;
       $force $taps

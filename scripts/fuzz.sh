@@ -2,7 +2,7 @@
 # Runs the libFuzzer targets of a build tree (make fuzz, make fuzz-ci; docs/fuzzing.md).
 # usage: fuzz.sh BUILD SECONDS OUT CRASHES [TARGET...]
 # Each target runs SECONDS, JOBS at a time (default: the cores), from the seeds in
-# fuzz/corpus/TARGET/ (read only) and OUT/TARGET/, where new inputs and OUT/TARGET.log go. A
+# tests/fuzz/corpus/TARGET/ (read only) and OUT/TARGET/, where new inputs and OUT/TARGET.log go. A
 # crash, leak, timeout or broken invariant is saved to CRASHES/ and fails the run with the
 # command that reproduces it.
 # FUZZ_RUNS="obj=N gltf=N ..." gives a target a fixed number of runs from seed FUZZ_SEED
@@ -28,11 +28,11 @@ budget() {  # the libFuzzer options that bound target $1's run
 }
 run() {
   local t=$1 dict=()
-  [[ -f "$root/fuzz/$t.dict" ]] && dict=("-dict=$root/fuzz/$t.dict")
+  [[ -f "$root/tests/fuzz/$t.dict" ]] && dict=("-dict=$root/tests/fuzz/$t.dict")
   mkdir -p "$out/$t"
   # shellcheck disable=SC2046  # budget() gives separate options
   "$build/fuzz_$t" "${dict[@]}" $(budget "$t") -timeout=10 -rss_limit_mb=2048 \
-    -print_final_stats=1 -artifact_prefix="$crashes/$t-" "$out/$t" "$root/fuzz/corpus/$t" \
+    -print_final_stats=1 -artifact_prefix="$crashes/$t-" "$out/$t" "$root/tests/fuzz/corpus/$t" \
     >"$out/$t.log" 2>&1
   echo $? >"$out/$t.rc"
 }

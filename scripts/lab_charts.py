@@ -4,7 +4,7 @@
 Usage: lab_charts.py LAB_SUMMARY_CSV OUT_DIR [BEAT]
 
 Reads the per-family means `zblend lab` writes (lab_summary.csv, Pareto flags included: the
-front is computed and tested in C++, lab/lab.cpp) and writes OUT_DIR/main.png (every scene,
+front is computed and tested in C++, app/lab/lab.cpp) and writes OUT_DIR/main.png (every scene,
 error against cycles or fragments), OUT_DIR/main-bytes.png (against memory bytes),
 OUT_DIR/main-port-bytes.png (against the tile port's bytes per pixel, per schedule) and
 OUT_DIR/family-FAMILY.png for each family. From lab.csv beside the summary, OUT_DIR/tile-beat.png:

@@ -12,7 +12,7 @@ set -uo pipefail
 
 usage() {
   echo "usage: scripts/mutant_equiv.sh [--time-limit S] DESIGN.il N | DESIGN.il \"MUTATION\"" >&2
-  echo "  DESIGN.il  zb_rop unmutated (build/mutation/design.il); N: line N of mutations.txt beside it" >&2
+  echo "  DESIGN.il  zb_rop unmutated (build/tb/mutation/design.il); N: line N of mutations.txt beside it" >&2
 }
 limit=900
 if [[ ${1:-} == --time-limit ]]; then limit=${2:?}; shift 2; fi

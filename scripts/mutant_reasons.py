@@ -1,7 +1,7 @@
-"""Written reasons for mutants no test kills (mutation/reasons.json, docs/mutation.md).
+"""Written reasons for mutants no test kills (tb/mutation/reasons.json, docs/mutation.md).
 
 A reason names the mutants it covers by regular expressions over their descriptions (Yosys's
-`mutate` command lines, build/mutation/mutations.txt), says which kind of survivor they are and
+`mutate` command lines, build/tb/mutation/mutations.txt), says which kind of survivor they are and
 why no test of zblend's can kill them. A survivor with a reason still counts as a survivor: the
 reason explains the score, it does not raise it. A reason that matches no mutant of the netlist
 is stale (the RTL moved) and is reported as such.

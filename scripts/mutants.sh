@@ -4,7 +4,7 @@
 #     `mutate -list N -seed S` samples N mutations evenly over cells, wires and source lines (a
 #     few more listed, memories' read enables left out: see below).
 #  2. Each is applied with `mutate -ctrl mutsel W i`: live only when mutsel == i (0: none), so
-#     one netlist, Verilated once, holds all N; the wrapper mutation/zb_rop_mutant.sv sets mutsel
+#     one netlist, Verilated once, holds all N; the wrapper tb/mutation/zb_rop_mutant.sv sets mutsel
 #     from the plusarg +zb_mutant=i.
 # Writes OUT/mutations.txt (line i: mutant i, Yosys's own description), OUT/mutants.v and
 # OUT/design.il (zb_rop unmutated, for scripts/mutant_equiv.sh).

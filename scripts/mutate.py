@@ -5,7 +5,7 @@ Usage: mutate.py [--build DIR] [--out DIR] [-j N] [--sample N | --mutants LIST]
                  [--group smoke|quick] [--no-equiv] [--no-full] [--resume]
                  [--min-smoke PCT] [--min-full PCT]
 
-Runs zblend_tb_mut (zb_rop as Yosys's mutant netlist, build/mutation/) against the golden model:
+Runs zblend_tb_mut (zb_rop as Yosys's mutant netlist, build/tb/mutation/) against the golden model:
   1. mutant 0 (the netlist unmutated) passes every test of both groups, or the run stops: a
      netlist that is not zb_rop scores nothing; its times set each test's time limit;
   2. each mutant runs the smoke group (tb/regressions.json: what make test runs) in order, and
@@ -68,9 +68,9 @@ def parse_args():
     ap.add_argument("--resume", action="store_true",
                     help="keep the verdicts in OUT/journal.jsonl from an interrupted run with "
                     "the same netlist and run only the rest")
-    ap.add_argument("--reasons", default=os.path.join(ROOT, "mutation", "reasons.json"),
+    ap.add_argument("--reasons", default=os.path.join(ROOT, "tb", "mutation", "reasons.json"),
                     help="written reasons for survivors no test can kill (default "
-                    "mutation/reasons.json); the report names each survivor's")
+                    "tb/mutation/reasons.json); the report names each survivor's")
     ap.add_argument("--min-smoke", type=float, default=0.0,
                     help="exit 1 below this smoke score, percent (default 0)")
     ap.add_argument("--min-full", type=float, default=0.0,
@@ -85,9 +85,9 @@ def parse_args():
 
 def read_netlist(build):
     """The mutant testbench and the netlist's mutants, one description each (Yosys's mutate
-    command, BUILD/mutation/mutations.txt)."""
+    command, BUILD/tb/mutation/mutations.txt)."""
     tb = os.path.join(build, "zblend_tb_mut")
-    listing = os.path.join(build, "mutation", "mutations.txt")
+    listing = os.path.join(build, "tb", "mutation", "mutations.txt")
     for f in (tb, listing):
         if not os.path.exists(f):
             usage_error(f"{f} is missing: build it first (make build, or cmake --build "
@@ -340,7 +340,7 @@ def run_stages(a, st, runner, chosen, smoke, full, reason_of):
                   if (reason_of[m] or {}).get("kind", "equivalent") != "equivalent"]
         for m in differ:
             st.rows[m]["equiv"] = "not tried"
-        design = os.path.join(a.build, "mutation", "design.il")
+        design = os.path.join(a.build, "tb", "mutation", "design.il")
         survivors = st.run("equivalence", lambda m: prove_equivalent(design, a.equiv_limit, m),
                            [m for m in survivors if m not in differ], "equiv") + differ
     if not a.no_full and survivors:

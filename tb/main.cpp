@@ -182,7 +182,7 @@ void add_options(CLI::App& app, Config& c, Args& a) {
 #endif
 #ifdef ZB_TB_MUT  // zblend_tb_mut: the RTL is Yosys's mutant netlist (docs/mutation.md)
   app.add_option("--mutant", a.mutant,
-                 "the live mutant, 1 to the netlist's count (build/mutation/mutations.txt, line "
+                 "the live mutant, 1 to the netlist's count (build/tb/mutation/mutations.txt, line "
                  "N); 0 runs the netlist unmutated")
       ->check(CLI::Range(0, 2047))
       ->capture_default_str();

@@ -1,6 +1,6 @@
 // The lock-step scoreboard (docs/testbench.md "A mismatch"): the golden model's write log for
 // every fragment of a pass, against the RTL's retire port as the monitor reports it
-// (rtlmodel/retire_monitor.h), and every stored tile beat against the golden frame. The first
+// (tb/rtlmodel/retire_monitor.h), and every stored tile beat against the golden frame. The first
 // wrong, missing or extra write stops the run; the earliest one is kept (the tiles of a
 // tile-parallel run finish out of order).
 #pragma once

@@ -35,7 +35,7 @@ std::vector<Fragment> random_stream(Rng& r, int w, int h, size_t n, int hot, dou
 
 // The hazard suite's stimulus on one kRtlTileW x kRtlTileH tile, one pass at a time: mostly
 // states where back-to-back fragments change the pixel (the read-modify-write path), and
-// streams of long runs on 1-4 pixels mixed with random ones. Also drives bench/bench_rtl.cpp.
+// streams of long runs on 1-4 pixels mixed with random ones. Also drives tests/bench/bench_rtl.cpp.
 class HazardStimulus {
  public:
   explicit HazardStimulus(uint64_t seed);

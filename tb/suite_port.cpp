@@ -1,4 +1,4 @@
-// port: the port stress mode (rtlmodel/port_stress.h, docs/testbench.md "Port stress"). No
+// port: the port stress mode (tb/rtlmodel/port_stress.h, docs/testbench.md "Port stress"). No
 // golden model runs: each iteration drives one fresh model's tile port with --fragments random
 // operations (default 20000) and checks every read beat and the tile counters against a model
 // of the planes. Its words compared count as pixels.

@@ -1,4 +1,4 @@
-// zblend plan's hidden-line offset (lab/offset_plan.h): the choice within both bounds, of least
+// zblend plan's hidden-line offset (app/lab/offset_plan.h): the choice within both bounds, of least
 // error, and the best achievable when nothing is within them.
 #include <gtest/gtest.h>
 

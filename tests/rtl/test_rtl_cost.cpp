@@ -1,4 +1,4 @@
-// The cost model (lab/sizing_cost.h, behind `zblend plan`) against the RTL itself: on every
+// The cost model (app/lab/sizing_cost.h, behind `zblend plan`) against the RTL itself: on every
 // built-in scene x every pass plan, under both schedules, the streaming and tile cycles it
 // predicts at the RTL's tile size are the ones the Verilated zb_rop takes.
 #include <gtest/gtest.h>

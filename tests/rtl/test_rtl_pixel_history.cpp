@@ -1,4 +1,4 @@
-// A pixel's history beside the RTL (rtlmodel/pixel_retires.h, zblend pixel --backend rtl): on
+// A pixel's history beside the RTL (tb/rtlmodel/pixel_retires.h, zblend pixel --backend rtl): on
 // zb_rop every fragment at every pixel of small frames retires once at X4 and once at X11, after
 // it was accepted, with the golden model's writes, and the RTL's final value is the golden
 // model's. Built against the bug build (ZB_DEFECT: red bit 0 flipped on alpha blends with an odd

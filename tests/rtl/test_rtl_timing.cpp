@@ -1,4 +1,4 @@
-// zb_rop's timing facts (rtlmodel/rtl_timing.h), the source of the cost model and the SystemC
+// zb_rop's timing facts (tb/rtlmodel/rtl_timing.h), the source of the cost model and the SystemC
 // golden module, against the RTL itself: the constants zb_rop.sv declares, read from the
 // Verilated model, and the cycles a tile's stream takes, measured.
 #include <gtest/gtest.h>

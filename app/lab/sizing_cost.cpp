@@ -119,7 +119,7 @@ void CostCounter::draw(const Fragment* fragments, size_t count) {
     }
 }
 
-// The driver's run of a pass (rtlmodel/tile_driver.cpp): per touched tile, the setup cycle and the
+// The driver's run of a pass (tb/rtlmodel/tile_driver.cpp): per touched tile, the setup cycle and the
 // load beats of its planes (tile_io.h; the whole tile, also where the frame clips it), stream
 // through zb_rop's issue window and drain (IssueSchedule), the store beats; and the same tiles
 // with a second tile buffer.
@@ -167,7 +167,7 @@ PassStats CostCounter::end_pass() {
   return s;
 }
 
-// As the RTL driver's tile schedule (rtlmodel/rtl_rop.cpp): per tile the group's passes that
+// As the RTL driver's tile schedule (tb/rtlmodel/rtl_rop.cpp): per tile the group's passes that
 // touch it and the operations on the resident tile (TileStates::plan_tile, from the tile states
 // at the group's start): a copy or sweep before a pass, its setup cycle and loads, one store.
 void CostCounter::end_group() {

@@ -1,5 +1,5 @@
 // The Verilated zb_rop (verilator --sc) as a SystemC module with the golden one's ports
-// (zb_golden_sc.h): a thread drives the tile protocol of rtlmodel/tile_driver.cpp on its signals.
+// (zb_golden_sc.h): a thread drives the tile protocol of tb/rtlmodel/tile_driver.cpp on its signals.
 #pragma once
 
 #include <cstdint>

@@ -1,6 +1,6 @@
 // The sizing's cost model (docs/sizing.md "The cost model"): what a method costs the RTL, counted
 // while the golden model renders it. A backend wrapper sees every pass's fragment stream and
-// bins it into tiles, as the RTL driver (rtlmodel/tile_bins.cpp) does, at every analysed tile size at
+// bins it into tiles, as the RTL driver (tb/rtlmodel/tile_bins.cpp) does, at every analysed tile size at
 // once.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Binning a pass's fragments by tile, stably: the order the RTL driver streams them in
-// (rtlmodel/tile_driver.cpp), shared with the SystemC modules (systemc/).
+// (tb/rtlmodel/tile_driver.cpp), shared with the SystemC modules (tb/systemc/).
 #pragma once
 
 #include <cstddef>

@@ -69,7 +69,7 @@ struct LabRow {
   uint64_t rtl_stream_cycles = 0;      // of which streaming fragments (first offer to drain)
   uint64_t rtl_tile_cycles = 0;        // of which loading and storing tiles
   uint64_t rtl_mismatch_pixels = 0;    // pixels where the RTL's frame differs from the golden's
-  // The cost model (lab/sizing_cost.h) at the RTL's tile: streaming cycles, and tile cycles at
+  // The cost model (app/lab/sizing_cost.h) at the RTL's tile: streaming cycles, and tile cycles at
   // each of kLabBeats (at zb_rop's BEAT they are the RTL's).
   uint64_t model_stream_cycles = 0;
   std::array<uint64_t, kLabBeats.size()> model_tile_cycles{};

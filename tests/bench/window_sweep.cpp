@@ -1,5 +1,5 @@
 // zblend_window_sweep: the issue window's depth against streaming cycles per fragment, by the
-// RTL's own schedule (rtlmodel/rtl_timing.h), on the scenes and methods where fragments wait
+// RTL's own schedule (tb/rtlmodel/rtl_timing.h), on the scenes and methods where fragments wait
 // for their pixels; with one tile buffer (zb_rop) and with two (the proposed design: each
 // pass's tiles as one stream, IssueSchedule::run_two_buffers, its tile port taking no cycles). Usage: zblend_window_sweep [WIDTH HEIGHT] [SCENE...] (scene files or
 // built-in names; default the lab's two real meshes).

@@ -41,8 +41,8 @@ void ZbGoldenSc::run() {
 }
 
 // Per touched tile: its setup and load beats, its fragments in the order zb_rop issues them
-// (rtlmodel/rtl_timing.h: the issue window keeps pass order per pixel, so the result is
-// render()'s), each at its issue cycle, the drain, its store beats (rtlmodel/tile_io.h).
+// (tb/rtlmodel/rtl_timing.h: the issue window keeps pass order per pixel, so the result is
+// render()'s), each at its issue cycle, the drain, its store beats (tb/rtlmodel/tile_io.h).
 PassStats ZbGoldenSc::run_pass() {
   wait(clk_i.posedge_event());  // a pass starts on a clock edge, as zb_rop's would
   const sc_core::sc_time start = sc_core::sc_time_stamp();

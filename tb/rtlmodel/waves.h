@@ -34,7 +34,7 @@ struct WaveView {
   std::string title;
 };
 
-// The testbench's signals in a waveform (rtlmodel/zb_wave_probe.sv, scope tb), as the driver sets
+// The testbench's signals in a waveform (tb/rtlmodel/zb_wave_probe.sv, scope tb), as the driver sets
 // them for the coming cycle: the fragment offered, and the writes landing at its rising edge.
 struct WaveProbe {
   static constexpr uint32_t kNone = ~0u;

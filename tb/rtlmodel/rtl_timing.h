@@ -1,5 +1,5 @@
-// zb_rop's timing facts, the one source the cost model (lab/sizing_cost.h), the SystemC golden
-// module (systemc/) and the RTL driver's checks take them from. The RTL states the same numbers
+// zb_rop's timing facts, the one source the cost model (app/lab/sizing_cost.h), the SystemC golden
+// module (tb/systemc/) and the RTL driver's checks take them from. The RTL states the same numbers
 // (zb_rop.sv: Span, Last; zb_issue_window.sv: WINDOW); tests/rtl/test_rtl_timing.cpp fails when
 // the two disagree, by reading them from the Verilated model and measuring streams on it.
 #pragma once

@@ -20,7 +20,7 @@ static_assert(Vzb_rop_sc_zb_rop::WEIGHT_BITS == kRtlWboit.weight_bits, "WEIGHT_B
 
 namespace {
 
-constexpr uint64_t kDrainLimit = 1000;  // as rtlmodel/driver_checks.h: cycles busy_o may stay high
+constexpr uint64_t kDrainLimit = 1000;  // as tb/rtlmodel/driver_checks.h: cycles busy_o may stay high
 
 // Bits [lo, lo + width) of a port's value, width at most 32: an integer up to 64 bits, sc_bv
 // beyond.

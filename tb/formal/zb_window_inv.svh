@@ -1,5 +1,5 @@
 // zb_rop's issue window, restated inside a zb_rop harness (after `zb_rop_dut.svh`, rst_ni
-// as the harness drives it): the window group's invariants (formal/zb_window_check.sv) on the
+// as the harness drives it): the window group's invariants (tb/formal/zb_window_check.sv) on the
 // real pipeline (P1 = M, P2 = X1). Induction over zb_rop needs them: a state with a wrong hit,
 // same or age bit would issue a fragment too early or out of pixel order. They hold
 // whatever the fragments, so the harnesses assert them, never assume them.

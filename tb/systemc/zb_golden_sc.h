@@ -25,7 +25,7 @@ class ZbGoldenSc : public sc_core::sc_module {
 
   const Framebuffer& framebuffer() const { return rop_.framebuffer(); }
   // Clock cycles spent in passes (stream cycles by zb_rop's issue rule, tile cycles by the
-  // driver's tile traffic, rtlmodel/tile_io.h), and the simulated time they took: from the
+  // driver's tile traffic, tb/rtlmodel/tile_io.h), and the simulated time they took: from the
   // first rising edge of each pass to its PassStats.
   uint64_t busy_cycles() const { return busy_cycles_; }
   uint64_t tile_io_cycles() const { return io_cycles_; }

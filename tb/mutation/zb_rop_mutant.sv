@@ -1,6 +1,6 @@
 // zb_rop with Yosys's mutants (make mutate, docs/mutation.md): the same parameters and ports as
 // rtl/zb_rop.sv, around zb_rop_mutants, the netlist `mutate -ctrl` made of zb_rop at these
-// parameters (build/mutation/mutants.v). Mutant N is live when the simulation is started with
+// parameters (build/tb/mutation/mutants.v). Mutant N is live when the simulation is started with
 // +zb_mutant=N; without it, or with N = 0, the netlist is zb_rop unchanged. The netlist was
 // elaborated with the build's widths: the parameters here only name them for the driver.
 module zb_rop
