@@ -1,11 +1,13 @@
 // zblend pixel: the history of a few pixels of a scene under one method or of a trace file, on
 // the golden model and beside the RTL (docs/history.md).
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <utility>
 
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include "cli.h"
 #include "commands.h"
@@ -44,11 +46,38 @@ void add_rtl(FrameHistory& f, const PixelOptions& po, const std::function<void(B
     throw UsageError(fmt::format("--schedule: unknown schedule '{}' (choose from tile, pass)", po.schedule));
   o.trace_path = po.waves;
   add_rtl_retires(f, o, run);
-  if (!po.waves.empty()) {
-    for (const std::string& gtkw : write_pixel_save_files(f, po.waves))
-      fmt::print(stderr, "zblend pixel: waves: {} (the whole run), {} (gtkwave {}): markers at "
-                         "the pixel's accepts and writes\n", po.waves, gtkw, gtkw);
+  if (po.waves.empty()) return;
+  std::vector<std::vector<std::string>> files;
+  try {
+    files = write_pixel_save_files(f, po.waves);
+  } catch (const std::exception& e) {  // nothing half-written: the FST and any save file go
+    std::error_code ec;
+    std::filesystem::remove(po.waves, ec);
+    for (const PixelHistory& h : f.pixels)
+      for (size_t page = 1;; ++page)
+        if (!std::filesystem::remove(pixel_save_file_path(po.waves, h.x, h.y, f.pixels.size() > 1, page), ec))
+          break;
+    throw UsageError(fmt::format("--waves: {}", e.what()));
   }
+  for (size_t k = 0; k < files.size(); ++k) {
+    const std::vector<std::string>& pages = files[k];
+    fmt::print(stderr, "zblend pixel: waves: {} (the whole run); pixel ({}, {}): {} (gtkwave {}): "
+                       "markers at its fragments' accepts and writes, {} a save file\n",
+               po.waves, f.pixels[k].x, f.pixels[k].y, fmt::join(pages, ", "), pages.front(),
+               kMarkersPerSaveFile);
+  }
+}
+
+// Every output is checked, and its directory made, before the frame runs: a bad path fails at
+// once, naming its option, with nothing written.
+void check_outputs(const PixelOptions& o, const std::vector<std::pair<int, int>>& pixels) {
+  check_json(o.json);
+  std::vector<OutputPath> outputs{{"--json", o.json == "-" ? "" : o.json, ".json"},
+                                  {"--waves", o.waves, ".fst"}};
+  if (!o.waves.empty())
+    for (const auto& [x, y] : pixels)
+      outputs.push_back({"--waves", pixel_save_file_path(o.waves, x, y, pixels.size() > 1), ".gtkw"});
+  create_output_dirs(outputs);
 }
 
 void check_backend(const CLI::App& cmd, const PixelOptions& o, int depth_bits) {
@@ -57,7 +86,6 @@ void check_backend(const CLI::App& cmd, const PixelOptions& o, int depth_bits) {
   for (const char* option : {"--schedule", "--waves"})
     if (o.backend == "golden" && cmd.count(option))
       throw UsageError(fmt::format("{}: needs --backend rtl or both", option));
-  if (!o.waves.empty()) check_writable("--waves", o.waves, ".fst");
   if (o.backend != "golden" && depth_bits != kRtlDepthBits)
     throw UsageError(fmt::format("--backend rtl: the RTL model is built with {}-bit depth, not {}",
                                  kRtlDepthBits, depth_bits));
@@ -69,7 +97,6 @@ void run_trace_pixel(const CLI::App& cmd, const PixelOptions& o) {
     if (cmd.count(option))
       throw UsageError(fmt::format("--trace, {}: a trace holds its frame and passes; give one of them",
                                    option));
-  check_json(o.json);
   Trace trace;
   try {
     trace = read_trace(o.trace);
@@ -77,9 +104,11 @@ void run_trace_pixel(const CLI::App& cmd, const PixelOptions& o) {
     throw UsageError(e.what());
   }
   check_backend(cmd, o, trace.depth_bits);
-  FrameHistory f = record_history(trace, parse_at(o.at, trace.width, trace.height));
+  const std::vector<std::pair<int, int>> pixels = parse_at(o.at, trace.width, trace.height);
+  check_outputs(o, pixels);
+  FrameHistory f = record_history(trace, pixels);
   if (o.backend != "golden") add_rtl(f, o, [&](Backend& b) { replay_trace(trace, b); });
-  write_histories(f, fmt::format("trace {} ({} passes)", o.trace, f.passes.size()), o.trace, "", o.json, nullptr);
+  write_histories(f, fmt::format("trace {} ({})", o.trace, count_text(f.passes.size(), "pass", "passes")), o.trace, "", o.json, nullptr);
 }
 
 void run_pixel(const CLI::App& cmd, const PixelOptions& o) {
@@ -90,13 +119,14 @@ void run_pixel(const CLI::App& cmd, const PixelOptions& o) {
   if (!plan)
     throw UsageError(fmt::format("--method: unknown method '{}' (see 'zblend methods')", o.method));
   check_backend(cmd, o, vp.depth_bits);
-  check_json(o.json);
+  check_outputs(o, pixels);
   const Scene scene = resolve_scene_with_background(o.frame, o.background);
   if (!o.quiet) print_warnings("zblend pixel", scene);
   const RasterizedScene rs = rasterize_scene(scene, vp);
   FrameHistory f = record_history(rs, *plan, pixels);  // replay-checked
   if (o.backend != "golden") add_rtl(f, o, [&](Backend& b) { render(rs, *plan, b); });
-  write_histories(f, fmt::format("scene {}, method {} ({} passes)", o.frame.scene, o.method, f.passes.size()),
+  write_histories(f, fmt::format("scene {}, method {} ({})", o.frame.scene, o.method,
+                                 count_text(f.passes.size(), "pass", "passes")),
                   o.frame.scene, o.method, o.json, &scene);
 }
 

@@ -21,6 +21,7 @@
 #include "error_maps.h"
 #include "pipeline/frame_render.h"
 #include "io/image.h"
+#include "lab.h"
 #include "metrics/memory_use.h"
 #include "pipeline/passes.h"
 #include "reference/line_reference.h"
@@ -78,6 +79,8 @@ struct RenderOptions {
   bool no_error = false;            // skip the reference and the error columns
   bool error_map = false;           // --error-map: maps beside --out (under --out-dir: default)
   bool no_error_map = false;
+  std::string error_scale_text = "auto";
+  ErrorScale error_scale;           // parsed from error_scale_text
   bool quiet = false;
   // Whether the run writes error maps.
   bool error_maps() const { return !no_error && (error_map || (!out_dir.empty() && !no_error_map)); }
@@ -133,6 +136,9 @@ void check_options(const RenderOptions& o, size_t method_count) {
     throw UsageError("--error-map, --no-error: a map is the error against the reference; drop one of them");
   if (o.no_error_map && o.out_dir.empty())
     throw UsageError("--no-error-map: needs --out-dir (only there are maps written unasked)");
+  if (o.error_scale_text != "auto" && !o.error_maps())
+    throw UsageError("--error-scale: no error maps are written (give --error-map, or --out-dir "
+                     "without --no-error-map)");
   check_outputs(outputs(o));
 }
 
@@ -331,7 +337,9 @@ void run_render(const RenderOptions& o) {
       run.image = reference;
       run.host_ms = reference_ms;
     }
-    if (need_reference) run.error = compare_images(run.image, reference);
+    // The error maps take a shaded method's CIEDE2000 from here when its fair reference is this.
+    const bool keep_de = o.error_maps() && lab::fair_reference(m) == lab::FairReference::kExact;
+    if (need_reference) run.error = compare_images(run.image, reference, keep_de ? &run.delta_e : nullptr);
     // Edges are judged against the exact line reference, not the shaded one (docs/lab.md).
     if (const PassPlan* plan = find_plan(m); need_reference && plan && plan_draws_edges(*plan)) {
       if (!lines) {
@@ -357,10 +365,10 @@ void run_render(const RenderOptions& o) {
     write_or_fail(write_file_atomic((fs::path(o.out_dir) / "summary.csv").string(),
                                     summary_csv(runs)));
   if (o.error_maps()) {
-    const double scale = write_error_maps(runs, reference, lines, scene, vp, o.out, o.out_dir);
+    const std::string scale = write_error_maps(runs, reference, lines, scene, vp, o.out, o.out_dir,
+                                               o.error_scale, o.threads);
     if (!o.quiet)
-      fmt::print(stderr, "  error maps: 0 to {:g} dE2000 for every method, {}\n", scale,
-                 error_map_path(o.out, o.out_dir, "METHOD"));
+      fmt::print(stderr, "  error maps: {}, {}\n", error_map_path(o.out, o.out_dir, "METHOD"), scale);
   }
   if (!o.stats.empty()) write_stats(o, scene, vp, rs, drawn, runs);
   if (!o.quiet) print_table(runs);
@@ -411,6 +419,11 @@ void add_render_command(CLI::App& app) {
                 "beside --out as FILE-error.png; under --out-dir they are written anyway, as "
                 "METHOD-error.png");
   cmd->add_flag("--no-error-map", o->no_error_map, "--out-dir: no error maps");
+  cmd->add_option("--error-scale", o->error_scale_text,
+                  "The maps' scale: auto (one for the run, the largest 99th percentile rounded "
+                  "up: maps that compare), per-method (each its own: a good method's errors "
+                  "show), or a number of dE2000")
+      ->capture_default_str();
   cmd->add_flag("--quiet,-q", o->quiet, "Print nothing but errors (no warnings either)");
   cmd->callback([o, cmd] {
     o->backend = parse_backend(o->backend_text);
@@ -420,6 +433,7 @@ void add_render_command(CLI::App& app) {
     for (const char* name : kRtlOnly)
       if (cmd->count(name)) o->given.emplace_back(name);
     o->threads_given = cmd->count("--threads") != 0;
+    o->error_scale = parse_error_scale(o->error_scale_text);
     run_render(*o);
   });
 }

@@ -43,7 +43,8 @@ void run_trace(const TraceOptions& o) {
   write_or_fail(write_trace(o.out, trace));
   size_t fragments = 0;
   for (const TracePass& p : trace.passes) fragments += p.fragments.size();
-  fmt::print("{}: {} passes, {} fragments, {}x{}, {} depth bits\n", o.out, trace.passes.size(),
+  fmt::print("{}: {}, {} fragments, {}x{}, {} depth bits\n", o.out,
+             count_text(trace.passes.size(), "pass", "passes"),
              fragments, trace.width, trace.height, trace.depth_bits);
 }
 

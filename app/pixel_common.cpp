@@ -80,10 +80,13 @@ void write_histories(const FrameHistory& f, const std::string& title, const std:
     std::fputs(history_json(f, source, method, scene).c_str(), stdout);
     return;
   }
+  // The file first: a write that fails stops before the text, naming the option.
+  if (!json.empty())
+    if (const std::string e = write_file_atomic(json, history_json(f, source, method, scene)); !e.empty())
+      throw UsageError("--json: " + e);
   std::string text = title + "\n";
   for (const PixelHistory& h : f.pixels) text += "\n" + history_text(f, h, scene);
   std::fputs(text.c_str(), stdout);
-  if (!json.empty()) write_or_fail(write_file_atomic(json, history_json(f, source, method, scene)));
 }
 
 }  // namespace zb::app

@@ -20,7 +20,7 @@ std::string summary_csv(const std::vector<MethodRun>& runs) {
       "method,passes,fragments,reads,writes,bytes_read,bytes_written,rmse,psnr_db,max_abs,"
       "share_over_2,share_over_16,delta_e_mean,delta_e_max,host_ms,rtl_cycles,"
       "rtl_stream_cycles,rtl_tile_cycles,mismatches,edge_pixels,hidden_drawn_share,"
-      "visible_missing_share\n";
+      "visible_missing_share,worst_x,worst_y\n";
   for (const MethodRun& r : runs) {
     std::string cost = ",,,,,";  // passes, fragments, reads, writes, bytes: none for reference
     std::string rtl = ",,,";
@@ -43,16 +43,19 @@ std::string summary_csv(const std::vector<MethodRun>& runs) {
                                    r.line_error->hidden_drawn_share(),
                                    r.line_error->visible_missing_share())
                      : ",,";
-    csv += fmt::format("{},{},{},{:.1f},{},{}\n", r.method, cost, error, r.host_ms, rtl, lines);
+    const std::string worst = r.error && r.error->worst_x >= 0
+                                  ? fmt::format("{},{}", r.error->worst_x, r.error->worst_y)
+                                  : ",";
+    csv += fmt::format("{},{},{},{:.1f},{},{},{}\n", r.method, cost, error, r.host_ms, rtl, lines, worst);
   }
   return csv;
 }
 
 void print_table(const std::vector<MethodRun>& runs) {
   const bool rtl = std::any_of(runs.begin(), runs.end(), [](const MethodRun& r) { return r.rtl; });
-  fmt::print("{:<16} {:>6} {:>10} {:>10} {:>10} {:>8} {:>8} {:>5} {:>8} {:>7}", "method",
+  fmt::print("{:<16} {:>6} {:>10} {:>10} {:>10} {:>8} {:>8} {:>5} {:>8} {:>7} {:>18}", "method",
              "passes", "fragments", "reads", "writes", "rmse", "psnr_dB", "max", ">2/255",
-             "dE2000");
+             "dE2000", "worst dE at pixel");
   fmt::print(rtl ? " {:>10} {:>10}\n" : "\n", "rtl_cycles", "mismatches");
   for (const MethodRun& r : runs) {
     if (r.total)
@@ -62,11 +65,14 @@ void print_table(const std::vector<MethodRun>& runs) {
     else
       fmt::print("{:<16} {:>6} {:>10} {:>10} {:>10}", r.method, "-", "-", "-", "-");
     if (r.error)
-      fmt::print(" {:>8.3f} {:>8} {:>5} {:>7.2f}% {:>7.3f}", r.error->rmse,
+      fmt::print(" {:>8.3f} {:>8} {:>5} {:>7.2f}% {:>7.3f} {:>18}", r.error->rmse,
                  psnr_text(r.error->psnr), r.error->max_abs, 100.0 * r.error->share_over_2,
-                 r.error->delta_e_mean);
+                 r.error->delta_e_mean,
+                 r.error->worst_x < 0 ? std::string("- (exact)")
+                                      : fmt::format("{:.1f} ({},{})", r.error->delta_e_max,
+                                                    r.error->worst_x, r.error->worst_y));
     else
-      fmt::print(" {:>8} {:>8} {:>5} {:>8} {:>7}", "-", "-", "-", "-", "-");
+      fmt::print(" {:>8} {:>8} {:>5} {:>8} {:>7} {:>18}", "-", "-", "-", "-", "-", "-");
     if (rtl && r.total && r.rtl)
       fmt::print(" {:>10} {:>10}\n", r.total->cycles + r.tile_io_cycles,
                  r.compared ? std::to_string(r.mismatches) : "-");
@@ -96,7 +102,10 @@ std::string stats_json(const std::vector<MethodRun>& runs, const std::string& he
           {"share_over_2", e.share_over_2},
           {"share_over_16", e.share_over_16},
           {"delta_e_mean", e.delta_e_mean},
-          {"delta_e_max", e.delta_e_max}};
+          {"delta_e_max", e.delta_e_max},
+          {"worst_pixel", e.worst_x < 0 ? nlohmann::json(nullptr)
+                                        : nlohmann::json{{"x", e.worst_x}, {"y", e.worst_y},
+                                                         {"delta_e", e.delta_e_max}}}};
     }
     if (r.line_error)
       m["line_error"] = {{"edge_pixels", r.line_error->edge_pixels},

@@ -20,6 +20,7 @@ struct MethodRun {
   Traffic traffic;                 // memory traffic of the passes (render.h)
   size_t passes = 0;
   std::optional<ImageError> error;  // none under --no-error
+  std::vector<float> delta_e;       // error's per pixel, when error maps are drawn from it
   // Methods that draw edges: against the exact line reference (line_metrics.h).
   std::optional<LineError> line_error;
   double host_ms = 0;

@@ -11,6 +11,10 @@
 
 namespace zb::cli {
 
+std::string count_text(size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
 std::string join(const std::vector<std::string>& items, const char* sep) {
   std::string out;
   for (const std::string& s : items) out += (out.empty() ? "" : sep) + s;
@@ -43,26 +47,38 @@ size_t edit_distance(const std::string& a, const std::string& b) {
   return d[a.size()][b.size()];
 }
 
-// The option of `cmd` closest to `typed`, or "" when none is close: at most a third of the
-// name's letters wrong, and never all of them.
-std::string closest_option(const CLI::App& cmd, const std::string& typed) {
-  const size_t letters = typed.size() - std::min(typed.find_first_not_of('-'), typed.size());
+// The name in `names` closest to `typed`, or "" when none is close: at most a third of the
+// letters (`letters` of them) wrong, and never all of them.
+std::string closest(const std::string& typed, const std::vector<std::string>& names, size_t letters) {
   std::string best;
   size_t best_distance = std::numeric_limits<size_t>::max();
-  for (const CLI::Option* opt : cmd.get_options()) {
-    std::vector<std::string> names;
-    for (const std::string& l : opt->get_lnames()) names.push_back("--" + l);
-    for (const std::string& s : opt->get_snames()) names.push_back("-" + s);
-    for (const std::string& n : names) {
-      const size_t d = edit_distance(typed, n);
-      if (d < best_distance) {
-        best_distance = d;
-        best = n;
-      }
+  for (const std::string& n : names) {
+    const size_t d = edit_distance(typed, n);
+    if (d < best_distance) {
+      best_distance = d;
+      best = n;
     }
   }
   const bool close = best_distance <= std::max<size_t>(1, letters / 3) && best_distance < letters;
   return close ? best : "";
+}
+
+// The option of `cmd` closest to `typed` (closest).
+std::string closest_option(const CLI::App& cmd, const std::string& typed) {
+  std::vector<std::string> names;
+  for (const CLI::Option* opt : cmd.get_options()) {
+    for (const std::string& l : opt->get_lnames()) names.push_back("--" + l);
+    for (const std::string& s : opt->get_snames()) names.push_back("-" + s);
+  }
+  return closest(typed, names, typed.size() - std::min(typed.find_first_not_of('-'), typed.size()));
+}
+
+// The commands `cmd` offers, in the order its help lists them.
+std::vector<std::string> command_names(const CLI::App& cmd) {
+  std::vector<std::string> names;
+  for (const CLI::App* sub : cmd.get_subcommands([](const CLI::App*) { return true; }))
+    names.push_back(sub->get_name());
+  return names;
 }
 
 bool is_option(const std::string& arg) {
@@ -79,8 +95,20 @@ std::string parse_error_line(const CLI::App& app, const CLI::ParseError& e) {
     cmd = cmd->get_subcommands().front();
     program += " " + cmd->get_name();
   }
-  // An unknown option first: it may be a misspelt required one.
   const std::vector<std::string> extras = app.remaining(true);
+  // A command that needs one of its own and got none: the first word left is the one meant.
+  if (cmd->get_require_subcommand_min() > 0 && cmd->get_subcommands().empty()) {
+    const std::vector<std::string> names = command_names(*cmd);
+    const auto word = std::find_if_not(extras.begin(), extras.end(), is_option);
+    if (word == extras.end())
+      return fmt::format("{}: error: a command is required: {} (see '{} --help')", program,
+                         join(names), program);
+    const std::string near = closest(*word, names, word->size());
+    if (near.empty())
+      return fmt::format("{}: error: unknown command '{}' (choose from {})", program, *word, join(names));
+    return fmt::format("{}: error: unknown command '{}'; did you mean '{}'?", program, *word, near);
+  }
+  // An unknown option first: it may be a misspelt required one.
   const auto option = std::find_if(extras.begin(), extras.end(), is_option);
   const bool extra = e.get_exit_code() == static_cast<int>(CLI::ExitCodes::ExtrasError);
   if (option == extras.end() && extra && !extras.empty())

@@ -50,6 +50,9 @@ std::string shell_word(const std::string& text);
 // argv[0]): "build/zblend conformance check". For the commands a program prints.
 std::string command_of(const CLI::App& cmd);
 
+// "1 pass", "14 passes": `n` and the word that goes with it.
+std::string count_text(size_t n, const char* one, const char* many);
+
 // "a, b, c", for error messages that name the valid choices.
 std::string join(const std::vector<std::string>& items, const char* sep = ", ");
 

@@ -11,7 +11,8 @@ The FST is read with GTKWave's own fst2vcd, not with the code that wrote both fi
     10) where tb.mismatch is 1 (and was 0 the cycle before) and the X4 or X11 probe names
     fragment N; a marker "#N accepted" on a rising edge where, in that cycle, zb_rop offered
     fragment N (tb.frag_index) with frag_valid_i and frag_ready_o high; a marker "#N X4" or
-    "#N X11" (zblend pixel's) on a rising edge where that stage's probe retires fragment N;
+    "#N X11" on a rising edge where that stage's probe retires fragment N (zblend pixel's
+    prefix the history's numbering: "pass P fragment F (#N) X4");
   - the zoom's span holds every marker.
 With --gtkwave, GTKWave itself (under Xvfb) opens the save file: it must show every listed
 signal and group, and its named marker A at the save file's time.
@@ -114,8 +115,10 @@ def check(path, window, use_gtkwave):
         if not s["timestart"] <= t <= s["timestart"] + span:
             errors.append(f"marker {letter} ({name}) at {t} ps is outside the zoomed span")
         m = re.fullmatch(r"first wrong write(?: #(\d+))?", name)
-        a = re.fullmatch(r"#(\d+) accepted", name)
-        w = re.fullmatch(r"#(\d+) (X4|X11)", name)
+        # zblend pixel's names the fragment as its text does too: "pass P fragment N (#S) ..."
+        own = r"(?:pass \d+ fragment \d+ \()?#(\d+)\)?"
+        a = re.fullmatch(own + r" accepted", name)
+        w = re.fullmatch(own + r" (X4|X11)", name)
         if w:
             n, st = int(w.group(1)), w.group(2).lower()
             if not (value_at(ch, f"tb.{st}_retire", t) == 1 and

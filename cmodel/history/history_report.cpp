@@ -6,6 +6,7 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
+#include "pipeline/passes.h"
 #include "rop/blend.h"
 
 namespace zb {
@@ -208,7 +209,7 @@ std::string rtl_text(const FrameHistory& f, const PixelHistory& h, const History
   bool accepted = false;
   for (const RetireRecord& r : h.rtl) {
     if (r.extra || r.pass != e.pass || r.index != e.fragment.index) continue;
-    if (!accepted) s += fmt::format("    rtl: accepted at cycle {}", r.accepted);
+    if (!accepted) s += fmt::format("    rtl: #{} accepted at cycle {}", r.stream, r.accepted);
     accepted = true;
     if (r.missing) {
       s += fmt::format("; {} MISSING: never retired", r.x11 ? "X11" : "X4");
@@ -320,6 +321,23 @@ HistoryEvent event_from(const json& j, int x, int y) {
   return e;
 }
 
+// A method that draws edges, judged as its error map and the lab judge it.
+std::string line_verdict_text(EdgePixel want, Rgba8 got) {
+  const bool drawn = got == kEdgeColor;
+  const char* style = drawn ? "drawn in the visible style" : "not drawn in the visible style";
+  switch (want) {
+    case EdgePixel::kVisible:
+      return fmt::format("exact line reference: a visible edge here; {}: {}\n", style,
+                         drawn ? "right" : "WRONG (visible missing)");
+    case EdgePixel::kHidden:
+      return fmt::format("exact line reference: a hidden edge here; {}: {}\n", style,
+                         drawn ? "WRONG (hidden drawn)" : "right");
+    case EdgePixel::kNone: break;
+  }
+  return "exact line reference: no edge here (the line error does not count this pixel; the "
+         "shaded CIEDE2000 means nothing for a line drawing)\n";
+}
+
 }  // namespace
 
 std::string history_text(const FrameHistory& f, const PixelHistory& h, const Scene* scene) {
@@ -362,10 +380,17 @@ std::string history_text(const FrameHistory& f, const PixelHistory& h, const Sce
       s += fmt::format("  {}: z {:.6f} colour {}\n",
                        scene ? triangle_source(*scene, l.prim) : fmt::format("triangle {}", l.prim),
                        l.z_exact, rgba_text(l.color));
+    if (h.line_reference) {
+      s += fmt::format("  composited: colour {}\n", rgba_text(r.color));
+      s += line_verdict_text(*h.line_reference, h.final_value.color);
+      return s;
+    }
     s += fmt::format("  composited: colour {}; this method's CIEDE2000 against it {:.2f}", rgba_text(r.color), h.delta_e);
-    bool edges = false;
-    for (const PassRecord& p : f.passes) edges = edges || p.edges;
-    s += edges ? " (its fair reference is the exact line reference: docs/lab.md)\n" : "\n";
+    bool coverage = false;
+    for (const PassRecord& p : f.passes) coverage = coverage || is_coverage_pass(p.state);
+    s += coverage ? " (the error map and the lab judge coverage anti-aliasing against the "
+                    "supersampled reference instead, which credits partial coverage: docs/lab.md)\n"
+                  : "\n";
   }
   return s;
 }
@@ -401,7 +426,7 @@ std::string history_json(const FrameHistory& f, const std::string& scene_name, c
         json rtl = json::array();
         for (const RetireRecord& r : h.rtl)
           if (!r.extra && r.pass == e.pass && r.index == e.fragment.index)
-            rtl.push_back({{"stage", r.x11 ? "X11" : "X4"}, {"missing", r.missing},
+            rtl.push_back({{"stage", r.x11 ? "X11" : "X4"}, {"stream", r.stream}, {"missing", r.missing},
                            {"accepted", r.accepted}, {"cycle", r.cycle},
                            {"same_as_golden", !r.missing && same_stage_writes(r, e.fragment.writes)}});
         events.back()["rtl"] = rtl;
@@ -427,6 +452,10 @@ std::string history_json(const FrameHistory& f, const std::string& scene_name, c
       p["reference"] = {{"layers", layers}, {"behind", h.reference->behind},
                         {"color", rgba_json(h.reference->color)}};
       p["delta_e"] = h.delta_e;
+    }
+    if (h.line_reference) {
+      static const char* const kNames[] = {"none", "hidden", "visible"};  // EdgePixel
+      p["line_reference"] = kNames[size_t(*h.line_reference)];
     }
     pixels.push_back(std::move(p));
   }
@@ -478,6 +507,12 @@ FrameHistory parse_history_json(const std::string& text) {
         ref.color = rgba_from(r.at("color"));
         h.reference = ref;
         h.delta_e = p.at("delta_e").get<double>();
+      }
+      if (p.contains("line_reference")) {
+        const std::string l = p.at("line_reference").get<std::string>();
+        if (l != "none" && l != "hidden" && l != "visible")
+          throw std::invalid_argument("line_reference '" + l + "' is not none, hidden or visible");
+        h.line_reference = l == "none" ? EdgePixel::kNone : l == "hidden" ? EdgePixel::kHidden : EdgePixel::kVisible;
       }
       for (const json& e : p.at("events")) {
         h.events.push_back(event_from(e, h.x, h.y));

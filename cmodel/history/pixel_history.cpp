@@ -4,6 +4,7 @@
 
 #include <fmt/core.h>
 
+#include "geometry/frame_geometry.h"
 #include "metrics/color_difference.h"
 
 namespace zb {
@@ -194,9 +195,13 @@ FrameHistory record_history(const RasterizedScene& rs, const PassPlan& plan,
   for (size_t p = 0; p < f.passes.size(); ++p)
     f.passes[p].edges = plan.passes[p].filter == PrimFilter::kEdges;
   const std::vector<ReferencePixel> ref = reference_pixels(rs, pixels);
+  std::optional<LineVisibility> lines;
+  if (plan_draws_edges(plan)) lines = line_visibility(rs);
   for (size_t k = 0; k < f.pixels.size(); ++k) {
-    f.pixels[k].reference = ref[k];
-    f.pixels[k].delta_e = delta_e2000(f.pixels[k].final_value.color, ref[k].color);
+    PixelHistory& h = f.pixels[k];
+    h.reference = ref[k];
+    h.delta_e = delta_e2000(h.final_value.color, ref[k].color);
+    if (lines) h.line_reference = lines->at(h.x, h.y);
   }
   return checked(std::move(f));
 }

@@ -13,6 +13,7 @@
 
 #include "io/trace.h"
 #include "pipeline/render.h"
+#include "reference/line_reference.h"
 #include "reference/reference.h"
 #include "rop/rop.h"
 
@@ -85,6 +86,9 @@ struct PixelHistory {
   // CIEDE2000 against it.
   std::optional<ReferencePixel> reference;
   double delta_e = 0;
+  // A scene's under a method that draws edges: the exact line reference there (its fair one;
+  // the shaded CIEDE2000 means nothing for it).
+  std::optional<EdgePixel> line_reference;
   std::vector<RetireRecord> rtl;  // with the RTL beside: its retires at the pixel, in order
   bool rtl_ran = false;
   PixelValue rtl_final;           // and the RTL's frame there at the end

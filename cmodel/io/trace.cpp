@@ -257,6 +257,7 @@ std::vector<PassStats> replay_trace(const Trace& trace, Backend& backend) {
     stats.push_back(backend.end_pass());
   }
   for (const FrameOp& op : trace.final_ops) backend.frame_op(op);
+  backend.finish_frame(stats);  // a backend that defers passes (RTL, kTile) runs them here
   return stats;
 }
 

@@ -17,7 +17,7 @@ namespace zb {
 
 namespace {
 
-constexpr int kStrip = 30;  // the legend strip's height
+constexpr int kStrip = 44;  // the legend strip's height: the ramp and its ticks, then a line of text
 constexpr Rgba8 kBlack{0, 0, 0, 255};
 constexpr Rgba8 kText{230, 230, 230, 255};
 
@@ -147,13 +147,30 @@ std::optional<std::pair<int, int>> worst_pixel(const std::vector<float>& values,
   return std::pair<int, int>{int(i % size_t(width)), int(i / size_t(width))};
 }
 
+std::vector<double> error_scale_ticks(double scale) {
+  if (!(scale > 0)) return {0};
+  // 1, 2, 5 x 10^k: steps of a fifth, a quarter, a fifth; any other scale in quarters.
+  const double mantissa = scale / std::pow(10.0, std::floor(std::log10(scale)));
+  const int steps = std::abs(mantissa - 2) < 1e-9 ? 4 : (std::abs(mantissa - 1) < 1e-9 || std::abs(mantissa - 5) < 1e-9) ? 5 : 4;
+  std::vector<double> t;
+  for (int i = 0; i <= steps; ++i) t.push_back(scale * i / steps);
+  return t;
+}
+
 Framebuffer error_map_image(const std::vector<float>& de, int width, int height, double scale,
                             std::optional<std::pair<int, int>> mark) {
   Framebuffer fb = canvas(width, height);
-  if (de.size() == size_t(width) * size_t(height))
+  const bool sized = de.size() == size_t(width) * size_t(height);
+  size_t exact = 0;
+  float top = 0;
+  if (sized)
     for (int y = 0; y < height; ++y)
-      for (int x = 0; x < width; ++x)
-        fb.color[fb.index(x, y)] = error_ramp(de[size_t(y) * size_t(width) + size_t(x)] / scale);
+      for (int x = 0; x < width; ++x) {
+        const float e = de[size_t(y) * size_t(width) + size_t(x)];
+        exact += e == 0;
+        top = std::max(top, e);
+        fb.color[fb.index(x, y)] = e == 0 ? kExactColor : error_ramp(e / scale);
+      }
   if (mark) {  // a ring of radius 6, in a colour the ramp never takes
     const auto [mx, my] = *mark;
     for (int a = 0; a < 96; ++a) {
@@ -164,14 +181,36 @@ Framebuffer error_map_image(const std::vector<float>& de, int width, int height,
       }
     }
   }
-  // The legend: "0", the ramp, the scale and the unit.
-  const int y0 = height + 4, bar = 12;
-  int x = draw_text(fb, 4, y0 + 3, "0", kText) + 4;
-  const std::string top = scale_text(scale) + "+ dE2000";
-  const int bar_end = fb.width - 8 - text_width(top);
+  // The legend: the exact colour, the ramp from just above 0 to the scale with its ticks, and a
+  // line with this map's own largest error and where it is.
+  const int y0 = height + 4, bar = 10;
+  fill(fb, 4, y0, 14, y0 + bar, kExactColor);
+  const int x = draw_text(fb, 17, y0 + 2, "exact", kText) + 10;
+  const std::string end_text = scale_text(scale) + "+";
+  const int bar_end = fb.width - 8 - text_width(end_text);
   for (int bx = x; bx < bar_end; ++bx)
-    fill(fb, bx, y0, bx + 1, y0 + bar, error_ramp(double(bx - x) / std::max(1, bar_end - 1 - x)));
-  draw_text(fb, bar_end + 4, y0 + 3, top, kText);
+    fill(fb, bx, y0, bx + 1, y0 + bar, error_ramp(double(bx - x + 1) / std::max(1, bar_end - x)));
+  draw_text(fb, bar_end + 4, y0 + 2, end_text, kText);
+  const std::vector<double> ticks = error_scale_ticks(scale);
+  int room = bar_end - x;
+  for (const double t : ticks) room = std::min(room, (bar_end - x) / std::max<int>(1, int(ticks.size()) - 1) - text_width(scale_text(t)));
+  for (size_t i = 0; i + 1 < ticks.size(); ++i) {
+    const int tx = x + int(std::lround(ticks[i] / scale * (bar_end - x)));
+    fill(fb, tx, y0 + bar, tx + 1, y0 + bar + 3, kText);
+    if (room >= 4 || i == 0)
+      draw_text(fb, tx - text_width(scale_text(ticks[i])) / 2, y0 + bar + 4, scale_text(ticks[i]), kText);
+  }
+  std::string line;
+  if (!sized) {
+    line = "not measured";
+  } else if (top == 0) {
+    line = "exact at every pixel";
+  } else {
+    line = fmt::format("max {} dE2000", top >= 10 ? fmt::format("{:.1f}", top) : fmt::format("{:.2f}", top));
+    if (const auto w = worst_pixel(de, width)) line += fmt::format(" at ({}, {})", w->first, w->second);
+    line += fmt::format("; exact {:.1f}%", 100.0 * double(exact) / double(de.size()));
+  }
+  draw_text(fb, 4, y0 + bar + 15, line, kText);
   return fb;
 }
 
@@ -182,16 +221,24 @@ Framebuffer line_error_map_image(const Framebuffer& image, const LineVisibility&
   if (image.color.size() == reference.pixels.size())
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
-        static constexpr Rgba8 kColors[] = {kBlack, {70, 70, 70, 255}, {150, 150, 150, 255},
+        static constexpr Rgba8 kColors[] = {kBlack, kHiddenRightColor, kVisibleRightColor,
                                             kHiddenDrawnColor, kVisibleMissingColor};  // LinePixel
         const LinePixel p = line_pixel(image, reference, visible, size_t(y) * size_t(w) + size_t(x));
         fb.color[fb.index(x, y)] = kColors[size_t(p)];
       }
+  // Every colour the map takes but black (no edge there: not measured), named.
   const int y0 = h + 4;
-  fill(fb, 4, y0, 14, y0 + 10, kHiddenDrawnColor);
-  int x = draw_text(fb, 18, y0 + 2, "hidden drawn", kText) + 10;
-  fill(fb, x, y0, x + 10, y0 + 10, kVisibleMissingColor);
-  draw_text(fb, x + 14, y0 + 2, "visible missing", kText);
+  int x = 4;
+  const std::pair<Rgba8, const char*> keys[] = {{kHiddenDrawnColor, "hidden drawn"},
+                                                 {kVisibleMissingColor, "visible missing"},
+                                                 {kVisibleRightColor, "visible ok"},
+                                                 {kHiddenRightColor, "hidden ok"}};
+  for (size_t k = 0; k < 4; ++k) {
+    const int row = y0 + int(k / 2) * 16, col = k % 2 ? x : 4;
+    fill(fb, col, row, col + 10, row + 10, keys[k].first);
+    const int end = draw_text(fb, col + 14, row + 2, keys[k].second, kText) + 10;
+    if (k % 2 == 0) x = std::max(x, end);
+  }
   return fb;
 }
 

@@ -37,19 +37,30 @@ double shared_error_scale(const std::vector<std::vector<float>>& maps);
 // value is above 0 (nothing wrong to point at).
 std::optional<std::pair<int, int>> worst_pixel(const std::vector<float>& values, int width);
 
-// The map of `de` (width x height) at `scale` (that value and above the brightest), a legend
-// strip below it: the ramp from 0 to the scale, both numbers and "dE2000". With `mark`, a ring
-// around that pixel. The picture is at least kLegendWidth wide (the frame left-aligned on black).
-constexpr int kLegendWidth = 200;
+// The ticks of a legend from 0 to `scale`, both included: fifths of 1 and 5 x 10^k, quarters
+// of 2 x 10^k and of any other scale.
+std::vector<double> error_scale_ticks(double scale);
+
+// The map of `de` (width x height) at `scale` (that value and above the brightest): a pixel
+// with no error in kExactColor, which the ramp never takes, so an exact map does not look like
+// an empty one. Below it a legend strip: the exact colour, the ramp from 0 to the scale with its
+// ticks, and a line with the map's own largest error, where it is and the share of exact
+// pixels. With `mark`, a ring around that pixel. The picture is at least kLegendWidth wide (the
+// frame left-aligned on black).
+constexpr int kLegendWidth = 240;
+constexpr Rgba8 kExactColor{24, 64, 72, 255};
 Framebuffer error_map_image(const std::vector<float>& de, int width, int height, double scale,
                             std::optional<std::pair<int, int>> mark = std::nullopt);
 
 // A hidden-line method's map against the exact line reference (a pixel drawn in the visible
-// style when its colour is `visible`): edges drawn as they should be grey, hidden edges drawn
-// (kHiddenDrawnColor) and visible edges missing (kVisibleMissingColor), the rest black, with a
-// legend strip naming the two.
+// style when its colour is `visible`): edges drawn as they should be in two greys (visible
+// ones light, hidden ones dark), hidden edges drawn (kHiddenDrawnColor) and visible edges
+// missing (kVisibleMissingColor), the rest (no edge: not measured) black, with a legend strip
+// naming the four.
 constexpr Rgba8 kHiddenDrawnColor{255, 60, 60, 255};
 constexpr Rgba8 kVisibleMissingColor{60, 200, 255, 255};
+constexpr Rgba8 kVisibleRightColor{150, 150, 150, 255};
+constexpr Rgba8 kHiddenRightColor{70, 70, 70, 255};
 Framebuffer line_error_map_image(const Framebuffer& image, const LineVisibility& reference,
                                  Rgba8 visible);
 

@@ -9,10 +9,13 @@
 
 namespace zb {
 
-ImageError compare_images(const Framebuffer& image, const Framebuffer& reference) {
+ImageError compare_images(const Framebuffer& image, const Framebuffer& reference,
+                          std::vector<float>* delta_e) {
   ImageError e;
   const size_t n = image.color.size();
+  if (delta_e) delta_e->clear();
   if (n == 0 || n != reference.color.size()) return e;
+  if (delta_e) delta_e->assign(n, 0.0f);
   double sum_sq = 0, sum_de = 0;
   size_t over2 = 0, over16 = 0;
   for (size_t i = 0; i < n; ++i) {
@@ -29,7 +32,12 @@ ImageError compare_images(const Framebuffer& image, const Framebuffer& reference
     if (worst > 0) {
       const double de = delta_e2000(a, b);
       sum_de += de;
-      e.delta_e_max = std::max(e.delta_e_max, de);
+      if (de > e.delta_e_max) {
+        e.delta_e_max = de;
+        e.worst_x = int(i % size_t(image.width));
+        e.worst_y = int(i / size_t(image.width));
+      }
+      if (delta_e) (*delta_e)[i] = float(de);
     }
   }
   e.rmse = std::sqrt(sum_sq / (3.0 * double(n)));

@@ -1,6 +1,8 @@
 // Error of an image against the reference, over the RGB channels of RGBA8.
 #pragma once
 
+#include <vector>
+
 #include "rop/framebuffer.h"
 
 namespace zb {
@@ -13,10 +15,13 @@ struct ImageError {
   double share_over_16 = 0;   // share of pixels with a channel off by more than 16
   double delta_e_mean = 0;    // CIEDE2000 (color_difference.h) per pixel, mean over the frame
   double delta_e_max = 0;     // and its largest value
+  int worst_x = -1, worst_y = -1;  // the pixel of that value (the first, row-major); -1: exact
 };
 
-// Frames of different sizes compare as an all-zero ImageError.
-ImageError compare_images(const Framebuffer& image, const Framebuffer& reference);
+// Frames of different sizes compare as an all-zero ImageError. With `delta_e`, each pixel's
+// CIEDE2000 too (row-major; error_map.h draws it).
+ImageError compare_images(const Framebuffer& image, const Framebuffer& reference,
+                          std::vector<float>* delta_e = nullptr);
 
 
 }  // namespace zb

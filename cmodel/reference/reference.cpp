@@ -2,10 +2,15 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
+
+#include "geometry/geometry.h"
+#include "parallel/parallel.h"
+#include "raster/raster.h"
 
 namespace zb {
 namespace {
@@ -46,14 +51,14 @@ Rgb composite_pixel(const RasterizedScene& rs, uint32_t* f, size_t n) {
   return c;
 }
 
-// Per pixel, composite_pixel.
-ExactFrame composite_exact(const RasterizedScene& rs) {
+// Per pixel of rows [row0, row0 + rows) (rs holds only their fragments), composite_pixel.
+ExactFrame composite_exact(const RasterizedScene& rs, int row0, int rows) {
   const Viewport& vp = rs.viewport;
-  const size_t pixels = static_cast<size_t>(vp.width) * vp.height;
+  const size_t pixels = static_cast<size_t>(vp.width) * size_t(rows);
   const Rgba8 bg = rs.background;
   ExactFrame out{std::vector<Rgb>(pixels, Rgb{double(bg.r), double(bg.g), double(bg.b)}),
                  std::vector<uint32_t>(pixels, depth_max(vp.depth_bits))};
-  auto index = [&](const Fragment& f) { return static_cast<size_t>(f.y) * vp.width + f.x; };
+  auto index = [&](const Fragment& f) { return static_cast<size_t>(f.y - row0) * vp.width + f.x; };
 
   // Bucket fragment indices by pixel, keeping submit order within a pixel.
   std::vector<uint32_t> start(pixels + 1, 0);
@@ -107,7 +112,7 @@ std::vector<ReferencePixel> reference_pixels(const RasterizedScene& rs,
 Framebuffer render_reference(const RasterizedScene& rs) {
   const Viewport& vp = rs.viewport;
   Framebuffer fb(vp.width, vp.height, vp.depth_bits, rs.background);
-  const ExactFrame exact = composite_exact(rs);
+  const ExactFrame exact = composite_exact(rs, 0, vp.height);
   for (size_t p = 0; p < fb.color.size(); ++p) {
     const Rgb& c = exact.color[p];
     fb.color[p] = {to_unorm8(c[0]), to_unorm8(c[1]), to_unorm8(c[2]), 255};
@@ -116,7 +121,7 @@ Framebuffer render_reference(const RasterizedScene& rs) {
   return fb;
 }
 
-Framebuffer render_reference_supersampled(const Scene& scene, const Viewport& vp, int factor) {
+Framebuffer render_reference_supersampled(const Scene& scene, const Viewport& vp, int factor, int threads) {
   if (factor < 1 || vp.width > kMaxFrameSize / factor || vp.height > kMaxFrameSize / factor)
     throw std::invalid_argument("supersampling factor " + std::to_string(factor) +
                                 " outside 1.." + std::to_string(kMaxFrameSize) +
@@ -124,27 +129,44 @@ Framebuffer render_reference_supersampled(const Scene& scene, const Viewport& vp
   Viewport big = vp;
   big.width = vp.width * factor;
   big.height = vp.height * factor;
-  const ExactFrame exact = composite_exact(rasterize_scene(scene, big));
-
+  const std::vector<ScreenTriangle> triangles = setup_triangles(scene, big);
   Framebuffer fb(vp.width, vp.height, vp.depth_bits, scene.background, vp.coverage_samples);
   const double samples = double(factor) * factor;
-  for (int y = 0; y < vp.height; ++y) {
-    for (int x = 0; x < vp.width; ++x) {
-      Rgb sum{0, 0, 0};
-      uint32_t nearest = depth_max(vp.depth_bits);
-      for (int sy = 0; sy < factor; ++sy) {
-        for (int sx = 0; sx < factor; ++sx) {
-          const size_t s = static_cast<size_t>(y * factor + sy) * big.width + x * factor + sx;
-          for (int c = 0; c < 3; ++c) sum[c] += exact.color[s][c];
-          nearest = std::min(nearest, exact.depth[s]);
+  // Bands of output rows, each rasterized alone (a row range keeps the fragments and their
+  // order): a band's fragments, not the frame's, are held at once, and bands run side by side.
+  constexpr int kBandRows = 8;
+  const int bands = (vp.height + kBandRows - 1) / kBandRows;
+  std::atomic<int> next{0};
+  run_workers(std::min(resolve_threads(threads), bands), [&](int) {
+    RasterizedScene rs;
+    rs.viewport = big;
+    rs.background = scene.background;
+    for (int b; (b = next++) < bands;) {
+      const int y0 = b * kBandRows, y1 = std::min(vp.height, y0 + kBandRows);
+      rs.fragments.clear();
+      rs.z_exact.clear();
+      for (const ScreenTriangle& t : triangles)
+        rasterize(t, big, rs.fragments, &rs.z_exact, RowRange{y0 * factor, y1 * factor});
+      const ExactFrame exact = composite_exact(rs, y0 * factor, (y1 - y0) * factor);
+      for (int y = y0; y < y1; ++y) {
+        for (int x = 0; x < vp.width; ++x) {
+          Rgb sum{0, 0, 0};
+          uint32_t nearest = depth_max(vp.depth_bits);
+          for (int sy = 0; sy < factor; ++sy) {
+            for (int sx = 0; sx < factor; ++sx) {
+              const size_t s = static_cast<size_t>((y - y0) * factor + sy) * big.width + x * factor + sx;
+              for (int c = 0; c < 3; ++c) sum[c] += exact.color[s][c];
+              nearest = std::min(nearest, exact.depth[s]);
+            }
+          }
+          const size_t p = fb.index(x, y);
+          fb.color[p] = {to_unorm8(sum[0] / samples), to_unorm8(sum[1] / samples),
+                         to_unorm8(sum[2] / samples), 255};
+          fb.depth[p] = nearest;
         }
       }
-      const size_t p = fb.index(x, y);
-      fb.color[p] = {to_unorm8(sum[0] / samples), to_unorm8(sum[1] / samples),
-                     to_unorm8(sum[2] / samples), 255};
-      fb.depth[p] = nearest;
     }
-  }
+  });
   return fb;
 }
 

@@ -34,7 +34,9 @@ std::vector<ReferencePixel> reference_pixels(const RasterizedScene& rs,
 // height, box-filtered down to `vp`. Each pixel averages the factor x factor sub-pixel colours
 // (a regular grid of sample points), composited in double and rounded once; its depth is the
 // nearest of its sub-pixels'. Coverage stays 0. factor 1 equals render_reference. Throws
-// std::invalid_argument when factor < 1 or the enlarged frame exceeds kMaxFrameSize.
-Framebuffer render_reference_supersampled(const Scene& scene, const Viewport& vp, int factor);
+// std::invalid_argument when factor < 1 or the enlarged frame exceeds kMaxFrameSize. Drawn in
+// bands of rows on `threads` workers (0: every core); the same frame for any number.
+Framebuffer render_reference_supersampled(const Scene& scene, const Viewport& vp, int factor,
+                                          int threads = 1);
 
 }  // namespace zb

@@ -85,33 +85,44 @@ void add_rtl_retires(FrameHistory& f, const RtlOptions& options,
   }
 }
 
-std::vector<std::string> write_pixel_save_files(const FrameHistory& f, const std::string& fst) {
-  std::vector<std::string> paths;
+std::string pixel_save_file_path(const std::string& fst, int x, int y, bool several, size_t page) {
+  const std::filesystem::path p(fst);
+  std::string stem = p.stem().string();
+  if (several) stem += "-" + std::to_string(x) + "-" + std::to_string(y);
+  if (page > 1) stem += "-" + std::to_string(page);
+  return (p.parent_path() / (stem + ".gtkw")).string();
+}
+
+std::vector<std::vector<std::string>> write_pixel_save_files(const FrameHistory& f, const std::string& fst) {
+  std::vector<std::vector<std::string>> paths;
+  const bool several = f.pixels.size() > 1;
   for (const PixelHistory& h : f.pixels) {
     std::vector<WaveMarker> all;
     for (const RetireRecord& r : h.rtl) {
       if (r.extra || r.missing) continue;
-      const std::string n = "#" + std::to_string(r.stream);
+      const std::string n = "pass " + std::to_string(r.pass) + " fragment " + std::to_string(r.index) +
+                            " (#" + std::to_string(r.stream) + ")";
       if (!r.x11) all.push_back({r.accepted, n + " accepted"});
       all.push_back({r.cycle, n + (r.x11 ? " X11" : " X4")});
     }
     std::stable_sort(all.begin(), all.end(),
                      [](const WaveMarker& a, const WaveMarker& b) { return a.cycle < b.cycle; });
-    WaveView view;
-    view.markers.assign(all.begin(), all.begin() + std::ptrdiff_t(std::min<size_t>(all.size(), 26)));
-    if (!view.markers.empty()) {
-      view.from = view.markers.front().cycle > 8 ? view.markers.front().cycle - 8 : 0;
-      view.to = view.markers.back().cycle + 8;
+    const size_t pages = std::max<size_t>(1, (all.size() + kMarkersPerSaveFile - 1) / kMarkersPerSaveFile);
+    paths.emplace_back();
+    for (size_t page = 1; page <= pages; ++page) {
+      WaveView view;
+      const size_t from = (page - 1) * kMarkersPerSaveFile;
+      const size_t to = std::min(all.size(), from + kMarkersPerSaveFile);
+      view.markers.assign(all.begin() + std::ptrdiff_t(from), all.begin() + std::ptrdiff_t(to));
+      if (!view.markers.empty()) {
+        view.from = view.markers.front().cycle > 8 ? view.markers.front().cycle - 8 : 0;
+        view.to = view.markers.back().cycle + 8;
+      }
+      view.title = "pixel (" + std::to_string(h.x) + ", " + std::to_string(h.y) + ")";
+      if (pages > 1) view.title += ", markers " + std::to_string(from + 1) + " to " +
+                                   std::to_string(to) + " of " + std::to_string(all.size());
+      paths.back().push_back(write_save_file(fst, view, pixel_save_file_path(fst, h.x, h.y, several, page)));
     }
-    const std::string xy = std::to_string(h.x) + ", " + std::to_string(h.y);
-    view.title = "pixel (" + xy + ")";
-    std::string gtkw;
-    if (f.pixels.size() > 1) {
-      std::filesystem::path p(fst);
-      gtkw = (p.parent_path() / (p.stem().string() + "-" + std::to_string(h.x) + "-" +
-                                 std::to_string(h.y) + ".gtkw")).string();
-    }
-    paths.push_back(write_save_file(fst, view, gtkw));
   }
   return paths;
 }

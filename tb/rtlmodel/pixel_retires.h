@@ -74,10 +74,16 @@ class SettledRtl final : public Backend {
 void add_rtl_retires(FrameHistory& f, const RtlOptions& options,
                      const std::function<void(Backend&)>& run);
 
-// The save files of a run's FST (options.trace_path of add_rtl_retires), one a pixel (GTKWave
-// names 26 markers, A to Z): zoomed on the pixel's retires, a marker at each accept
-// ("#N accepted") and write ("#N X4", "#N X11"), the first 26 in cycle order. FST's own .gtkw for
-// one pixel, FST's stem with "-X-Y.gtkw" for each of several. Returns their paths.
-std::vector<std::string> write_pixel_save_files(const FrameHistory& f, const std::string& fst);
+// GTKWave names 26 markers (A to Z) a save file, so a pixel's markers go 26 to a file: page 1
+// is FST's own .gtkw for one pixel (FST's stem with "-X-Y.gtkw" for each of several), page k > 1
+// adds "-k". `several`: the run asked for more than one pixel.
+std::string pixel_save_file_path(const std::string& fst, int x, int y, bool several, size_t page = 1);
+constexpr size_t kMarkersPerSaveFile = 26;
+
+// The save files of a run's FST (options.trace_path of add_rtl_retires): per pixel, every
+// fragment's accept ("pass P fragment N accepted") and writes ("... X4", "... X11") as markers in
+// cycle order, numbered as the history's text numbers them, 26 a file, each file zoomed on its
+// markers. Returns each pixel's files, page 1 first.
+std::vector<std::vector<std::string>> write_pixel_save_files(const FrameHistory& f, const std::string& fst);
 
 }  // namespace zb

@@ -324,7 +324,7 @@ TEST(PixelHistory, RtlRetiresInTheText) {
   h.rtl.push_back({false, false, false, a.pass, i, i, 100, 108, a.fragment.writes});
   h.rtl.push_back({true, false, false, a.pass, i, i, 100, 115, a.fragment.writes});
   std::string t = history_text(f, h);
-  EXPECT_NE(t.find("rtl: accepted at cycle 100; X4 at cycle 108; X11 at cycle 115\n"), std::string::npos) << t;
+  EXPECT_NE(t.find("rtl: #" + std::to_string(i) + " accepted at cycle 100; X4 at cycle 108; X11 at cycle 115\n"), std::string::npos) << t;
   EXPECT_NE(t.find("rtl: no retire of this fragment seen"), std::string::npos) << t;  // the second
   EXPECT_NE(t.find("rtl    the same on every plane"), std::string::npos) << t;
   EXPECT_EQ(t.find("MISMATCH"), std::string::npos);

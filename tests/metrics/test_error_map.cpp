@@ -88,7 +88,7 @@ TEST(ErrorMap, PixelsOnTheRampAndALegendBelow) {
   const Framebuffer fb = error_map_image(de, w, h, 10.0);
   ASSERT_EQ(fb.width, kLegendWidth);  // a narrow frame gets room for its legend
   ASSERT_GT(fb.height, h);
-  EXPECT_EQ(fb.color_at(0, 0), error_ramp(0));
+  EXPECT_EQ(fb.color_at(0, 0), kExactColor);  // no error: not the ramp's black
   EXPECT_EQ(fb.color_at(7, 5), error_ramp(1));
   EXPECT_EQ(fb.color_at(20, 15), error_ramp(0.5));
   // The legend: its ramp shows the brightest colour, and text strokes are drawn.
@@ -98,6 +98,42 @@ TEST(ErrorMap, PixelsOnTheRampAndALegendBelow) {
   const Framebuffer marked = error_map_image(de, w, h, 10.0, std::pair<int, int>{7, 5});
   EXPECT_GT(count(marked, Rgba8{0, 255, 255, 255}, 0, h), 20u);
   EXPECT_EQ(marked.color_at(7, 5), error_ramp(1));  // the ring leaves the pixel itself
+}
+
+// An exact pixel is told apart from the smallest error, and the ramp never takes its colour; a
+// map with no error and one with an error say so in their legends (text drawn differs).
+TEST(ErrorMap, ExactPixelsStandApart) {
+  for (int i = 0; i <= 1000; ++i) ASSERT_NE(error_ramp(i / 1000.0), kExactColor) << i;
+  constexpr int w = 40, h = 10;
+  std::vector<float> de(size_t(w) * h, 0.0f);
+  const Framebuffer exact = error_map_image(de, w, h, 50.0);
+  EXPECT_EQ(count(exact, kExactColor, 0, h), size_t(w) * h);
+  de[3] = 0.01f;
+  const Framebuffer tiny = error_map_image(de, w, h, 50.0);
+  EXPECT_NE(tiny.color_at(3, 0), kExactColor);
+  EXPECT_EQ(tiny.color_at(3, 0), error_ramp(0.01 / 50.0));
+  const Rgba8 text{230, 230, 230, 255};
+  EXPECT_NE(count(exact, text, h, exact.height), count(tiny, text, h, tiny.height));
+  // The legend's own swatch of the exact colour.
+  EXPECT_GT(count(exact, kExactColor, h, exact.height), 50u);
+}
+
+TEST(ErrorMap, LegendTicks) {
+  EXPECT_EQ(error_scale_ticks(50), (std::vector<double>{0, 10, 20, 30, 40, 50}));
+  EXPECT_EQ(error_scale_ticks(2), (std::vector<double>{0, 0.5, 1, 1.5, 2}));
+  const std::vector<double> one = error_scale_ticks(1);
+  ASSERT_EQ(one.size(), 6u);
+  for (size_t i = 0; i < one.size(); ++i) EXPECT_NEAR(one[i], 0.2 * double(i), 1e-12);
+  EXPECT_EQ(error_scale_ticks(7), (std::vector<double>{0, 1.75, 3.5, 5.25, 7}));
+  EXPECT_EQ(error_scale_ticks(0), (std::vector<double>{0}));
+  // Drawn: a tick mark under the ramp at each inner value.
+  constexpr int w = 400, h = 4;
+  const Framebuffer fb = error_map_image(std::vector<float>(size_t(w) * h, 1.0f), w, h, 50.0);
+  const Rgba8 text{230, 230, 230, 255};
+  int marks = 0;
+  const int row = h + 4 + 10 + 1;  // just under the ramp
+  for (int x = 0; x + 1 < fb.width; ++x) marks += fb.color_at(x, row) == text && fb.color_at(x + 1, row) != text;
+  EXPECT_EQ(marks, 5);  // 0, 10, 20, 30, 40 (50 is the end label's)
 }
 
 TEST(ErrorMap, DeltaEMapIsPerPixel) {
@@ -127,6 +163,11 @@ TEST(ErrorMap, LineMapShowsHiddenDrawnAndVisibleMissing) {
   // The legend's swatches.
   EXPECT_GT(count(fb, kHiddenDrawnColor, 1, fb.height), 50u);
   EXPECT_GT(count(fb, kVisibleMissingColor, 1, fb.height), 50u);
+  // The greys of edges drawn right are named too.
+  EXPECT_EQ(fb.color_at(1, 0), kVisibleRightColor);
+  EXPECT_EQ(fb.color_at(2, 0), kHiddenRightColor);
+  EXPECT_GT(count(fb, kVisibleRightColor, 1, fb.height), 50u);
+  EXPECT_GT(count(fb, kHiddenRightColor, 1, fb.height), 50u);
 }
 
 }  // namespace

@@ -2,12 +2,15 @@
 // hand-computed and published values.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "metrics/color_difference.h"
 #include "metrics/metrics.h"
+#include "pipeline/render.h"
 #include "reference/reference.h"
 #include "scene/builtin_scenes.h"
 #include "scene/meshes.h"
@@ -141,6 +144,29 @@ TEST(ImageError, IdenticalFramesHaveNoError) {
   EXPECT_EQ(e.share_over_2, 0.0);
   EXPECT_EQ(e.delta_e_mean, 0.0);
   EXPECT_EQ(e.delta_e_max, 0.0);
+  EXPECT_EQ(e.worst_x, -1);  // no worst pixel to point at
+  EXPECT_EQ(e.worst_y, -1);
+  std::vector<float> de{1, 2};
+  zb::compare_images(f, f, &de);
+  EXPECT_EQ(de, std::vector<float>(4, 0.0f));
+}
+
+// The worst pixel: the one of the largest CIEDE2000, the first in row-major order on a tie, and
+// the per-pixel values are the ones the mean and the largest are of.
+TEST(ImageError, WorstPixelAndPerPixelDeltaE) {
+  const Rgba8 w{255, 255, 255, 255};
+  const zb::Framebuffer ref = frame({w, w, w, w});  // 2x2
+  const zb::Framebuffer img = frame({{250, 255, 255, 255}, w, {0, 0, 0, 255}, {0, 0, 0, 255}});
+  std::vector<float> de;
+  const zb::ImageError e = zb::compare_images(img, ref, &de);
+  EXPECT_EQ(e.worst_x, 0);  // (0, 1): row 1, the first of the two black pixels
+  EXPECT_EQ(e.worst_y, 1);
+  ASSERT_EQ(de.size(), 4u);
+  EXPECT_EQ(de[1], 0.0f);
+  EXPECT_GT(de[0], 0.0f);
+  EXPECT_FLOAT_EQ(de[2], float(e.delta_e_max));
+  EXPECT_FLOAT_EQ(de[3], de[2]);
+  EXPECT_NEAR((de[0] + de[2] + de[3]) / 4.0, e.delta_e_mean, 1e-4);
 }
 
 // One pixel black where the reference is white: CIEDE2000 100 (L 0 against 100, mean L 50 so
@@ -188,6 +214,44 @@ TEST(SupersampledReference, HalfCoveredPixelIsTheMean) {
   // Without supersampling the centre (1.5, 1.5) is on the edge: all or nothing.
   const zb::Rgba8 c = zb::render_reference_supersampled(half_covered_scene(), vp, 1).color_at(1, 1);
   EXPECT_TRUE(c.r == 0 || c.r == 255);
+}
+
+// The banded reference against the whole frame's: the exact reference of the scene at the
+// enlarged size, box-filtered here, on one thread and on three (bands straddled by triangles,
+// a last band shorter than the rest).
+TEST(SupersampledReference, BandsAreTheWholeFramesReference) {
+  const zb::Scene scene = *zb::builtin_scene("cad");
+  const zb::Viewport vp{37, 29, zb::kDefaultDepthBits};
+  const int factor = 3;
+  zb::Viewport big = vp;
+  big.width *= factor;
+  big.height *= factor;
+  const zb::Framebuffer whole = zb::render_reference(zb::rasterize_scene(scene, big));
+  for (int threads : {1, 3}) {
+    const zb::Framebuffer fb = zb::render_reference_supersampled(scene, vp, factor, threads);
+    for (int y = 0; y < vp.height; ++y)
+      for (int x = 0; x < vp.width; ++x) {
+        int sum[3] = {0, 0, 0};
+        uint32_t nearest = zb::depth_max(vp.depth_bits);
+        for (int s = 0; s < factor * factor; ++s) {
+          const int bx = x * factor + s % factor, by = y * factor + s / factor;
+          const zb::Rgba8 c = whole.color_at(bx, by);
+          sum[0] += c.r, sum[1] += c.g, sum[2] += c.b;
+          nearest = std::min(nearest, whole.depth_at(bx, by));
+        }
+        // The whole frame's sub-pixels are rounded once already: within one of the mean.
+        const zb::Rgba8 got = fb.color_at(x, y);
+        const int want[3] = {sum[0] / 9, sum[1] / 9, sum[2] / 9};
+        ASSERT_LE(std::abs(got.r - want[0]), 1) << x << "," << y << " threads " << threads;
+        ASSERT_LE(std::abs(got.g - want[1]), 1) << x << "," << y << " threads " << threads;
+        ASSERT_LE(std::abs(got.b - want[2]), 1) << x << "," << y << " threads " << threads;
+        ASSERT_EQ(fb.depth_at(x, y), nearest) << x << "," << y << " threads " << threads;
+      }
+    if (threads == 3) {
+      const zb::Framebuffer one = zb::render_reference_supersampled(scene, vp, factor, 1);
+      EXPECT_EQ(fb.color, one.color);
+    }
+  }
 }
 
 TEST(SupersampledReference, RejectsBadFactors) {
