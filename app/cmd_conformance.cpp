@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include <fmt/core.h>
 
@@ -33,6 +34,7 @@ struct ExportOptions {
 struct CheckOptions {
   std::string suite, out, tests;
   bool no_accum = false;
+  bool quick = false;
 };
 
 void print_list(const std::vector<cf::TestSpec>& tests) {
@@ -90,17 +92,35 @@ std::vector<std::string> split_tests(const std::string& list) {
 }
 
 void run_check(const CLI::App& cmd, const CheckOptions& o) {
-  const std::vector<std::string> only = cmd.count("--tests") ? split_tests(o.tests)
-                                                             : std::vector<std::string>{};
+  cf::Selection only;
+  only.quick = o.quick;
+  if (cmd.count("--tests")) only.names = split_tests(o.tests);
   std::error_code ec;
   if (!std::filesystem::is_directory(o.out, ec))
     throw UsageError(fmt::format("OUT: '{}' is not a directory (give the one holding "
                                  "<test>/got.<plane>.hex)", o.out));
   std::vector<cf::TestResult> results;
+  std::string chosen;  // how the tests were chosen, when by the run in OUT
+  bool no_accum = o.no_accum;
   try {
+    // Neither --tests nor --quick: the tests the run in OUT simulated, when a run left its
+    // results there, so a --quick or subset run is not judged by the tests it never ran.
+    if (only.names.empty() && !only.quick) {
+      if (std::optional<cf::RunRecord> run = cf::read_run(o.out)) {
+        only.from = (std::filesystem::path(o.out) / "results.json").string();
+        if (run->tests.empty())
+          throw UsageError(fmt::format("OUT: {} says the run simulated no test: give --tests or "
+                                       "--quick to choose some", only.from));
+        only.names = run->tests;
+        // As the run checked them: a DUT it found without the plane, as --no-accum.
+        no_accum = no_accum || !run->accum_plane;
+        chosen = fmt::format(" (the tests the run simulated{}, {})",
+                             run->accum_plane ? "" : ", without the accumulation plane", only.from);
+      }
+    }
     // A failed test's line ends with the command that shows its first wrong pixel's history.
     const std::string program = command_of(*cmd.get_parent());
-    results = cf::check_suite(o.suite, o.out, only, !o.no_accum, [&](const cf::TestResult& r) {
+    results = cf::check_suite(o.suite, o.out, only, !no_accum, [&](const cf::TestResult& r) {
       if (r.pass || r.skipped || r.first_x < 0)
         fmt::print("{}\n", r.line);
       else
@@ -118,8 +138,9 @@ void run_check(const CLI::App& cmd, const CheckOptions& o) {
     failed += r.pass || r.skipped ? 0 : 1;
   }
   const size_t checked = results.size() - skipped;
-  fmt::print("{} of {} tests pass{}\n", checked - failed, checked,
-             skipped ? fmt::format(", {} skipped (they need the accumulation plane)", skipped) : "");
+  fmt::print("{} of {} tests pass{}{}\n", checked - failed, checked,
+             skipped ? fmt::format(", {} skipped (they need the accumulation plane)", skipped) : "",
+             chosen);
   if (failed) throw VerificationError(fmt::format("{} of {} tests failed", failed, checked));
 }
 
@@ -153,7 +174,11 @@ void add_conformance_commands(CLI::App& parent) {
                "line per test; exit 1 when any fails");
   chk->add_option("SUITE", c->suite, "The suite's directory (zblend conformance export)")->required();
   chk->add_option("OUT", c->out, "The DUT's output directory")->required();
-  chk->add_option("--tests", c->tests, "Only these tests, NAME,NAME,... (a CI slice)");
+  chk->add_option("--tests", c->tests,
+                  "Only these tests, NAME,NAME,... (a CI slice; default: those the run in OUT "
+                  "simulated, by its results.json, else every test)");
+  chk->add_flag("--quick", c->quick, "Only the suite's quick tier (as scripts/conformance.py "
+                                     "--quick), with --tests those of them");
   chk->add_flag("--no-accum", c->no_accum,
                 "The DUT has no accumulation plane: skip the tests that need it (reported as "
                 "skip, not pass) and read no got.accum.hex");

@@ -25,7 +25,7 @@ struct SuitePixelOptions {
 void run_suite_pixel(const SuitePixelOptions& o) {
   std::vector<std::string> names;
   try {
-    names = conformance::suite_test_names(o.suite);
+    names = conformance::verified_test_names(o.suite);
   } catch (const std::exception& e) {
     throw UsageError(e.what());
   }
@@ -40,7 +40,8 @@ void run_suite_pixel(const SuitePixelOptions& o) {
     throw UsageError(e.what());
   }
   const FrameHistory f = conformance::stream_history(trace, parse_at(o.at, trace.width, trace.height));
-  write_histories(f, fmt::format("conformance test {} of {} ({} passes)", o.test, o.suite, f.passes.size()),
+  write_histories(f, fmt::format("conformance test {} of {} ({})", o.test, o.suite,
+                                 count_text(f.passes.size(), "pass", "passes")),
                   o.suite + "/" + o.test, "", o.json, nullptr);
 }
 

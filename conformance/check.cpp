@@ -32,6 +32,8 @@ struct ManifestTest {
   std::string signature_sha256;
   WboitFormat wboit;         // its config's accumulation widths
   bool needs_accum = false;  // its colour is resolved from the accumulation plane
+  std::string tier;          // "quick", "full" or "random"
+  std::map<std::string, std::string> files;  // file name: SHA-256, in name order
 };
 
 // A test name is a directory of the suite: letters, digits, '-', '_' and '.', not first.
@@ -105,12 +107,46 @@ std::vector<ManifestTest> read_manifest(const fs::path& suite) {
         throw malformed(fmt::format("test '{}': frame {}x{} is out of range", m.name, m.width, m.height));
       if (!is_sha256(m.signature_sha256))
         throw malformed(fmt::format("test '{}': signature_sha256 is not 64 hex digits", m.name));
+      m.tier = t.value("tier", "");
+      for (const auto& [file, sha] : t.at("files").items()) {
+        if (!valid_name(file) || !sha.is_string() || !is_sha256(sha.get<std::string>()))
+          throw malformed(fmt::format("test '{}': \"files\": '{}' is not a file name with 64 hex "
+                                      "digits", m.name, file));
+        m.files[file] = sha.get<std::string>();
+      }
+      // The files the kit's commands read are hashed, so each must be listed.
+      std::vector<std::string> read = {"stream.hex"};
+      for (Plane p : kPlanes) read.push_back(fmt::format("expect.{}.hex", to_string(p)));
+      for (const std::string& f : read)
+        if (!m.files.count(f)) throw malformed(fmt::format("test '{}': \"files\" lacks {}", m.name, f));
       tests.push_back(std::move(m));
     }
   } catch (const json::exception& e) {
     throw malformed(e.what());
   }
   return tests;
+}
+
+// Every file of every test held to the manifest's SHA-256 in scripts/conformance.py's order
+// and words (load_suite), so that the runner and every command refuse a corrupt suite alike.
+void verify_files(const fs::path& suite, const std::vector<ManifestTest>& tests) {
+  const char* again = "export it again: zblend conformance export DIR";
+  fs::path base = fs::absolute(suite).lexically_normal();  // as os.path.abspath writes it
+  if (!base.has_filename()) base = base.parent_path();
+  for (const ManifestTest& t : tests)
+    for (const auto& [file, want] : t.files) {
+      const std::string path = (base / t.name / file).string();
+      errno = 0;
+      const std::optional<std::string> text = read_text(path);
+      if (!text)
+        throw ConformanceError(fmt::format("corrupt suite: {}: {} ({})", path,
+                                           std::strerror(errno ? errno : EIO), again));
+      const std::string got = sha256_hex(*text);
+      if (got != want)
+        throw ConformanceError(fmt::format("corrupt suite: {}: SHA-256 {}..., the manifest says "
+                                           "{}... (truncated or changed; {})", path,
+                                           got.substr(0, 16), want.substr(0, 16), again));
+    }
 }
 
 // A file of hex words, one a line, each kept as `digits` lower-case digits (a word may be wider
@@ -245,26 +281,65 @@ TestResult check_test(const fs::path& suite, const fs::path& out, const Manifest
 
 }  // namespace
 
-std::vector<std::string> suite_test_names(const std::string& suite) {
+std::vector<std::string> verified_test_names(const std::string& suite) {
+  const std::vector<ManifestTest> tests = read_manifest(suite);
+  verify_files(suite, tests);
   std::vector<std::string> names;
-  for (const ManifestTest& t : read_manifest(suite)) names.push_back(t.name);
+  for (const ManifestTest& t : tests) names.push_back(t.name);
   return names;
 }
 
+std::optional<RunRecord> read_run(const std::string& out) {
+  const fs::path path = fs::path(out) / "results.json";
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return std::nullopt;
+  auto malformed = [&](const std::string& what) {
+    return ConformanceError(fmt::format("OUT {}: {} (scripts/conformance.py writes it; give "
+                                        "--tests or --quick to choose the tests instead)",
+                                        path.string(), what));
+  };
+  const std::optional<std::string> text = read_text(path);
+  if (!text) throw malformed(fmt::format("cannot read: {}", std::strerror(errno)));
+  RunRecord run;
+  try {
+    const json j = json::parse(*text);
+    run.accum_plane = j.value("accum_plane", true);
+    for (const json& t : j.at("tests")) {
+      const std::string verdict = t.at("verdict").get<std::string>();
+      // Simulated: it has got files, or lacks them as a failure (not_supported and not_run
+      // tests were never simulated).
+      if (verdict == "pass" || verdict == "fail" || verdict == "timeout")
+        run.tests.push_back(t.at("name").get<std::string>());
+    }
+  } catch (const json::exception& e) {
+    throw malformed(e.what());
+  }
+  return run;
+}
+
 std::vector<TestResult> check_suite(const std::string& suite, const std::string& out,
-                                    const std::vector<std::string>& only, bool dut_accum,
+                                    const Selection& only, bool dut_accum,
                                     const std::function<void(const TestResult&)>& report) {
   const std::vector<ManifestTest> tests = read_manifest(suite);
-  for (const std::string& name : only)
-    if (std::none_of(tests.begin(), tests.end(), [&](const ManifestTest& t) { return t.name == name; }))
-      throw ConformanceError(fmt::format("--tests: '{}' is not a test of {} (its manifest.json "
-                                         "lists them)", name, suite));
+  verify_files(suite, tests);
+  const std::vector<std::string>& names = only.names;
+  for (const std::string& name : names)
+    if (std::none_of(tests.begin(), tests.end(), [&](const ManifestTest& t) {
+          return t.name == name && (!only.quick || t.tier == "quick");
+        }))
+      throw ConformanceError(fmt::format("{}: '{}' is not a test of {}{} (its manifest.json "
+                                         "lists them)", only.from, name, suite,
+                                         only.quick ? "'s quick tier" : ""));
   std::vector<TestResult> results;
   for (const ManifestTest& t : tests) {
-    if (!only.empty() && std::find(only.begin(), only.end(), t.name) == only.end()) continue;
+    if (!names.empty() && std::find(names.begin(), names.end(), t.name) == names.end()) continue;
+    if (only.quick && t.tier != "quick") continue;
     results.push_back(check_test(suite, out, t, dut_accum));
     if (report) report(results.back());
   }
+  if (only.quick && results.empty())
+    throw ConformanceError(fmt::format("--quick: {} has no test of the quick tier (its "
+                                       "manifest.json's \"tier\")", suite));
   return results;
 }
 

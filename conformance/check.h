@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,16 +18,39 @@ struct TestResult {
   int first_x = -1, first_y = -1;  // a failed test's first differing pixel, if a word differs
 };
 
-// The names of SUITE's tests, in its order. Throws ConformanceError on a malformed manifest.
-std::vector<std::string> suite_test_names(const std::string& suite);
+// Every command that reads a suite first holds each file of each test to the manifest's SHA-256
+// ("files"), as scripts/conformance.py does and in its words ("corrupt suite: PATH: SHA-256
+// ..."): a corrupt suite is bad input, never a DUT's failure, nor a stream explained that the
+// DUT never ran.
 
-// Checks every test of SUITE (or those in `only`, in the suite's order) and reports each result
-// to `report` as it is decided. Without `dut_accum` (a DUT with no accumulation plane) a test
-// that needs the plane is skipped and no test's got.accum.hex is read. A malformed suite (manifest, or expect files that do not match
-// their signature_sha256) or a name in `only` that is not a test throws ConformanceError; a got
-// file that is missing or malformed fails its test.
+// The names of SUITE's tests, in its order, once every file is verified. Throws
+// ConformanceError on a malformed manifest or a corrupt suite.
+std::vector<std::string> verified_test_names(const std::string& suite);
+
+// What a run of scripts/conformance.py left in OUT/results.json: the tests it simulated (verdict
+// pass, fail or timeout), in its order, and whether the DUT had the accumulation plane.
+struct RunRecord {
+  std::vector<std::string> tests;
+  bool accum_plane = true;
+};
+// nullopt when OUT has no results.json. Throws ConformanceError on one it cannot read.
+std::optional<RunRecord> read_run(const std::string& out);
+
+// Which tests to check: `names` (none: every test), and of those only the quick tier.
+struct Selection {
+  std::vector<std::string> names;
+  std::string from = "--tests";  // where the names came from, for the error naming a stray one
+  bool quick = false;
+};
+
+// Checks the selected tests of SUITE, in the suite's order, and reports each result to `report`
+// as it is decided. Without `dut_accum` (a DUT with no accumulation plane) a test that needs the
+// plane is skipped and no test's got.accum.hex is read. A malformed or corrupt suite (manifest,
+// files against their SHA-256, expect files against their signature_sha256), a selected name
+// that is not a test or an empty quick tier throws ConformanceError; a got file that is missing
+// or malformed fails its test.
 std::vector<TestResult> check_suite(const std::string& suite, const std::string& out,
-                                    const std::vector<std::string>& only, bool dut_accum,
+                                    const Selection& only, bool dut_accum,
                                     const std::function<void(const TestResult&)>& report);
 
 }  // namespace zb::conformance

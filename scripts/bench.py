@@ -2,6 +2,7 @@
 """zblend's benchmarks in one run (docs/bench.md): `make bench`.
 
 Usage: bench.py [--build DIR] [--out DIR] [--baseline BUILD_DIR] [--pgo BUILD_DIR] [--quick]
+                [--only maps]
 
 Runs, on this machine, one after another:
   1. the golden datapath alone, fragments per second per blend mode (Google Benchmark);
@@ -14,7 +15,8 @@ Runs, on this machine, one after another:
      scripts/pgo.sh) run in the same bench;
   5. cost growth: render time against resolution, against triangle count, and with the frame
      growing around an object of fixed size on screen;
-  6. with --baseline: `zblend render` (golden) and `zblend lab` (golden only) wall time, this
+  6. the error maps' cost: `zblend render` with and without them, alternated (bench_maps.py);
+  7. with --baseline: `zblend render` (golden) and `zblend lab` (golden only) wall time, this
      build against the baseline's, runs alternated so that the machine's drift falls on both.
 Writes OUT/bench.csv (every figure with its command), OUT/bench.md (the table), OUT/growth.csv
 and OUT/growth.png, and prints the table. Exit 1 when a run fails or a frame is not bit-exact.
@@ -31,6 +33,7 @@ import subprocess
 import sys
 import time
 
+import bench_maps
 import bench_rtl
 import bench_scenes
 
@@ -94,7 +97,7 @@ class Bench:
 
 
 def step(n, text):
-    print(f"[{n}/6] {text}", file=sys.stderr, flush=True)
+    print(f"[{n}/7] {text}", file=sys.stderr, flush=True)
 
 
 def datapath(b, reps):
@@ -356,6 +359,7 @@ def main():
     ap.add_argument("--pgo", help="a build directory of scripts/pgo.sh (the speed build with "
                     "PGO), measured beside this one")
     ap.add_argument("--quick", action="store_true", help="fewer repetitions and sizes")
+    ap.add_argument("--only", choices=["maps"], help="one step alone: maps (6, the error maps' cost)")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     b = Bench(a.build, a.out)
@@ -363,6 +367,11 @@ def main():
     os.makedirs(b.scene_dir, exist_ok=True)
     started = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
     reps = 1 if a.quick else 3
+    if a.only == "maps":
+        step(6, "error maps: render with and without them")
+        bench_maps.maps(b, 5 if a.quick else 15)
+        write_table(b, started)
+        return
     scene = bench_scenes.bunny_glass(b.scene_dir)
     step(1, "golden datapath per blend mode")
     datapath(b, reps)
@@ -377,8 +386,10 @@ def main():
     cosim(b)
     step(5, "cost growth")
     growth(b, scene, reps, a.quick)
+    step(6, "error maps: render with and without them")
+    bench_maps.maps(b, 5 if a.quick else 15)
     if a.baseline:
-        step(6, "render and lab against the baseline")
+        step(7, "render and lab against the baseline")
         host_against_baseline(b, a.baseline, 3 if a.quick else 5)
     write_table(b, started)
 

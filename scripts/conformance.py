@@ -15,8 +15,9 @@ each of the suite's configurations (depth bits, coverage samples) the testbench
 conformance/sv/zb_conf_tb.sv is built once with the DUT; each test runs it on its stream.hex
 (killed after --timeout seconds; the testbench's watchdog fails a DUT that stops making
 progress) and writes OUT/<test>/got.<plane>.hex and sim.log; then `zblend conformance check`
-compares the signatures and names the first differing pixel. Every file of the suite is checked
-against the manifest's SHA-256 first: a corrupt suite is bad input, never a DUT failure.
+compares the signatures and names the first differing pixel (a finished simulation's progress
+line says `ran`: the verdict is the checker's line). Every file of the suite is checked against
+the manifest's SHA-256 first: a corrupt suite is bad input, never a DUT failure.
 Results: this text, OUT/results.json and OUT/junit.xml. Exit 0 when every test that ran
 passed, 1 on a failure, a timeout or when no test was supported, 2 on bad usage or a bad suite.
 
@@ -387,11 +388,14 @@ def strip_option(argv, name):
     return out
 
 
-def write_results(a, results, counts, suite_version):
-    """OUT/results.json and OUT/junit.xml: every selected test's verdict, in suite order."""
+def write_results(a, results, counts, suite_version, no_accum):
+    """OUT/results.json and OUT/junit.xml: every selected test's verdict, in suite order, and
+    whether the DUT has the accumulation plane (`zblend conformance check SUITE OUT` checks the
+    tests simulated here as this run checked them)."""
     doc = {"suite": a.suite, "suite_version": suite_version, "sim": a.sim,
            "timing": a.timing, "schedule": a.schedule, "seed": a.seed,
-           "profile": a.prof["path"], "dut": a.prof["dut"], "counts": counts, "tests": results}
+           "profile": a.prof["path"], "dut": a.prof["dut"], "accum_plane": not no_accum,
+           "counts": counts, "tests": results}
     with open(os.path.join(a.out, "results.json"), "w") as f:
         json.dump(doc, f, indent=2)
         f.write("\n")
@@ -586,8 +590,9 @@ def main():
         name, finished, secs, first, hint, lacks_accum = result
         no_accum |= lacks_accum
         sims[name] = (finished, secs, first, hint)
+        # The simulation's end only: whether it passed is the checker's line, after it.
         verdict = ("skipped (no accumulation plane)" if hint == "not_supported" else
-                   "ok" if finished else "TIMEOUT" if hint == "timeout" else "FAILED")
+                   "ran" if finished else "TIMEOUT" if hint == "timeout" else "FAILED")
         print(f"conformance: [{i}/{len(runs)}] {verdict} {name} {secs:.1f} s"
               + (f": {first}" if first else ""), file=sys.stderr, flush=True)
         return finished, name
@@ -639,7 +644,7 @@ def main():
                 r.update(verdict="fail", message=why or "the checker gave no verdict")
         results.append(r)
     counts = {v: sum(r["verdict"] == v for r in results) for v in VERDICTS}
-    write_results(a, results, counts, suite_version)
+    write_results(a, results, counts, suite_version, no_accum)
     if counts["not_supported"]:
         needs = {}
         for r in results:

@@ -3,7 +3,8 @@
 # Usage: setup.sh [run|test|kit|synth|profile|bench|view]
 #   run:     what `make run` needs to build zblend and render: a compiler, CMake, Verilator and
 #            the libraries zblend links (GLM, stb, CLI11, nlohmann-json, fmt, OpenSSL's
-#            libcrypto for the conformance signatures' SHA-256, tinyobjloader, tinygltf).
+#            libcrypto for the conformance signatures' SHA-256, zlib for the PNG writer's
+#            deflate and Verilator's FST, tinyobjloader, tinygltf).
 #   test:    (the default) run's, and what `make test` and the other targets use: GoogleTest and
 #            Google Benchmark; Icarus Verilog (the RTL's second simulator, the conformance kit);
 #            SystemC; clang (libFuzzer, LeakSanitizer's runtime); the test scenes; OpenGL on
@@ -12,8 +13,8 @@
 #            server and iproute2 (the regression runner's tests, docs/regressions.md: the ssh
 #            test starts its own sshds in network namespaces); GTKWave and Xvfb (the waves'
 #            test).
-#   kit:     what `make kit` needs to build the conformance kit alone: run's without Verilator
-#            and zlib, and Python 3 with NumPy (the kit's Python module, conformance/python).
+#   kit:     what `make kit` needs to build the conformance kit alone: run's without Verilator,
+#            and Python 3 with NumPy (the kit's Python module, conformance/python).
 #   synth:   test's, and nextpnr-ice40 and IceStorm (`make synth`).
 #   profile: test's, and perf (`make profile-rtl`).
 #   bench:   test's, and valgrind (`make bench`: the RTL's instructions per simulated cycle,
@@ -26,11 +27,11 @@ set -euo pipefail
 group=${1:-test}
 packages=(
   build-essential cmake make
-  libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev libfmt-dev libssl-dev
+  libglm-dev libstb-dev libcli11-dev nlohmann-json3-dev libfmt-dev libssl-dev zlib1g-dev
   libtinyobjloader-dev libtinygltf-dev
 )
 if [[ $group != kit ]]; then
-  packages+=(verilator zlib1g-dev)
+  packages+=(verilator)
 fi
 if [[ $group != run && $group != kit ]]; then
   packages+=(

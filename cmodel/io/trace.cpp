@@ -9,7 +9,7 @@
 #include <fmt/core.h>
 
 #include "geometry/geometry.h"
-#include "image.h"
+#include "atomic_file.h"
 
 namespace zb {
 namespace {

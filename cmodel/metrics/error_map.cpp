@@ -48,9 +48,14 @@ int draw_text(Framebuffer& fb, int x, int y, const std::string& text, Rgba8 c) {
   return x + text_width(text);
 }
 
-// A canvas: the frame's pixels above a legend strip, at least kLegendWidth wide, black.
+// A canvas: the frame's pixels above a legend strip, at least kLegendWidth wide, black. A
+// picture: the colour plane alone (the others would triple a map's memory).
 Framebuffer canvas(int width, int height) {
-  return Framebuffer(std::max(width, kLegendWidth), height + kStrip, kDefaultDepthBits, kBlack);
+  Framebuffer fb(0, 0, kDefaultDepthBits, kBlack);
+  fb.width = std::max(width, kLegendWidth);
+  fb.height = height + kStrip;
+  fb.color.assign(size_t(fb.width) * size_t(fb.height), kBlack);
+  return fb;
 }
 
 std::string scale_text(double v) {

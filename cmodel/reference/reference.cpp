@@ -21,13 +21,6 @@ uint8_t to_unorm8(double v) {
 
 using Rgb = std::array<double, 3>;
 
-// The exact composite of every pixel, unrounded, and each pixel's nearest depth (the far depth
-// where nothing covers it).
-struct ExactFrame {
-  std::vector<Rgb> color;
-  std::vector<uint32_t> depth;
-};
-
 // One pixel's fragments `f[0..n)` (indices into rs.fragments, in submit order): sorted by
 // unrounded depth, ties in submit order (the earlier one counts as nearer, as depth LESS keeps
 // it). The nearest opaque fragment (or the background) is the base; the transparent fragments in
@@ -36,8 +29,17 @@ struct ExactFrame {
 Rgb composite_pixel(const RasterizedScene& rs, uint32_t* f, size_t n) {
   uint32_t* first = f;
   uint32_t* last = f + n;
-  std::stable_sort(first, last,
-                   [&](uint32_t a, uint32_t b) { return rs.z_exact[a] < rs.z_exact[b]; });
+  const auto nearer = [&](uint32_t a, uint32_t b) { return rs.z_exact[a] < rs.z_exact[b]; };
+  if (n > 32) {
+    std::stable_sort(first, last, nearer);
+  } else {  // stable too, without stable_sort's buffer for the few layers most pixels have
+    for (uint32_t* i = first + (n > 0); i < last; ++i) {
+      const uint32_t v = *i;
+      uint32_t* j = i;
+      for (; j > first && nearer(v, *(j - 1)); --j) *j = *(j - 1);
+      *j = v;
+    }
+  }
   uint32_t* base = std::find_if(first, last, [&](uint32_t i) { return rs.fragments[i].color.a == 255; });
   const Rgba8 under = base == last ? rs.background : rs.fragments[*base].color;
   Rgb c{double(under.r), double(under.g), double(under.b)};
@@ -51,32 +53,43 @@ Rgb composite_pixel(const RasterizedScene& rs, uint32_t* f, size_t n) {
   return c;
 }
 
-// Per pixel of rows [row0, row0 + rows) (rs holds only their fragments), composite_pixel.
-ExactFrame composite_exact(const RasterizedScene& rs, int row0, int rows) {
+// The buckets of composite_rows, kept by a caller that composites band after band.
+struct ExactScratch {
+  std::vector<uint32_t> start, order, fill;
+};
+
+// Per pixel of rows [row0, row0 + rows) (rs holds only their fragments), in row-major order,
+// visit(p, colour, depth) with p counted from the band's first pixel: composite_pixel's
+// unrounded colour and the nearest depth, or the background and the far depth.
+template <class Visit>
+void composite_rows(const RasterizedScene& rs, int row0, int rows, ExactScratch& scratch, Visit visit) {
   const Viewport& vp = rs.viewport;
   const size_t pixels = static_cast<size_t>(vp.width) * size_t(rows);
   const Rgba8 bg = rs.background;
-  ExactFrame out{std::vector<Rgb>(pixels, Rgb{double(bg.r), double(bg.g), double(bg.b)}),
-                 std::vector<uint32_t>(pixels, depth_max(vp.depth_bits))};
   auto index = [&](const Fragment& f) { return static_cast<size_t>(f.y - row0) * vp.width + f.x; };
 
   // Bucket fragment indices by pixel, keeping submit order within a pixel.
-  std::vector<uint32_t> start(pixels + 1, 0);
+  std::vector<uint32_t>& start = scratch.start;
+  start.assign(pixels + 1, 0);
   for (const Fragment& f : rs.fragments) ++start[index(f) + 1];
   for (size_t p = 0; p < pixels; ++p) start[p + 1] += start[p];
-  std::vector<uint32_t> order(rs.fragments.size());
-  std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+  std::vector<uint32_t>& order = scratch.order;
+  order.resize(rs.fragments.size());
+  std::vector<uint32_t>& fill = scratch.fill;
+  fill.assign(start.begin(), start.end() - 1);
   for (uint32_t i = 0; i < rs.fragments.size(); ++i) order[fill[index(rs.fragments[i])]++] = i;
 
+  const Rgb background{double(bg.r), double(bg.g), double(bg.b)};
   for (size_t p = 0; p < pixels; ++p) {
     auto first = order.begin() + start[p];
     auto last = order.begin() + start[p + 1];
-    if (first == last) continue;
+    if (first == last) {
+      visit(p, background, depth_max(vp.depth_bits));
+      continue;
+    }
     const Rgb c = composite_pixel(rs, &*first, size_t(last - first));
-    out.color[p] = c;
-    out.depth[p] = rs.fragments[*first].z;
+    visit(p, c, rs.fragments[*first].z);
   }
-  return out;
 }
 
 }  // namespace
@@ -112,12 +125,11 @@ std::vector<ReferencePixel> reference_pixels(const RasterizedScene& rs,
 Framebuffer render_reference(const RasterizedScene& rs) {
   const Viewport& vp = rs.viewport;
   Framebuffer fb(vp.width, vp.height, vp.depth_bits, rs.background);
-  const ExactFrame exact = composite_exact(rs, 0, vp.height);
-  for (size_t p = 0; p < fb.color.size(); ++p) {
-    const Rgb& c = exact.color[p];
+  ExactScratch scratch;
+  composite_rows(rs, 0, vp.height, scratch, [&](size_t p, const Rgb& c, uint32_t depth) {
     fb.color[p] = {to_unorm8(c[0]), to_unorm8(c[1]), to_unorm8(c[2]), 255};
-  }
-  fb.depth = exact.depth;
+    fb.depth[p] = depth;
+  });
   return fb;
 }
 
@@ -138,6 +150,9 @@ Framebuffer render_reference_supersampled(const Scene& scene, const Viewport& vp
   const int bands = (vp.height + kBandRows - 1) / kBandRows;
   std::atomic<int> next{0};
   run_workers(std::min(resolve_threads(threads), bands), [&](int) {
+    ExactScratch scratch;
+    std::vector<Rgb> sums;
+    std::vector<uint32_t> nearest;
     RasterizedScene rs;
     rs.viewport = big;
     rs.background = scene.background;
@@ -147,23 +162,22 @@ Framebuffer render_reference_supersampled(const Scene& scene, const Viewport& vp
       rs.z_exact.clear();
       for (const ScreenTriangle& t : triangles)
         rasterize(t, big, rs.fragments, &rs.z_exact, RowRange{y0 * factor, y1 * factor});
-      const ExactFrame exact = composite_exact(rs, y0 * factor, (y1 - y0) * factor);
-      for (int y = y0; y < y1; ++y) {
-        for (int x = 0; x < vp.width; ++x) {
-          Rgb sum{0, 0, 0};
-          uint32_t nearest = depth_max(vp.depth_bits);
-          for (int sy = 0; sy < factor; ++sy) {
-            for (int sx = 0; sx < factor; ++sx) {
-              const size_t s = static_cast<size_t>((y - y0) * factor + sy) * big.width + x * factor + sx;
-              for (int c = 0; c < 3; ++c) sum[c] += exact.color[s][c];
-              nearest = std::min(nearest, exact.depth[s]);
-            }
-          }
-          const size_t p = fb.index(x, y);
-          fb.color[p] = {to_unorm8(sum[0] / samples), to_unorm8(sum[1] / samples),
-                         to_unorm8(sum[2] / samples), 255};
-          fb.depth[p] = nearest;
-        }
+      // Each sub-pixel's colour summed into its pixel as it comes, row by row: the order of
+      // the sums is the sub-pixels' row-major one, as a whole frame's would be.
+      const size_t n = size_t(vp.width) * size_t(y1 - y0);
+      sums.assign(n, Rgb{0, 0, 0});
+      nearest.assign(n, depth_max(vp.depth_bits));
+      composite_rows(rs, y0 * factor, (y1 - y0) * factor, scratch, [&](size_t s, const Rgb& c, uint32_t depth) {
+        const size_t bx = s % size_t(big.width), by = s / size_t(big.width);
+        const size_t p = by / size_t(factor) * size_t(vp.width) + bx / size_t(factor);
+        for (int k = 0; k < 3; ++k) sums[p][k] += c[k];
+        nearest[p] = std::min(nearest[p], depth);
+      });
+      for (size_t k = 0; k < n; ++k) {
+        const size_t p = fb.index(int(k % size_t(vp.width)), y0 + int(k / size_t(vp.width)));
+        fb.color[p] = {to_unorm8(sums[k][0] / samples), to_unorm8(sums[k][1] / samples),
+                       to_unorm8(sums[k][2] / samples), 255};
+        fb.depth[p] = nearest[k];
       }
     }
   });

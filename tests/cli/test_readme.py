@@ -4,7 +4,9 @@ fails CI (also docs/verification.md's, which the README points to).
 
 Every command of every ```sh block of the file, in order, in a scratch directory where build/
 is the build tree and scripts/ the project's: each must exit 0, and each output it names
-(--out, --out-dir, --stats, an export's directory) must exist and not be empty. Not run here,
+(--out, --out-dir, --stats, an export's directory) must exist and not be empty; a `conformance
+check`'s DUT directory must be one an earlier command writes (the DUT's own run stands in as
+the suite's expected planes). Not run here,
 each for its reason (REASONS below): `make run` and `make test` (.ci/run runs both, this test
 is inside the second) and the other make targets (hours of both cores; `make -n` checks the
 target exists), and commands whose arguments are the reader's own files (a DUT's sources, a
@@ -71,6 +73,7 @@ def main() -> int:
         print(f"FAIL: {readme}: {len(cmds)} commands in its ```sh blocks; expected the command block")
         return 1
     failures = ran = 0
+    promised = set()  # what the commands so far say they write (run or not)
     with tempfile.TemporaryDirectory() as tmp:
         work = Path(tmp)
         (work / "build").symlink_to(build)
@@ -78,6 +81,11 @@ def main() -> int:
         for line, text in cmds:
             argv = shlex.split(text)
             where = f"README.md:{line}: {text}"
+            if argv[1:3] == ["conformance", "check"] and len(argv) > 4 and argv[4] not in promised:
+                print(f"FAIL: {where}: nothing before it writes {argv[4]} (a DUT's run must)")
+                failures += 1
+                continue
+            promised.update(outputs(argv))
             if argv[0] == "make":
                 target = argv[1] if len(argv) > 1 else ""
                 r = subprocess.run(["make", "-n", "-C", str(source), *argv[1:]],

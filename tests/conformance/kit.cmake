@@ -42,8 +42,14 @@ if(NOT ZBLEND_SANITIZE)
   add_test(NAME conformance_kit_program
            COMMAND ${kit_python} ${kit_py}/test_kit.py program $<TARGET_FILE:zblend-conformance>
                    $<TARGET_FILE:zblend> ${CMAKE_CURRENT_BINARY_DIR}/kit-program)
+  # A corrupt suite (a fragment's alpha changed, an expect file gone): conformance.py, pixel and
+  # check of both programs refuse it, exit 2, in the same words.
+  add_test(NAME conformance_corrupt_suite
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test_corrupt_suite.sh $<TARGET_FILE:zblend>
+                   $<TARGET_FILE:zblend-conformance>)
   set_tests_properties(conformance_python conformance_python_oneliner conformance_python_errors
                        PROPERTIES FIXTURES_REQUIRED conformance_suite)
   set_tests_properties(conformance_python conformance_python_oneliner conformance_python_errors
-                       conformance_kit_program PROPERTIES LABELS conformance)
+                       conformance_kit_program conformance_corrupt_suite
+                       PROPERTIES LABELS conformance)
 endif()

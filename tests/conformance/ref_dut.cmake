@@ -70,9 +70,16 @@ if(NOT ZBLEND_SANITIZE)
   add_test(NAME conformance_seeded_tier
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test_seeded_tier.sh ${zb} 11)
   set_tests_properties(conformance_seeded_tier PROPERTIES LABELS conformance)
+  # conformance check after a --quick run of the subset: the tests the run simulated, from
+  # OUT/results.json; check --quick. The progress lines of a run the checker fails never say ok.
+  add_test(NAME conformance_check_run
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test_check_run.sh ${suite} ${w}/check-run ${zb})
+  add_test(NAME conformance_progress
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test_progress.sh ${suite} ${w}/progress ${zb})
   set_tests_properties(conformance_ref_verilator conformance_ref_icarus
                        conformance_ref_random_stalls conformance_ref_bug conformance_ref_hang
                        conformance_ref_full conformance_ref_pipe ${defect_tests}
+                       conformance_check_run conformance_progress
                        PROPERTIES LABELS conformance FIXTURES_REQUIRED conformance_suite)
   set_tests_properties(conformance_ref_lint PROPERTIES LABELS conformance)
   set_tests_properties(conformance_ref_hang PROPERTIES TIMEOUT 120)

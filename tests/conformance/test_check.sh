@@ -2,7 +2,8 @@
 # zblend conformance check: passes when the got files are the expect files; fails, naming the
 # test, plane, pixel and both values, and the command that shows the pixel's history, when one
 # word of one got file changes; names a missing got
-# file; --tests checks a slice; a damaged suite or an unknown test is exit 2.
+# file; --tests checks a slice; a damaged suite (a file against the manifest's SHA-256, the expect
+# files against the signature) or an unknown test is exit 2.
 set -u
 zblend=$(realpath "${1:?usage: test_check.sh PATH/TO/zblend SUITE}")
 suite=$(realpath "${2:?usage: test_check.sh PATH/TO/zblend SUITE}")
@@ -102,7 +103,19 @@ expect2 "no OUT" "OUT: '$tmp/none' is not a directory" "$suite" "$tmp/none"
 expect2 "no suite" "SUITE $tmp/manifest.json: cannot read" "$tmp" "$out"
 cp -r "$suite" "$tmp/damaged"
 sed -i '1s/.*/00000000/' "$tmp/damaged/random/expect.color.hex"
-expect2 "a changed expect file" "the expect files of test 'random' do not match its signature_sha256" \
+expect2 "a changed expect file" "^zblend: error: corrupt suite: $tmp/damaged/random/expect.color.hex: SHA-256 [0-9a-f]{16}\.\.\., the manifest says" \
+  "$tmp/damaged" "$out" --tests random
+# Its hash in "files" made to agree: the signature still holds the expect files.
+python3 - "$tmp/damaged" <<'PY'
+import hashlib, json, sys
+path = f"{sys.argv[1]}/manifest.json"
+m = json.load(open(path))
+t = next(t for t in m["tests"] if t["name"] == "random")
+t["files"]["expect.color.hex"] = hashlib.sha256(
+    open(f"{sys.argv[1]}/random/expect.color.hex", "rb").read()).hexdigest()
+json.dump(m, open(path, "w"))
+PY
+expect2 "a changed expect file, its hash too" "the expect files of test 'random' do not match its signature_sha256" \
   "$tmp/damaged" "$out" --tests random
 version=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["version"])' "$suite/manifest.json")
 echo "{\"suite\": \"zblend-conformance\", \"version\": $((version + 1)), \"tests\": []}" >"$tmp/damaged/manifest.json"
