@@ -122,12 +122,26 @@ std::vector<float> delta_e_map(const Framebuffer& image, const Framebuffer& refe
   return de;
 }
 
-double percentile(std::vector<float> values, double p) {
+double percentile(const std::vector<float>& values, double p) {
   if (values.empty()) return 0;
   const double rank = std::ceil(std::clamp(p, 0.0, 1.0) * double(values.size()));
   const size_t k = std::min(values.size() - 1, size_t(std::max(rank, 1.0)) - 1);
-  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(k), values.end());
-  return values[k];
+  // An error map is mostly exact pixels: with no value below 0, the zeros come first, and only
+  // the others need ordering.
+  std::vector<float> above;
+  size_t zeros = 0;
+  bool negative = false;
+  for (const float v : values) {
+    negative = negative || v < 0;
+    if (v == 0) ++zeros; else above.push_back(v);
+  }
+  if (negative) {
+    above = values;
+    zeros = 0;
+  }
+  if (k < zeros) return 0;
+  std::nth_element(above.begin(), above.begin() + std::ptrdiff_t(k - zeros), above.end());
+  return above[k - zeros];
 }
 
 double nice_error_scale(double value) {

@@ -22,7 +22,7 @@ Rgba8 error_ramp(double t);
 std::vector<float> delta_e_map(const Framebuffer& image, const Framebuffer& reference);
 
 // The value below which a share `p` (0..1) of `values` lie (nearest rank); 0 when empty.
-double percentile(std::vector<float> values, double p);
+double percentile(const std::vector<float>& values, double p);
 
 // A scale for maps that compare: the smallest 1, 2 or 5 x 10^k at or above `value`, at least
 // kMinErrorScale (below it no difference is visible).

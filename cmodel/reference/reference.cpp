@@ -167,11 +167,18 @@ Framebuffer render_reference_supersampled(const Scene& scene, const Viewport& vp
       const size_t n = size_t(vp.width) * size_t(y1 - y0);
       sums.assign(n, Rgb{0, 0, 0});
       nearest.assign(n, depth_max(vp.depth_bits));
-      composite_rows(rs, y0 * factor, (y1 - y0) * factor, scratch, [&](size_t s, const Rgb& c, uint32_t depth) {
-        const size_t bx = s % size_t(big.width), by = s / size_t(big.width);
-        const size_t p = by / size_t(factor) * size_t(vp.width) + bx / size_t(factor);
+      // Sub-pixels come one by one in row-major order: their pixel follows without a division.
+      size_t row_first = 0, p = 0;
+      int sx = 0, sy = 0, bx = 0;
+      composite_rows(rs, y0 * factor, (y1 - y0) * factor, scratch, [&](size_t, const Rgb& c, uint32_t depth) {
         for (int k = 0; k < 3; ++k) sums[p][k] += c[k];
         nearest[p] = std::min(nearest[p], depth);
+        if (++sx == factor) sx = 0, ++p;
+        if (++bx == big.width) {
+          bx = 0;
+          if (++sy == factor) sy = 0, row_first += size_t(vp.width);
+          p = row_first;
+        }
       });
       for (size_t k = 0; k < n; ++k) {
         const size_t p = fb.index(int(k % size_t(vp.width)), y0 + int(k / size_t(vp.width)));

@@ -72,6 +72,14 @@ TEST(ErrorMap, PercentileAndWorstPixel) {
   EXPECT_EQ(percentile(v, 1.0), 100.0);
   EXPECT_EQ(percentile(v, 0.0), 1.0);
   EXPECT_EQ(percentile({}, 0.5), 0.0);
+  // Mostly exact maps (zeros first, the rest ordered), and values below 0 (all ordered).
+  const std::vector<float> z{0, 0, 0, 5, 1, 0, 3};  // sorted: 0 0 0 0 1 3 5
+  EXPECT_EQ(percentile(z, 0.5), 0.0);
+  EXPECT_EQ(percentile(z, 0.75), 3.0);
+  EXPECT_EQ(percentile(z, 0.9), 5.0);
+  EXPECT_EQ(percentile({-1, 0, 2}, 0.1), -1.0);
+  EXPECT_EQ(percentile({-1, 0, 2}, 0.5), 0.0);
+  EXPECT_EQ(percentile({0, 0}, 1.0), 0.0);
   // Maps side by side: the largest 99th percentile (99 here; an empty map counts 0), rounded up.
   EXPECT_EQ(shared_error_scale({{}, v, std::vector<float>(10, 3.0f)}), 100.0);
   EXPECT_EQ(shared_error_scale({{}, std::vector<float>(10, 3.0f)}), 5.0);
