@@ -70,7 +70,7 @@ void add_rtl(FrameHistory& f, const PixelOptions& po, const std::function<void(B
 
 // Every output is checked, and its directory made, before the frame runs: a bad path fails at
 // once, naming its option, with nothing written.
-void check_outputs(const PixelOptions& o, const std::vector<std::pair<int, int>>& pixels) {
+void prepare_outputs(const PixelOptions& o, const std::vector<std::pair<int, int>>& pixels) {
   check_json(o.json);
   std::vector<OutputPath> outputs{{"--json", o.json == "-" ? "" : o.json, ".json"},
                                   {"--waves", o.waves, ".fst"}};
@@ -105,7 +105,7 @@ void run_trace_pixel(const CLI::App& cmd, const PixelOptions& o) {
   }
   check_backend(cmd, o, trace.depth_bits);
   const std::vector<std::pair<int, int>> pixels = parse_at(o.at, trace.width, trace.height);
-  check_outputs(o, pixels);
+  prepare_outputs(o, pixels);
   FrameHistory f = record_history(trace, pixels);
   if (o.backend != "golden") add_rtl(f, o, [&](Backend& b) { replay_trace(trace, b); });
   write_histories(f, fmt::format("trace {} ({})", o.trace, count_text(f.passes.size(), "pass", "passes")), o.trace, "", o.json, nullptr);
@@ -119,7 +119,7 @@ void run_pixel(const CLI::App& cmd, const PixelOptions& o) {
   if (!plan)
     throw UsageError(fmt::format("--method: unknown method '{}' (see 'zblend methods')", o.method));
   check_backend(cmd, o, vp.depth_bits);
-  check_outputs(o, pixels);
+  prepare_outputs(o, pixels);
   const Scene scene = resolve_scene_with_background(o.frame, o.background);
   if (!o.quiet) print_warnings("zblend pixel", scene);
   const RasterizedScene rs = rasterize_scene(scene, vp);

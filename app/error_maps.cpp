@@ -69,11 +69,11 @@ std::string write_error_maps(const std::vector<MethodRun>& runs, const Framebuff
     made.push_back(delta_e_map(r.image, fair == lab::FairReference::kExact ? reference : *supersampled));
     de.back() = &made.back();
   }
-  auto scale_of = [](const std::vector<float>& d) { return nice_error_scale(percentile(d, 0.99)); };
+  // shared_error_scale's rule, over the maps where they are (not copied into one list).
   double shared = scale.value;
   if (scale.kind == ErrorScale::Kind::kShared) {
     shared = kMinErrorScale;
-    for (const std::vector<float>* d : de) shared = std::max(shared, scale_of(*d));
+    for (const std::vector<float>* d : de) shared = std::max(shared, error_scale(*d));
   }
   // The maps are independent: drawn and encoded side by side.
   std::vector<std::string> errors(shown.size());
@@ -81,7 +81,7 @@ std::string write_error_maps(const std::vector<MethodRun>& runs, const Framebuff
   run_workers(std::max(1, std::min(resolve_threads(threads), int(shown.size()))), [&](int) {
     for (size_t i; (i = next++) < shown.size();) {
       const std::vector<float>& d = *de[i];
-      const double own = scale.kind == ErrorScale::Kind::kPerMethod ? scale_of(d) : shared;
+      const double own = scale.kind == ErrorScale::Kind::kPerMethod ? error_scale(d) : shared;
       const Framebuffer picture =
           d.empty() ? line_error_map_image(shown[i]->image, *lines, kEdgeColor)
                     : error_map_image(d, vp.width, vp.height, own, worst_pixel(d, vp.width));

@@ -152,10 +152,12 @@ double nice_error_scale(double value) {
       if (m * decade >= value * (1 - 1e-12)) return m * decade;
 }
 
+double error_scale(const std::vector<float>& map) { return nice_error_scale(percentile(map, 0.99)); }
+
 double shared_error_scale(const std::vector<std::vector<float>>& maps) {
-  double top = 0;
-  for (const std::vector<float>& m : maps) top = std::max(top, percentile(m, 0.99));
-  return nice_error_scale(top);
+  double top = kMinErrorScale;
+  for (const std::vector<float>& m : maps) top = std::max(top, error_scale(m));
+  return top;
 }
 
 std::optional<std::pair<int, int>> worst_pixel(const std::vector<float>& values, int width) {

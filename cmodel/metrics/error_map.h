@@ -32,6 +32,9 @@ double nice_error_scale(double value);
 // The one scale of maps shown side by side: the largest 99th percentile of theirs (an empty map
 // counts 0), as nice_error_scale rounds it.
 double shared_error_scale(const std::vector<std::vector<float>>& maps);
+// One map's own scale: its 99th percentile as nice_error_scale rounds it (at least
+// kMinErrorScale); shared_error_scale is the largest of these.
+double error_scale(const std::vector<float>& map);
 
 // The pixel (x, y) of the largest value, the first in row-major order on a tie; none when no
 // value is above 0 (nothing wrong to point at).
