@@ -25,6 +25,8 @@ set(ZBLEND_RTL_BEAT 8 CACHE STRING "zb_rop BEAT: tile port pixels per clock, a p
 set(ZBLEND_RTL_ACC_BITS 16 CACHE STRING "zb_rop ACC_BITS: accumulation channel width, 8 to 32")
 set(ZBLEND_RTL_REV_BITS 8 CACHE STRING "zb_rop REV_BITS: revealage width, 8 to 16")
 set(ZBLEND_RTL_WEIGHT_BITS 4 CACHE STRING "zb_rop WEIGHT_BITS: depth weight range, 0 to 16")
+# mlab-K (docs/datapath.md "8. Layers"): the layers a pixel the simulated zb_rop keeps, K at most.
+set(ZBLEND_RTL_LAYERS 4 CACHE STRING "zb_rop LAYERS: mlab-K's layers a pixel, 0 (none) to 8")
 if(NOT ZBLEND_RTL_DEPTH_BITS MATCHES "^[0-9]+$" OR ZBLEND_RTL_DEPTH_BITS LESS 8
    OR ZBLEND_RTL_DEPTH_BITS GREATER 32)
   message(FATAL_ERROR "ZBLEND_RTL_DEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS}: choose 8 to 32")
@@ -41,7 +43,7 @@ endif()
 if(NOT ZBLEND_RTL_BEAT MATCHES "^(1|2|4|8|16|32|64|128|256|512|1024)$" OR ZBLEND_RTL_BEAT GREATER ZBLEND_RTL_TILE)
   message(FATAL_ERROR "ZBLEND_RTL_BEAT=${ZBLEND_RTL_BEAT}: choose a power of two from 1 to the tile (${ZBLEND_RTL_TILE})")
 endif()
-foreach(width IN ITEMS "ACC_BITS;8;32" "REV_BITS;8;16" "WEIGHT_BITS;0;16")
+foreach(width IN ITEMS "ACC_BITS;8;32" "REV_BITS;8;16" "WEIGHT_BITS;0;16" "LAYERS;0;8")
   list(GET width 0 name)
   list(GET width 1 lo)
   list(GET width 2 hi)
@@ -53,12 +55,16 @@ endforeach()
 set(ZBLEND_RTL_PARAMS -GWINDOW=${ZBLEND_RTL_WINDOW} -GBEAT=${ZBLEND_RTL_BEAT} -GDEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS} -GCOV_SAMPLES=${ZBLEND_RTL_COV_SAMPLES}
     -GTILE_W=${ZBLEND_RTL_TILE} -GTILE_H=${ZBLEND_RTL_TILE} -GACC_BITS=${ZBLEND_RTL_ACC_BITS}
     -GREV_BITS=${ZBLEND_RTL_REV_BITS} -GWEIGHT_BITS=${ZBLEND_RTL_WEIGHT_BITS})
+# The mutant netlist's sample (tb/mutation) is of zb_rop without the layers unit; every other
+# model has them.
+set(ZBLEND_RTL_CORE_PARAMS ${ZBLEND_RTL_PARAMS})
+list(APPEND ZBLEND_RTL_PARAMS -GLAYERS=${ZBLEND_RTL_LAYERS})
 # The same values for the C++ mirrors (tb/rtlmodel/rtl_params.h).
 set(ZBLEND_RTL_DEFINES ZBLEND_RTL_DEPTH_BITS=${ZBLEND_RTL_DEPTH_BITS}
     ZBLEND_RTL_COV_SAMPLES=${ZBLEND_RTL_COV_SAMPLES} ZBLEND_RTL_TILE=${ZBLEND_RTL_TILE}
     ZBLEND_RTL_WINDOW=${ZBLEND_RTL_WINDOW} ZBLEND_RTL_BEAT=${ZBLEND_RTL_BEAT}
     ZBLEND_RTL_ACC_BITS=${ZBLEND_RTL_ACC_BITS} ZBLEND_RTL_REV_BITS=${ZBLEND_RTL_REV_BITS}
-    ZBLEND_RTL_WEIGHT_BITS=${ZBLEND_RTL_WEIGHT_BITS})
+    ZBLEND_RTL_WEIGHT_BITS=${ZBLEND_RTL_WEIGHT_BITS} ZBLEND_RTL_LAYERS=${ZBLEND_RTL_LAYERS})
 
 # Verilator's optimisation options, the model's threads and the C++ flags of its hot code:
 # chosen by measurement (scripts/verilator_options.sh, docs/bench.md), overridable for it.
@@ -112,7 +118,7 @@ function(zblend_verilate target)
   endif()
   if(V_BUG)
     list(APPEND args +define+ZB_INJECT_BLEND_BUG +define+ZB_INJECT_WINDOW_BUG
-         +define+ZB_INJECT_ACCUM_BUG +define+ZB_INJECT_TILEOP_BUG)
+         +define+ZB_INJECT_ACCUM_BUG +define+ZB_INJECT_TILEOP_BUG +define+ZB_INJECT_LAYERS_BUG)
   endif()
   set(kind "")
   if(V_SYSTEMC)

@@ -97,7 +97,7 @@ std::vector<RopState> pass_states() {
   std::vector<RopState> out;
   for (int d = 0; d < 9; ++d)  // off, then each function
     for (int w = 0; w < 2; ++w)
-      for (unsigned b = 0; b < kBlendModes; ++b)
+      for (unsigned b = 0; b < kCoreBlendModes; ++b)
         for (int m = 0; m < 16; ++m)
           for (int p = 0; p < 2; ++p) {
             RopState s;

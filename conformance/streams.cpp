@@ -50,7 +50,7 @@ class RandomStream {
     s.depth_test = !rng_.chance(0.15);
     s.depth_func = DepthFunc(rng_.below(8));
     s.depth_write = rng_.chance(0.6);
-    s.blend = BlendMode(rng_.below(kBlendModes));
+    s.blend = BlendMode(rng_.below(kCoreBlendModes));
     s.color_mask = rng_.chance(0.5) ? uint8_t(kMaskRgba) : uint8_t(rng_.below(16));
     s.peel_test = rng_.chance(0.3);
     if (mix_ == RandomMix::kWboit && rng_.chance(0.5)) s.blend = BlendMode::kAccumulate;

@@ -121,7 +121,7 @@ TestSpec generated_test(const Config& c, Family family, BlendMode blend = BlendM
 // Version 6's generated tests of a config, at the end of its group.
 void add_generated(std::vector<TestSpec>& all, const Config& c) {
   if (&c == &kBase) {
-    for (unsigned b = 0; b < kBlendModes; ++b)
+    for (unsigned b = 0; b < kCoreBlendModes; ++b)
       for (bool peel : {false, true})
         all.push_back(generated_test(c, Family::kStates, BlendMode(b), peel));
     all.push_back(generated_test(c, Family::kDepthBits));

@@ -5,6 +5,7 @@
 // lets a channel through, except in accumulate mode (zb_accum writes its own word instead,
 // with zb_blend's products).
 module zb_color #(
+  parameter bit LAYERS_ON = 1'b0,  // layers mode writes the layers, not the colour (zb_layers)
   parameter int WORDS       = 4096,
   parameter int BEAT        = 8,
   parameter int COV_SAMPLES = 16,
@@ -52,7 +53,8 @@ module zb_color #(
   logic [31:0] cmem_rdata, x11_color, x7_dst;
   logic        color_on, x10_cwe, x11_cwe;
 
-  assign color_on = (color_mask_i != 4'h0) & (blend_i != zb_pkg::BlendAccumulate);
+  assign color_on = (color_mask_i != 4'h0) & (blend_i != zb_pkg::BlendAccumulate) &
+                    !(LAYERS_ON && blend_i == zb_pkg::BlendLayers);
   assign x10_cwe  = x10_valid_i & x10_pass_i & color_on;
   assign x11_cwe  = x11_valid_i & x11_pass_i & color_on;
 

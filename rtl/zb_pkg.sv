@@ -1,7 +1,8 @@
 // zb_pkg: the datapath's types (docs/datapath.md, "The pass state"): the GL depth functions, the
 // blend modes and the pass state register, whose bit layout the C++ side packs (pack_state in
 // cmodel/rop/fragment.cpp): [0] depth_test, [3:1] depth_func, [4] depth_write, [7:5] blend,
-// [11:8] color_mask, [12] peel_test.
+// [11:8] color_mask, [12] peel_test. The word's [15:13], K - 1 in layers mode, comes on zb_rop's
+// state_layers_i, so builds without the layers unit keep this 13-bit register.
 // Modules name its types and values qualified (zb_pkg::BlendAlpha): Yosys 0.23 reads no
 // `import` statement.
 package zb_pkg;
@@ -24,7 +25,8 @@ package zb_pkg;
     BlendAdditive   = 3'd2,
     BlendCoverage   = 3'd3,
     BlendUnder      = 3'd4,
-    BlendAccumulate = 3'd5   // weighted blended OIT: the accumulation word, not the colour
+    BlendAccumulate = 3'd5,  // weighted blended OIT: the accumulation word, not the colour
+    BlendLayers     = 3'd6   // mlab-K: the pixel's layers (zb_layers), not the colour
   } blend_mode_e;
 
   // The pass state register; the first field is the most significant.

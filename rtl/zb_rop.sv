@@ -11,6 +11,7 @@
 //   M..X8    zb_weight: fragment side of the accumulate blend: depth weight, w, the terms
 //   X5..X11  zb_color: colour read at edge E5, blend (zb_blend, 4 stages), write at edge E11
 //   X5..X11  zb_accum: the accumulation word, read and written as the colour (accumulate mode)
+//   X5..X11  zb_layers: mlab-K's layers, read and written as the colour (layers mode; LAYERS)
 // This module holds the pass state, M, the pipeline's valid, address and pass bits (arrays
 // indexed by stage), the counters and the assertions that span stages.
 // A fragment issues at least Span = 4 cycles after an older one to its pixel, so every read
@@ -34,15 +35,18 @@ module zb_rop
   parameter int WEIGHT_BITS = 4,   // depth weight's range, 0..16
   parameter bit TILE_OPS   = 1'b1, // the tile operations: copy, the resolves (docs/rtl.md)
   parameter int DEPTH_GEN  = 2,    // TILE_OPS: generation bits of the renamed depth banks
+  parameter int LAYERS     = 0,    // mlab-K's layers a pixel, 1..8 (TILE_OPS); 0: no layers unit
   localparam int AddrW     = $clog2(TILE_W * TILE_H),
   localparam int BeatAW    = $clog2(TILE_W * TILE_H / BEAT),
   localparam int CovW      = $clog2(COV_SAMPLES + 1),  // coverage count 0..N
-  localparam int AccW      = 4 * ACC_BITS + REV_BITS   // {r, acc_A, acc_B, acc_G, acc_R}
+  localparam int AccW      = 4 * ACC_BITS + REV_BITS,  // {r, acc_A, acc_B, acc_G, acc_R}
+  localparam int LayW      = LAYERS > 0 ? LAYERS * (DEPTH_BITS + 32) : 1  // a pixel's layers
 ) (
   input  logic                  clk_i,
   input  logic                  rst_ni,
   input  logic                  state_we_i,
   input  zb_pkg::pass_state_t   state_i,
+  input  logic [2:0]            state_layers_i,  // the pass state's K - 1 (layers mode; LAYERS)
   input  logic [15:0]           tile_x0_i,
   input  logic [15:0]           tile_y0_i,
   input  logic                  frag_valid_i,
@@ -61,6 +65,9 @@ module zb_rop
   // tile_resolve_i shows the colour beat resolved under lane 0 of tile_wcolor_i (TILE_OPS).
   // With a read, tile_wboit_i shows the colour beat resolved from the accumulation beat read
   // with it (docs/datapath.md "Resolve (frame operation 4)"; TILE_OPS).
+  // With a read, tile_mlab_i shows the colour beat with the layers read with it composited over
+  // it (docs/datapath.md "8. Layers"; LAYERS); with a fast clear, it empties the layers plane
+  // too: their only port operations (the layers never cross the port).
   // With a fast clear of depth (not of peel), tile_copy_i makes the depth plane the peel plane
   // and clears the other bank as depth: a copy and a clear, renamed (TILE_OPS).
   input  logic                       tile_req_i,
@@ -69,6 +76,7 @@ module zb_rop
   input  logic                       tile_copy_i,
   input  logic                       tile_resolve_i,
   input  logic                       tile_wboit_i,
+  input  logic                       tile_mlab_i,
   input  zb_pkg::planes_t            tile_planes_i,
   input  logic [BeatAW-1:0]          tile_addr_i,
   input  logic [BEAT*32-1:0]         tile_wcolor_i,
@@ -109,7 +117,9 @@ module zb_rop
   output logic                  mon_cwe_o,
   output logic [31:0]           mon_wcolor_o,
   output logic                  mon_awe_o,
-  output logic [AccW-1:0]       mon_wacc_o
+  output logic [AccW-1:0]       mon_wacc_o,
+  output logic                  mon_lwe_o,      // layers mode: the layers word written at X11
+  output logic [LayW-1:0]       mon_wlayers_o
 );
 
   localparam int XW    = $clog2(TILE_W);
@@ -140,6 +150,9 @@ module zb_rop
   if (WEIGHT_BITS < 0 || WEIGHT_BITS > 16) begin : g_bad_weight
     `ZB_PARAM_ERROR("zb_rop: WEIGHT_BITS must be 0..16");
   end
+  if (LAYERS < 0 || LAYERS > 8 || (LAYERS > 0 && !TILE_OPS)) begin : g_bad_layers
+    `ZB_PARAM_ERROR("zb_rop: LAYERS must be 0..8, and 0 without TILE_OPS");
+  end
 `endif
 
   // ---------------------------------------------------------------------------------------
@@ -148,8 +161,10 @@ module zb_rop
   zb_pkg::pass_state_t state_q;
   logic                st_cov;  // coverage mode (docs/datapath.md "Coverage blend")
   logic                st_acc;  // accumulate mode (docs/datapath.md "Accumulate blend")
+  logic                st_lay;  // layers mode (docs/datapath.md "8. Layers")
   assign st_cov = state_q.blend == zb_pkg::BlendCoverage;
   assign st_acc = state_q.blend == zb_pkg::BlendAccumulate;
+  assign st_lay = LAYERS > 0 && state_q.blend == zb_pkg::BlendLayers;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -383,11 +398,12 @@ module zb_rop
   // tile_resolve_i puts the beat under the background its cycle's lane 0 carries (zb_resolve),
   // one with tile_wboit_i makes it from the accumulation beat (zb_resolve_wboit).
   // ---------------------------------------------------------------------------------------
-  logic [BEAT*32-1:0] color_lanes;
+  logic [BEAT*32-1:0]   color_lanes;
+  logic [BEAT*LayW-1:0] layers_lanes;  // the layers plane's beat, for the resolve
   if (TILE_OPS) begin : g_resolve
     logic               resolve_q, wboit_q;
     logic [31:0]        bg_q;
-    logic [BEAT*32-1:0] color_under;
+    logic [BEAT*32-1:0] color_under, color_wboit;
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         resolve_q <= 1'b0;
@@ -416,15 +432,40 @@ module zb_rop
       .en_i   (wboit_q),
       .color_i(color_under),
       .acc_i  (tile_racc_o),
-      .color_o(tile_rcolor_o)
+      .color_o(color_wboit)
     );
+    if (LAYERS > 0) begin : g_mlab
+      logic mlab_q;
+      always_ff @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) begin
+          mlab_q <= 1'b0;
+        end else begin
+          mlab_q <= tile_req_i & ~tile_we_i & tile_mlab_i;
+        end
+      end
+      zb_resolve_layers #(
+        .BEAT      (BEAT),
+        .DEPTH_BITS(DEPTH_BITS),
+        .LAYERS    (LAYERS)
+      ) u_resolve_layers (
+        .en_i    (mlab_q),
+        .color_i (color_wboit),
+        .layers_i(layers_lanes),
+        .color_o (tile_rcolor_o)
+      );
+    end else begin : g_no_mlab
+      assign tile_rcolor_o = color_wboit;
+      logic unused_mlab;
+      assign unused_mlab = ^{tile_mlab_i, layers_lanes};
+    end
   end else begin : g_no_resolve
     assign tile_rcolor_o = color_lanes;
     logic unused_ops;
-    assign unused_ops = ^{tile_copy_i, tile_resolve_i, tile_wboit_i};
+    assign unused_ops = ^{tile_copy_i, tile_resolve_i, tile_wboit_i, tile_mlab_i, layers_lanes};
   end
 
   zb_color #(
+    .LAYERS_ON  (LAYERS > 0),
     .WORDS      (Words),
     .BEAT       (BEAT),
     .COV_SAMPLES(COV_SAMPLES),
@@ -500,6 +541,59 @@ module zb_rop
     .x11_awe_o   (mon_awe_o),
     .x11_wacc_o  (mon_wacc_o)
   );
+
+  // ---------------------------------------------------------------------------------------
+  // X5..X11: mlab-K's layers (zb_layers), in the builds that have them.
+  // ---------------------------------------------------------------------------------------
+  if (LAYERS > 0) begin : g_layers
+    logic [2:0] k_m1_q;  // the pass state's K - 1, loaded with it
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        k_m1_q <= '0;
+      end else if (state_we_i) begin
+        k_m1_q <= state_layers_i;
+      end
+    end
+    zb_layers #(
+      .WORDS     (Words),
+      .BEAT      (BEAT),
+      .DEPTH_BITS(DEPTH_BITS),
+      .LAYERS    (LAYERS)
+    ) u_layers (
+      .clk_i         (clk_i),
+      .rst_ni        (rst_ni),
+      .layers_mode_i (st_lay),
+      .color_mask_i  (state_q.color_mask),
+      .k_m1_i        (k_m1_q),
+      .tile_req_i    (tile_req_i),
+      .tile_we_i     (tile_we_i),
+      .tile_clear_i  (tile_clear_i),
+      .tile_en_i     (tile_mlab_i),
+      .tile_addr_i   (tile_addr_i),
+      .tile_rlayers_o(layers_lanes),
+      .m_valid_i     (m_valid_q),
+      .m_z_i         (m_z_q),
+      .x5_valid_i    (x_valid_q[5]),
+      .x6_valid_i    (x_valid_q[6]),
+      .x10_valid_i   (x_valid_q[10]),
+      .x11_valid_i   (x_valid_q[11]),
+      .x5_addr_i     (x_addr_q[5]),
+      .x6_addr_i     (x_addr_q[6]),
+      .x10_addr_i    (x_addr_q[10]),
+      .x11_addr_i    (x_addr_q[11]),
+      .x10_pass_i    (x_pass_q[10]),
+      .x11_pass_i    (x_pass_q[11]),
+      .x5_p_i        (x5_p),
+      .x11_lwe_o     (mon_lwe_o),
+      .x11_wlayers_o (mon_wlayers_o)
+    );
+  end else begin : g_no_layers
+    assign layers_lanes  = '0;
+    assign mon_lwe_o     = 1'b0;
+    assign mon_wlayers_o = '0;
+    logic unused_layers;
+    assign unused_layers = ^{st_lay, state_layers_i};
+  end
 
   assign busy_o = i_busy | w_busy | m_valid_q | (|x_valid_q);
 
@@ -622,20 +716,28 @@ module zb_rop
   // The tile operations ride on a tile read (docs/rtl.md "Tile operations"), or a renamed
   // copy on a fast clear of depth alone among the depth banks.
   TileOpOnRead: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      (tile_resolve_i || tile_wboit_i || (tile_copy_i && !tile_clear_i)) |->
+      (tile_resolve_i || tile_wboit_i || (tile_mlab_i && !tile_clear_i) ||
+       (tile_copy_i && !tile_clear_i)) |->
       (tile_req_i && !tile_we_i));
   OneResolve: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      !(tile_resolve_i && tile_wboit_i));
+      $onehot0({tile_resolve_i, tile_wboit_i, tile_mlab_i}));
+  // The layers never cross the port: no load with tile_mlab_i.
+  LayersNotLoaded: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (tile_req_i && tile_we_i) |-> !tile_mlab_i);
   RenameOnClear: assert property (@(posedge clk_i) disable iff (!rst_ni)
       (tile_copy_i && tile_clear_i) |->
-      (!tile_req_i && !tile_resolve_i && !tile_wboit_i && tile_planes_i.depth &&
+      (!tile_req_i && !tile_resolve_i && !tile_wboit_i && !tile_mlab_i && tile_planes_i.depth &&
        !tile_planes_i.peel));
   RenamedCopy: cover property (@(posedge clk_i) disable iff (!rst_ni) tile_copy_i && tile_clear_i);
   TileOpsPresent: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      !TILE_OPS |-> !(tile_copy_i || tile_resolve_i || tile_wboit_i));
-  // Only the six blend codes are loaded.
+      !TILE_OPS |-> !(tile_copy_i || tile_resolve_i || tile_wboit_i || tile_mlab_i));
+  LayersPresent: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      LAYERS == 0 |-> !(tile_mlab_i || (state_we_i && state_i.blend == zb_pkg::BlendLayers)));
+  // Only the seven blend codes are loaded, and K within the unit's layers.
   BlendCodeValid: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      state_we_i |-> (state_i.blend <= zb_pkg::BlendAccumulate));
+      state_we_i |-> (state_i.blend <= zb_pkg::BlendLayers));
+  LayersWithinUnit: assert property (@(posedge clk_i) disable iff (!rst_ni)
+      (state_we_i && state_i.blend == zb_pkg::BlendLayers) |-> (32'(state_layers_i) < LAYERS));
 `endif
 `endif
 

@@ -28,8 +28,9 @@ std::string state_text(const RopState& s) {
   std::ostringstream o;
   o << "depth_test=" << s.depth_test << " func=" << to_string(s.depth_func)
     << " depth_write=" << s.depth_write << " blend=" << to_string(s.blend)
-    << " color_mask=" << hex(s.color_mask, 1) << " peel_test=" << s.peel_test
-    << " (packed " << hex(pack_state(s), 4) << ")";
+    << " color_mask=" << hex(s.color_mask, 1) << " peel_test=" << s.peel_test;
+  if (s.blend == BlendMode::kLayers) o << " layers=" << int(s.layers);
+  o << " (packed " << hex(pack_state(s), 4) << ")";
   return o.str();
 }
 
@@ -104,6 +105,7 @@ PassStats Cosim::end_pass() {
     ++passes_;
     report_divergence(*scoreboard_.first());
   }
+  if (rtl_.pending()) return PassStats{};  // a layers pass waits for its resolve (RtlRop::end_pass)
   check_group({r});
   return r;
 }
@@ -147,7 +149,8 @@ void Cosim::compare_frames() {
   for (size_t i = 0; i < gf.color.size(); ++i)
     if (gf.color[i] != rf.color[i] || gf.depth[i] != rf.depth[i] ||
         gf.coverage[i] != rf.coverage[i] || gf.peel[i] != rf.peel[i] ||
-        gf.accum_at(i) != rf.accum_at(i) || gf.reveal_at(i) != rf.reveal_at(i)) {
+        gf.accum_at(i) != rf.accum_at(i) || gf.reveal_at(i) != rf.reveal_at(i) ||
+        gf.layers_at(i) != rf.layers_at(i)) {
       if (differing++ == 0) first = i;
     }
   pixels_compared_ += gf.color.size();

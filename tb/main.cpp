@@ -176,8 +176,11 @@ void add_options(CLI::App& app, Config& c, Args& a) {
                  "bit 0), window (the issue window lets a fragment pass an older one to its "
                  "pixel), accum (the accumulation word's bypass is never taken), copy (the tile's copy "
                  "of depth to peel flips a bit), resolve (the store's resolve does not "
-                 "saturate) or resolve-wboit (the store's resolve of the accumulation truncates)")
-      ->check(CLI::IsMember({"blend", "window", "accum", "copy", "resolve", "resolve-wboit"}))
+                 "saturate), resolve-wboit (the store's resolve of the accumulation truncates), "
+                 "layers (the layers word's bypass is never taken) or resolve-layers (the "
+                 "store's resolve composites the layers back to front)")
+      ->check(CLI::IsMember({"blend", "window", "accum", "copy", "resolve", "resolve-wboit",
+                             "layers", "resolve-layers"}))
       ->capture_default_str();
 #endif
 #ifdef ZB_TB_MUT  // zblend_tb_mut: the RTL is Yosys's mutant netlist (docs/mutation.md)
@@ -212,6 +215,8 @@ void check_args(const CLI::App& app, Config& c, const Args& a) {
   if (a.defect == "copy") plusargs.push_back("+zb_bug_copy");
   if (a.defect == "resolve") plusargs.push_back("+zb_bug_resolve");
   if (a.defect == "resolve-wboit") plusargs.push_back("+zb_bug_resolve_wboit");
+  if (a.defect == "layers") plusargs.push_back("+zb_bug_layers");
+  if (a.defect == "resolve-layers") plusargs.push_back("+zb_bug_resolve_layers");
   if (a.mutant) plusargs.push_back(fmt::format("+zb_mutant={}", a.mutant));
   // The mismatch waveform's directory is made only if a mismatch writes it.
   cli::check_outputs({{"--mismatch-fst", c.cosim.mismatch_fst, ".fst"}});

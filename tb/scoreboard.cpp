@@ -18,7 +18,8 @@ bool same(RetireStage stage, const PixelWrites& r, const PixelWrites& g) {
     return r.depth == g.depth && (!r.depth || r.z == g.z) && r.coverage == g.coverage &&
            (!r.coverage || r.cov == g.cov);
   return r.color == g.color && (!r.color || r.rgba == g.rgba) && r.accum == g.accum &&
-         (!r.accum || (r.acc == g.acc && r.reveal == g.reveal));
+         (!r.accum || (r.acc == g.acc && r.reveal == g.reveal)) && r.layers == g.layers &&
+         (!r.layers || r.lay == g.lay);
 }
 
 // Earlier in one model's time: tiles run in tile order, then by cycle.
@@ -35,7 +36,8 @@ std::string describe_writes(RetireStage stage, const PixelWrites& w, int depth_b
     return (w.depth ? fmt::format("depth 0x{:0{}x}", w.z, zd) : std::string("no depth")) +
            (w.coverage ? fmt::format(", coverage {}", w.cov) : std::string(", no coverage"));
   return (w.color ? "colour " + rgba_text(w.rgba) : std::string("no colour")) +
-         (w.accum ? ", accumulation " + accum_text(w.acc, w.reveal) : std::string());
+         (w.accum ? ", accumulation " + accum_text(w.acc, w.reveal) : std::string()) +
+         (w.layers ? ", " + layers_text(w.lay, depth_bits) : std::string());
 }
 
 void Scoreboard::begin_pass() {

@@ -13,7 +13,7 @@ RopState random_state(Rng& r) {
   s.depth_test = !r.chance(0.15);
   s.depth_func = DepthFunc(r.below(8));
   s.depth_write = r.chance(0.6);
-  s.blend = BlendMode(r.below(kBlendModes));  // replace .. accumulate
+  s.blend = BlendMode(r.below(kCoreBlendModes));  // replace .. accumulate
   const uint32_t m = r.below(4);
   s.color_mask = m == 0 ? uint8_t(r.below(16)) : uint8_t(kMaskRgba);
   s.peel_test = r.chance(0.3);

@@ -48,7 +48,7 @@ Tally suite_random(const Config& c) {
       }
       // The first iteration also draws every blend mode with every colour mask, a short pass
       // each: random states reach a given pair once in 320 passes.
-      for (unsigned b = 0; it == 0 && b < kBlendModes; ++b)
+      for (unsigned b = 0; it == 0 && b < kCoreBlendModes; ++b)
         for (uint8_t m = 0; m < 16; ++m) {
           RopState st = random_state(r);
           st.blend = BlendMode(b);

@@ -15,12 +15,12 @@ namespace zb::tb {
 namespace {
 
 constexpr int kDepthBins = 9;  // test off, then the eight functions
-constexpr int kStates = kDepthBins * 2 * kBlendModes * 16 * 2;
+constexpr int kStates = kDepthBins * 2 * kCoreBlendModes * 16 * 2;
 
 RopState state_of(int i) {
   RopState st;
-  const int peel = i % 2, mask = i / 2 % 16, blend = i / 32 % kBlendModes;
-  const int write = i / (32 * kBlendModes) % 2, depth = i / (64 * kBlendModes);
+  const int peel = i % 2, mask = i / 2 % 16, blend = i / 32 % kCoreBlendModes;
+  const int write = i / (32 * kCoreBlendModes) % 2, depth = i / (64 * kCoreBlendModes);
   st.depth_test = depth != 0;
   st.depth_func = DepthFunc(depth == 0 ? 1 : depth - 1);
   st.depth_write = write != 0;

@@ -85,6 +85,11 @@ const std::vector<Suite>& suites() {
        "accumulate passes (weighted blended OIT) with same-pixel fragments at issue distances "
        "4 to 7 (bypass, forwarding), runs and random ones; resolves between",
        suite_accum},
+      {"layers",
+       "layers passes (mlab-K, K = 1 to LAYERS) with same-pixel fragments at issue distances 4 "
+       "to 7, runs that fill and merge a pixel's layers, equal depths and colour words; each "
+       "resolved on the tile's store",
+       suite_layers},
       {"blend",
        "alpha and additive over all 2^24 (s, a, d), 2^16 (a, d) on A; coverage over all "
        "(k, s, d)",

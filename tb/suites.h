@@ -78,6 +78,7 @@ Tally suite_window(const Config& c);  // directed issue-window streams
 Tally suite_tiles(const Config& c);   // fast-clear bookkeeping across passes and tiles
 Tally suite_clears(const Config& c);  // a store's write-back meeting the next clear
 Tally suite_accum(const Config& c);   // accumulate mode at same-pixel distances 4..7
+Tally suite_layers(const Config& c);  // layers mode (mlab-K) at same-pixel distances 4..7
 Tally suite_blend(const Config& c);   // the blend unit, exhaustively, through the pipeline
 Tally suite_states(const Config& c);  // every pass state of the coverage plan's cross
 Tally suite_port(const Config& c);    // the tile port alone against a model of the planes

@@ -17,8 +17,10 @@ namespace {
 constexpr char kMagic[8] = {'Z', 'B', 'T', 'R', 'A', 'C', 'E', '\0'};
 // 2: coverage samples in the header, coverage per fragment; 3: 13-bit pass state (3-bit blend,
 // peel_test), frame operations before each pass and after the last; 4: the accumulation,
-// revealage and weight widths in the header (blend 5, frame operation 4).
-constexpr uint32_t kVersion = 4;
+// revealage and weight widths in the header (blend 5, frame operation 4); 5: 16-bit pass
+// state (layers, blend 6, frame operation 5). Version 4 files read as they are.
+constexpr uint32_t kVersion = 5;
+constexpr uint32_t kOldestVersion = 4;
 constexpr uint32_t kMaxFrameOps = 64;
 constexpr uint32_t kMaxPasses = 1024;
 constexpr uint32_t kMaxNameLength = 256;
@@ -148,8 +150,9 @@ Trace parse_trace(const std::string& bytes, const std::string& name) {
   if (r.get_string(sizeof kMagic, "the magic 'ZBTRACE'") != std::string(kMagic, sizeof kMagic))
     r.fail(0, "not a zblend trace (bad magic)");
   const size_t at_version = r.offset();
-  if (const uint64_t v = r.get(4, "the version"); v != kVersion)
-    r.fail(at_version, fmt::format("version {} is not supported (this zblend reads {})", v, kVersion));
+  if (const uint64_t v = r.get(4, "the version"); v < kOldestVersion || v > kVersion)
+    r.fail(at_version, fmt::format("version {} is not supported (this zblend reads {} to {})", v,
+                                   kOldestVersion, kVersion));
   Trace t;
   const size_t at_size = r.offset();
   const uint64_t w = r.get(4, "the width"), h = r.get(4, "the height");

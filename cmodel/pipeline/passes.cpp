@@ -110,6 +110,7 @@ std::vector<PassPlan> make_plans() {
   plans.push_back(make_hidden_line_plan(false, kEdgeOffset));
   plans.push_back(make_hidden_line_plan(true, kEdgeOffset));
   for (int k : kDepthPeelLayers) plans.push_back(make_depth_peel_plan(k));
+  for (int k : kMlabLayers) plans.push_back(make_mlab_plan(k));
   return plans;
 }
 
@@ -196,6 +197,26 @@ PassPlan make_depth_peel_plan(int k) {
   plan.passes.push_back(opaque_depth);
   plan.passes.push_back(pass("opaque-under", PrimFilter::kOpaque, visible));
   plan.final_ops = {FrameOp{FrameOpKind::kResolveUnder, Rgba8{}, 0, true}};
+  return plan;
+}
+
+// Salvi and Vaidyanathan 2014, "Multi-Layer Alpha Blending", kept in tile memory as Bjorge et
+// al. 2014 do: the opaque pass, then every transparent fragment in front of the opaque depth
+// inserted into the pixel's K layers by depth, the two farthest merged when a K+1-th arrives;
+// the resolve composites the layers front to back over the opaque colour, on the tile's way
+// out. Exact (as depth-peel-K) for up to K layers a pixel, in any submit order.
+PassPlan make_mlab_plan(int k) {
+  PassPlan plan;
+  plan.name = "mlab-" + std::to_string(k);
+  plan.source = "Salvi and Vaidyanathan 2014";
+  plan.description = "opaque; transparent inserted by depth into " + std::to_string(k) +
+                     " layers a pixel, the two farthest merged beyond " + std::to_string(k) +
+                     ", z-write off; resolve: the layers front to back over the opaque colour";
+  RopState insert = less(false, BlendMode::kLayers);
+  insert.layers = uint8_t(k);
+  plan.passes = {pass("opaque", PrimFilter::kOpaque, less(true, BlendMode::kReplace)),
+                 pass("transparent-layers", PrimFilter::kTransparent, insert)};
+  plan.final_ops = {FrameOp{FrameOpKind::kResolveLayers, Rgba8{}, 0, false}};
   return plan;
 }
 

@@ -21,6 +21,11 @@ struct PassPlan {
 constexpr int kDepthPeelLayers[] = {2, 4, 8};
 PassPlan make_depth_peel_plan(int k);
 
+// mlab-K, one-pass transparency in K layers a pixel (docs/datapath.md "8. Layers"): the
+// plans registered are K = 2, 4 and 8; any K of 1..kMaxLayers is built by make_mlab_plan.
+constexpr int kMlabLayers[] = {2, 4, 8};
+PassPlan make_mlab_plan(int k);
+
 // hidden-line's edge passes: depth offset (raster.md "Depth offset"), visible and hidden colours.
 // The polygon offset the plans had first: 2 units + 1.0 x the slope of every face at either end,
 // unclamped; on grazing faces it lifts edges through nearer faces (the silhouette leak).

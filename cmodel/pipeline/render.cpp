@@ -108,9 +108,12 @@ std::vector<Fragment> pass_fragments(const RasterizedScene& rs, const PassState&
 }
 
 Traffic pass_traffic(const PassStats& s, const RopState& state, const Viewport& vp) {
-  const uint64_t color = state.blend == BlendMode::kAccumulate
-                             ? uint64_t(4 * vp.wboit.acc_bits + vp.wboit.rev_bits + 7) / 8
-                             : 4;
+  const uint64_t color =
+      state.blend == BlendMode::kAccumulate
+          ? uint64_t(4 * vp.wboit.acc_bits + vp.wboit.rev_bits + 7) / 8
+      : state.blend == BlendMode::kLayers
+          ? (uint64_t(state.layers) * uint64_t(vp.depth_bits + 32) + 7) / 8  // the layers word
+          : 4;
   const uint64_t depth = uint64_t(vp.depth_bits + 7) / 8;
   return {s.color_reads * color + s.depth_reads * depth,
           s.color_writes * color + s.depth_writes * depth};

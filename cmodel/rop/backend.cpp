@@ -42,6 +42,11 @@ void apply_frame_op(Framebuffer& fb, const FrameOp& op) {
         fb.color[i] = resolve_wboit(fb.color[i], fb.accum_at(i), fb.reveal_at(i), one);
       return;
     }
+    case FrameOpKind::kResolveLayers:
+      for (size_t i = 0; i < fb.layers.size(); ++i) fb.color[i] = resolve_layers(fb.layers[i], fb.color[i]);
+      fb.layers.clear();
+      fb.layers.shrink_to_fit();
+      return;
   }
   throw std::invalid_argument("frame op: unknown kind " + std::to_string(unsigned(op.kind)));
 }
@@ -53,6 +58,7 @@ const char* to_string(FrameOpKind k) {
     case FrameOpKind::kCopyDepthToPeel: return "copy-depth-to-peel";
     case FrameOpKind::kResolveUnder: return "resolve-under";
     case FrameOpKind::kResolveWboit: return "resolve-wboit";
+    case FrameOpKind::kResolveLayers: return "resolve-layers";
   }
   return "?";
 }

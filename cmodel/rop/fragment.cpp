@@ -6,7 +6,8 @@ uint16_t pack_state(const RopState& s) {
   return static_cast<uint16_t>((s.depth_test ? 1u : 0u) | (unsigned(s.depth_func) & 7u) << 1 |
                                (s.depth_write ? 1u : 0u) << 4 | (unsigned(s.blend) & 7u) << 5 |
                                (unsigned(s.color_mask) & 15u) << 8 |
-                               (s.peel_test ? 1u : 0u) << 12);
+                               (s.peel_test ? 1u : 0u) << 12 |
+                               ((unsigned(s.layers) - 1u) & 7u) << 13);
 }
 
 bool unpack_state(uint16_t bits, RopState& out) {
@@ -19,6 +20,7 @@ bool unpack_state(uint16_t bits, RopState& out) {
   out.blend = static_cast<BlendMode>(blend);
   out.color_mask = static_cast<uint8_t>((bits >> 8) & 15u);
   out.peel_test = (bits >> 12) & 1u;
+  out.layers = static_cast<uint8_t>(((bits >> 13) & 7u) + 1u);
   return true;
 }
 
@@ -44,6 +46,7 @@ const char* to_string(BlendMode b) {
     case BlendMode::kCoverage: return "coverage";
     case BlendMode::kUnder: return "under";
     case BlendMode::kAccumulate: return "accumulate";
+    case BlendMode::kLayers: return "layers";
   }
   return "?";
 }

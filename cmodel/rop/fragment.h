@@ -39,8 +39,14 @@ enum class BlendMode : uint8_t {
                   // C' = min(255, C_d + m(m(s, a), t)) per RGB, A' = min(255, A_d + m(a, t))
   kAccumulate = 5,  // weighted blended OIT into the accumulation and revealage planes
                     // (docs/datapath.md "7. Accumulate blend"); the colour plane is kept
+  kLayers = 6,      // mlab-K: inserted into the pixel's K layers (docs/datapath.md "8. Layers");
+                    // the colour plane is kept
 };
-constexpr unsigned kBlendModes = 6;
+constexpr unsigned kBlendModes = 7;
+// The blends before layers (replace .. accumulate): the random stimulus, the states suites and
+// the kit's core draw from these; layers, a unit of its own (off in some builds, a feature of
+// the kit's profile), has its own tests.
+constexpr unsigned kCoreBlendModes = 6;
 
 // Colour write mask bits.
 enum : uint8_t { kMaskR = 1, kMaskG = 2, kMaskB = 4, kMaskA = 8, kMaskRgba = 15 };
@@ -55,6 +61,8 @@ struct RopState {
   // Second depth compare (depth peeling): the fragment passes only if also z > peel[x, y],
   // the frame's peel plane (read-only during a pass). Not used in coverage mode.
   bool peel_test = false;
+  // Layers a pixel keeps in layers mode (mlab-K), 1..kMaxLayers; not used in other modes.
+  uint8_t layers = 1;
 };
 
 // A pass draws coverage fragments (every pixel with a covered sample, Fragment::coverage the
@@ -90,8 +98,9 @@ enum class FrameOpKind : uint8_t {
   kCopyDepthToPeel = 2,  // peel := depth
   kResolveUnder = 3,     // colour := min(255, C + m(value, 255 - A)) per channel (value = bg)
   kResolveWboit = 4,     // colour := the accumulation's average over it by the revealage
+  kResolveLayers = 5,    // colour := the layers front to back over it; the layers emptied
 };
-constexpr unsigned kFrameOpKinds = 5;
+constexpr unsigned kFrameOpKinds = 6;
 
 struct FrameOp {
   FrameOpKind kind = FrameOpKind::kClearColor;
@@ -121,10 +130,10 @@ struct PassState {
 
 // The pass state register as the RTL receives it (docs/datapath.md, "The pass state"):
 // [0] depth_test, [3:1] depth_func, [4] depth_write, [7:5] blend, [11:8] color_mask,
-// [12] peel_test.
-constexpr int kStateBits = 13;
+// [12] peel_test, [15:13] layers - 1.
+constexpr int kStateBits = 16;
 uint16_t pack_state(const RopState& s);
-// False when `bits` is not a valid state (bits above kStateBits set, or a blend code above 5).
+// False when `bits` is not a valid state (bits above kStateBits set, or a blend code above 6).
 bool unpack_state(uint16_t bits, RopState& out);
 
 const char* to_string(DepthFunc f);

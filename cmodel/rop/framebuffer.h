@@ -9,6 +9,7 @@
 
 #include "blend.h"
 #include "fixed.h"
+#include "layers.h"
 
 namespace zb {
 
@@ -33,6 +34,10 @@ struct Framebuffer {
   WboitFormat wboit;
   std::vector<std::array<uint32_t, 4>> accum;
   std::vector<uint32_t> reveal;
+  // mlab-K's layers (docs/datapath.md "8. Layers"), per pixel, nearest first; written only by
+  // layers passes and emptied by their resolve (ResolveLayers). Allocated by the first write
+  // (touch_layers), as the accumulation is. Read them through layers_at.
+  std::vector<PixelLayers> layers;
 
   Framebuffer() = default;
   Framebuffer(int w, int h, int bits, Rgba8 clear_color,
@@ -51,6 +56,10 @@ struct Framebuffer {
     reveal.assign(static_cast<size_t>(width) * height, wboit_reveal_one(wboit.rev_bits));
   }
 
+  void touch_layers() {
+    if (layers.empty()) layers.assign(static_cast<size_t>(width) * height, PixelLayers{});
+  }
+
   size_t index(int x, int y) const { return static_cast<size_t>(y) * width + x; }
   Rgba8 color_at(int x, int y) const { return color[index(x, y)]; }
   uint32_t depth_at(int x, int y) const { return depth[index(x, y)]; }
@@ -62,6 +71,7 @@ struct Framebuffer {
   uint32_t reveal_at(size_t i) const {
     return reveal.empty() ? wboit_reveal_one(wboit.rev_bits) : reveal[i];
   }
+  PixelLayers layers_at(size_t i) const { return layers.empty() ? PixelLayers{} : layers[i]; }
 };
 
 }  // namespace zb

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include <fmt/core.h>
+
 #include "blend.h"
 
 namespace zb {
@@ -57,6 +59,18 @@ int insert_layer(PixelLayers& px, int k, const Layer& f) {
   px.layer[size_t(at)] = f;
   px.layer[size_t(k - 1)] = merge_layers(px.layer[size_t(k - 1)], last);
   return at;
+}
+
+std::string layers_text(const PixelLayers& px, int depth_bits) {
+  if (px.n == 0) return "no layers";
+  std::string s = fmt::format("{} layer{}:", px.n, px.n == 1 ? "" : "s");
+  const int zd = (depth_bits + 3) / 4;
+  for (int i = 0; i < px.n; ++i) {
+    const Layer& l = px.layer[size_t(i)];
+    s += fmt::format("{} z 0x{:0{}x} p({},{},{}) a {}", i ? ";" : "", l.z, zd, l.p.r, l.p.g, l.p.b,
+                     l.p.a);
+  }
+  return s;
 }
 
 Rgba8 resolve_layers(const PixelLayers& px, Rgba8 opaque) {

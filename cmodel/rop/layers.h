@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 
 #include "fixed.h"
 
@@ -35,7 +36,13 @@ Layer merge_layers(const Layer& front, const Layer& back);
 struct PixelLayers {
   std::array<Layer, kMaxLayers> layer{};
   int n = 0;
+  // Equal layers in use, and every slot beyond them as well (empty: zero).
+  bool operator==(const PixelLayers& o) const { return n == o.n && layer == o.layer; }
+  bool operator!=(const PixelLayers& o) const { return !(*this == o); }
 };
+
+// "2 layers: z 0x0f4240 p(12,200,3) a 120; z ..." ("no layers"), depths in depth_bits' hex digits.
+std::string layers_text(const PixelLayers& px, int depth_bits);
 
 // Inserts `f` (alpha above 0; an alpha of 0 changes nothing) into `px`, which holds at most k
 // (1..kMaxLayers) layers: at its place in layer_before's order; with k layers already, the two

@@ -20,6 +20,7 @@ Rgba8 blend(BlendMode mode, Rgba8 s, Rgba8 d) {
               blend_additive(s.b, s.a, d.b), blend_additive(s.a, s.a, d.a)};
     case BlendMode::kCoverage:  // needs the depths and coverages: composite_coverage
     case BlendMode::kAccumulate:  // writes the accumulation planes: accumulate_wboit
+    case BlendMode::kLayers:      // writes the layers: insert_layer
       return s;
     case BlendMode::kUnder:
       return {blend_under(s.r, s.a, d.r, d.a), blend_under(s.g, s.a, d.g, d.a),
@@ -118,6 +119,10 @@ void GoldenRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_c
 }
 
 void GoldenRop::begin_pass(const RopState& state) {
+  if (state.blend == BlendMode::kLayers && (state.layers < 1 || state.layers > kMaxLayers))
+    throw std::invalid_argument("golden: " + std::to_string(state.layers) +
+                                " layers a pixel: out of range (1.." +
+                                std::to_string(kMaxLayers) + ")");
   state_ = state;
   stats_ = PassStats{};
 }
@@ -166,6 +171,15 @@ PixelWrites GoldenRop::process(const Fragment& f) {
     fb_.accum[i] = w.acc = p.acc;
     fb_.reveal[i] = w.reveal = p.reveal;
     w.accum = true;
+    ++stats_.color_writes;
+    return w;
+  }
+  if (state_.blend == BlendMode::kLayers) {
+    // The layers word is read and written whole (an alpha of 0 writes it back unchanged).
+    fb_.touch_layers();
+    w.layer_at = insert_layer(fb_.layers[i], state_.layers, fragment_layer(f.z, f.color));
+    w.lay = fb_.layers[i];
+    w.layers = true;
     ++stats_.color_writes;
     return w;
   }

@@ -60,6 +60,9 @@ struct PixelWrites {
   Rgba8 rgba;         // the colour written, after the write mask
   std::array<uint32_t, 4> acc{};  // the accumulation written (R, G, B, A)
   uint32_t reveal = 0;            // the revealage written
+  bool layers = false;  // layers mode: the pixel's layers written
+  int layer_at = -1;    // where the fragment went: 0..K-1, K merged into the last, -1 none
+  PixelLayers lay;      // the layers written
 };
 
 // The four terms (R, G, B, A) an accumulate-mode fragment of depth z and colour c adds to the

@@ -216,6 +216,7 @@ module zb_conf_adapter #(
     .rst_ni,
     .state_we_i,
     .state_i           (state),
+    .state_layers_i    (3'b000),
     .tile_x0_i,
     .tile_y0_i,
     .frag_valid_i,
@@ -232,6 +233,7 @@ module zb_conf_adapter #(
     .tile_copy_i       (1'b0),
     .tile_resolve_i    (1'b0),
     .tile_wboit_i      (1'b0),
+    .tile_mlab_i       (1'b0),
     .tile_planes_i     (Planes),
     .tile_addr_i       (tile_addr),
     .tile_wcolor_i     (wcolor_q),
@@ -268,7 +270,9 @@ module zb_conf_adapter #(
     .mon_cwe_o         (ret_cwe_o),
     .mon_wcolor_o      (ret_wcolor_o),
     .mon_awe_o         (ret_awe_o),
-    .mon_wacc_o        (ret_wacc_o)
+    .mon_wacc_o        (ret_wacc_o),
+    .mon_lwe_o         (),
+    .mon_wlayers_o     ()
   );
 
   assign ret_d_pixel_o = 32'(mon_x4_addr);

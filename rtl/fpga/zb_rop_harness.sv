@@ -109,6 +109,7 @@ module zb_rop_harness #(
     .rst_ni            (rst_n_q),
     .state_we_i        (in_q[IStateWe]),
     .state_i           (in_q[IState +: 13]),
+    .state_layers_i    (3'b000),  // no layers unit
     .tile_x0_i         (in_q[IX0 +: 16]),
     .tile_y0_i         (in_q[IY0 +: 16]),
     .frag_valid_i      (in_q[IValid]),
@@ -125,6 +126,7 @@ module zb_rop_harness #(
     .tile_copy_i       (in_q[ICopy]),
     .tile_resolve_i    (in_q[IResolve]),
     .tile_wboit_i      (TILE_OPS ? in_q[IWboit] : 1'b0),
+    .tile_mlab_i       (1'b0),
     .tile_planes_i     (in_q[IPlanes +: 5]),
     .tile_addr_i       (in_q[IAddr +: BeatAW]),
     .tile_wcolor_i     (in_q[IWColor +: BEAT * 32]),
@@ -162,7 +164,9 @@ module zb_rop_harness #(
     .mon_cwe_o         (),
     .mon_wcolor_o      (),
     .mon_awe_o         (),
-    .mon_wacc_o        ()
+    .mon_wacc_o        (),
+    .mon_lwe_o         (),
+    .mon_wlayers_o     ()
   );
 
   logic [4*X0W-1:0]    out0;

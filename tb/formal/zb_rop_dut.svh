@@ -69,12 +69,12 @@
     .WEIGHT_BITS(WEIGHT_BITS),
     .DEPTH_GEN  (DEPTH_GEN)
   ) dut (
-    .clk_i, .rst_ni, .state_we_i, .state_i, .tile_x0_i, .tile_y0_i, .frag_valid_i,
+    .clk_i, .rst_ni, .state_we_i, .state_i, .state_layers_i(3'b000), .tile_x0_i, .tile_y0_i, .frag_valid_i,
     .frag_ready_o(frag_ready),
     .frag_x_i, .frag_y_i, .frag_z_i, .frag_rgba_i, .frag_cov_i, .stall_i,
     .tile_req_i, .tile_we_i, .tile_clear_i, .tile_planes_i, .tile_addr_i, .tile_wcolor_i,
     // The tile operations (copy, resolve) are not in these proofs yet (docs/formal.md).
-    .tile_copy_i(1'b0), .tile_resolve_i(1'b0), .tile_wboit_i(1'b0),
+    .tile_copy_i(1'b0), .tile_resolve_i(1'b0), .tile_wboit_i(1'b0), .tile_mlab_i(1'b0),
     .tile_wdepth_i, .tile_wcov_i, .tile_wpeel_i, .tile_wacc_i,
     .tile_rcolor_o(), .tile_rdepth_o(), .tile_rcov_o(), .tile_rpeel_o(), .tile_racc_o(),
     .busy_o(busy),
@@ -93,5 +93,7 @@
     .mon_cwe_o      (mon_cwe),
     .mon_wcolor_o   (mon_wcolor),
     .mon_awe_o      (mon_awe),
-    .mon_wacc_o     (mon_wacc)
+    .mon_wacc_o     (mon_wacc),
+    .mon_lwe_o      (),
+    .mon_wlayers_o  ()
   );

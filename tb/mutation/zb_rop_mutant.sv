@@ -16,12 +16,14 @@ module zb_rop
   parameter int unsigned REV_BITS    = 8,
   parameter int unsigned WEIGHT_BITS = 4,
   parameter int unsigned DEPTH_GEN   = 2,
+  parameter int unsigned LAYERS      = 0,    // the driver's view; the netlist has no layers unit
   parameter int unsigned MUT_W       = 11   // mutsel's width: mutants 1 .. 2^MUT_W - 1
 ) (
   input  logic                  clk_i,
   input  logic                  rst_ni,
   input  logic                  state_we_i,
   input  zb_pkg::pass_state_t   state_i,
+  input  logic [2:0]            state_layers_i,
   input  logic [15:0]           tile_x0_i,
   input  logic [15:0]           tile_y0_i,
   input  logic                  frag_valid_i,
@@ -38,6 +40,7 @@ module zb_rop
   input  logic                  tile_copy_i,
   input  logic                  tile_resolve_i,
   input  logic                  tile_wboit_i,
+  input  logic                  tile_mlab_i,
   input  zb_pkg::planes_t       tile_planes_i,
   input  logic [$clog2(TILE_W * TILE_H / BEAT)-1:0] tile_addr_i,
   input  logic [BEAT*32-1:0]         tile_wcolor_i,
@@ -74,8 +77,13 @@ module zb_rop
   output logic                  mon_cwe_o,
   output logic [31:0]           mon_wcolor_o,
   output logic                  mon_awe_o,
-  output logic [4*ACC_BITS+REV_BITS-1:0] mon_wacc_o
+  output logic [4*ACC_BITS+REV_BITS-1:0] mon_wacc_o,
+  output logic                  mon_lwe_o,
+  output logic [(LAYERS > 0 ? LAYERS * (DEPTH_BITS + 32) : 1)-1:0] mon_wlayers_o
 );
+
+  assign mon_lwe_o     = 1'b0;
+  assign mon_wlayers_o = '0;
 
   logic [MUT_W-1:0] mutsel;
   initial begin
@@ -83,9 +91,10 @@ module zb_rop
   end
 
   zb_rop_mutants u_mutants (
-    .clk_i, .rst_ni, .state_we_i, .state_i, .tile_x0_i, .tile_y0_i, .frag_valid_i,
+    .clk_i, .rst_ni, .state_we_i, .state_i, .state_layers_i, .tile_x0_i, .tile_y0_i, .frag_valid_i,
     .frag_ready_o, .frag_x_i, .frag_y_i, .frag_z_i, .frag_rgba_i, .frag_cov_i, .stall_i,
-    .tile_req_i, .tile_we_i, .tile_clear_i, .tile_copy_i, .tile_resolve_i, .tile_wboit_i, .tile_planes_i,
+    .tile_req_i, .tile_we_i, .tile_clear_i, .tile_copy_i, .tile_resolve_i, .tile_wboit_i, .tile_mlab_i,
+    .tile_planes_i,
     .tile_addr_i, .tile_wcolor_i,
     .tile_wdepth_i, .tile_wcov_i, .tile_wpeel_i, .tile_wacc_i, .tile_rcolor_o, .tile_rdepth_o,
     .tile_rcov_o, .tile_rpeel_o, .tile_racc_o, .busy_o, .cnt_clear_i, .cnt_frag_in_o,
@@ -94,6 +103,6 @@ module zb_rop
     .cnt_color_writes_o, .cnt_stall_cycles_o, .cnt_cycles_o, .cnt_tile_loads_o,
     .cnt_tile_stores_o, .mon_x4_valid_o, .mon_x4_addr_o, .mon_dwe_o, .mon_wdepth_o, .mon_vwe_o,
     .mon_wcov_o, .mon_x11_valid_o, .mon_x11_addr_o, .mon_cwe_o, .mon_wcolor_o, .mon_awe_o,
-    .mon_wacc_o, .mutsel
+    .mon_wacc_o, .mon_lwe_o(), .mon_wlayers_o(), .mutsel
   );
 endmodule

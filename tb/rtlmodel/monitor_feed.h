@@ -51,6 +51,11 @@ class MonitorFeed {
     p.awe = t.mon_awe_o;
     lanes::Reader wacc(t.mon_wacc_o);
     p.wacc = lanes::get_accum(wacc);
+    p.lwe = t.mon_lwe_o;
+    if (p.lwe) {
+      lanes::Reader wlayers(t.mon_wlayers_o);
+      p.wlayers = lanes::get_layers(wlayers);
+    }
     return p;
   }
 

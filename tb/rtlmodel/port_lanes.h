@@ -95,6 +95,23 @@ void put_accum(Writer<Port>& p, const AccumWord& w) {
   p.put(w.reveal, kRev);
 }
 
+// A pixel's layers word: kRtlLayers slots {z, A, R, G, B} from bit 0 up (B lowest); n the
+// slots up to the last occupied one (A != 0).
+template <class Port>
+PixelLayers get_layers(Reader<Port>& r) {
+  PixelLayers px;
+  for (int j = 0; j < kRtlLayers; ++j) {
+    Layer& l = px.layer[size_t(j)];
+    l.p.b = uint8_t(r.get(8));
+    l.p.g = uint8_t(r.get(8));
+    l.p.r = uint8_t(r.get(8));
+    l.p.a = uint8_t(r.get(8));
+    l.z = r.get(kDepth);
+    if (l.p.a != 0) px.n = j + 1;
+  }
+  return px;
+}
+
 }  // namespace lanes
 
 // The beat the tile port read at the last edge (colour, depth, coverage, peel, accumulation).

@@ -17,7 +17,7 @@ namespace {
 
 constexpr int kBeats = kRtlTileW * kRtlTileH / kRtlBeat;
 constexpr const char* kPlaneNames[kTilePlanes] = {"colour", "depth", "coverage", "peel",
-                                                  "accumulation"};
+                                                  "accumulation", "layers"};
 
 constexpr int kDepthPlane = 1, kPeelPlane = 3;  // kPlaneDepth's and kPlanePeel's numbers
 
@@ -163,7 +163,7 @@ class Rules {
     return role_[size_t(p)];
   }
   std::array<Bank, kTilePlanes> banks_;
-  std::array<size_t, kTilePlanes> role_ = {0, 1, 2, 3, 4};  // plane p's bank
+  std::array<size_t, kTilePlanes> role_ = {0, 1, 2, 3, 4, 5};  // plane p's bank
 };
 
 class Stress {
@@ -289,6 +289,7 @@ class Stress {
     t.tile_copy_i = 0;
     t.tile_resolve_i = 0;
     t.tile_wboit_i = 0;
+    t.tile_mlab_i = 0;
     if (s.op != Op::kIdle) {
       put_beat(t, s.data);
       t.tile_planes_i = s.planes;

@@ -69,7 +69,7 @@ bool RetireMonitor::observe(const RetirePort& p, uint64_t tile_cycle, size_t acc
     go_ = take(RetireStage::kX4, p.x4_addr & mask, tile_cycle, p.x4_valid ? accepted : 0, w) &&
           go_;
   }
-  if (p.x11_valid || p.cwe || p.awe) {
+  if (p.x11_valid || p.cwe || p.awe || p.lwe) {
     PixelWrites w;
     w.color = p.cwe;
     w.rgba = p.cwe ? unpack_rgba(p.wcolor) : Rgba8{};
@@ -78,6 +78,8 @@ bool RetireMonitor::observe(const RetirePort& p, uint64_t tile_cycle, size_t acc
       w.acc = p.wacc.acc;
       w.reveal = p.wacc.reveal;
     }
+    w.layers = p.lwe;
+    if (p.lwe) w.lay = p.wlayers;
     go_ = take(RetireStage::kX11, p.x11_addr & mask, tile_cycle, p.x11_valid ? accepted : 0, w) &&
           go_;
   }

@@ -18,11 +18,14 @@ namespace zb {
 // zb_rop's mon_* outputs after a rising edge: the writes the planes take at the next one.
 struct RetirePort {
   bool x4_valid = false, dwe = false, vwe = false, x11_valid = false, cwe = false, awe = false;
+  bool lwe = false;
   uint32_t x4_addr = 0, wdepth = 0, wcov = 0, x11_addr = 0, wcolor = 0;
   AccumWord wacc;
+  PixelLayers wlayers;
 };
 
-// X4 writes depth and coverage, X11 colour or (accumulate mode) the accumulation word.
+// X4 writes depth and coverage, X11 colour, (accumulate mode) the accumulation word or (layers
+// mode) the layers.
 enum class RetireStage : uint8_t { kX4, kX11 };
 const char* to_string(RetireStage s);
 

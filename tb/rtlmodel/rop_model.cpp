@@ -142,6 +142,7 @@ void Sim::idle_inputs() {
   top->tile_we_i = 0;
   top->tile_clear_i = 0;
   top->tile_planes_i = 0;
+  top->tile_mlab_i = 0;
   top->cnt_clear_i = 0;
 }
 

@@ -5,8 +5,9 @@
 
 #if !defined(ZBLEND_RTL_DEPTH_BITS) || !defined(ZBLEND_RTL_COV_SAMPLES) || !defined(ZBLEND_RTL_TILE) || \
     !defined(ZBLEND_RTL_WINDOW) || !defined(ZBLEND_RTL_BEAT) || !defined(ZBLEND_RTL_ACC_BITS) || \
-    !defined(ZBLEND_RTL_REV_BITS) || !defined(ZBLEND_RTL_WEIGHT_BITS) || !defined(ZBLEND_VERILATOR_THREADS)
-#error "ZBLEND_RTL_DEPTH_BITS, _COV_SAMPLES, _TILE, _WINDOW, _BEAT, _ACC_BITS, _REV_BITS, _WEIGHT_BITS and ZBLEND_VERILATOR_THREADS come from CMake: link zbrtl_common"
+    !defined(ZBLEND_RTL_REV_BITS) || !defined(ZBLEND_RTL_WEIGHT_BITS) || !defined(ZBLEND_RTL_LAYERS) || \
+    !defined(ZBLEND_VERILATOR_THREADS)
+#error "ZBLEND_RTL_DEPTH_BITS, _COV_SAMPLES, _TILE, _WINDOW, _BEAT, _ACC_BITS, _REV_BITS, _WEIGHT_BITS, _LAYERS and ZBLEND_VERILATOR_THREADS come from CMake: link zbrtl_common"
 #endif
 
 #include "rop/fixed.h"
@@ -25,6 +26,9 @@ constexpr WboitFormat kRtlWboit{ZBLEND_RTL_ACC_BITS, ZBLEND_RTL_REV_BITS, ZBLEND
 // renamed and the depth banks' words carry a generation of this many bits (docs/rtl.md
 // "Renamed copies").
 constexpr int kRtlDepthGenBits = 2;
+// LAYERS: mlab-K's layers a pixel (docs/datapath.md "8. Layers"), the largest K the model runs
+// (the mutant netlist has no layers unit: RtlRop refuses layers passes there).
+constexpr int kRtlLayers = ZBLEND_RTL_LAYERS;
 constexpr unsigned kVerilatorThreads = ZBLEND_VERILATOR_THREADS;  // the model's --threads
 
 }  // namespace zb

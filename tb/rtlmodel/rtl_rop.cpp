@@ -51,6 +51,7 @@ struct RtlRop::Impl {
   TileStates tiles;                 // the frame's planes per tile: cleared or stored
   uint64_t pass_no = 0;
   bool in_pass = false;
+  bool deferred = false;            // under kPass, a layers pass waited for its resolve
   uint64_t io_cycles = 0, stalls = 0;
   uint64_t cycles = 0;              // one model's cycles since reset: reset, sweep, every tile
 
@@ -58,6 +59,12 @@ struct RtlRop::Impl {
       : opt(std::move(o)), sim(opt.trace_path, opt, opt.coverage), cycles(sim.cycle) {}
 
   int models() const { return opt.trace_path.empty() ? std::max(1, opt.threads) : 1; }
+  // The group's layers never leave the tile: it waits for their resolve under either schedule.
+  bool layered() const {
+    for (const Pass& p : group)
+      if (planes_written(p.state) & kPlaneLayers) return true;
+    return false;
+  }
   int tiles_x() const { return (fb.width + kRtlTileW - 1) / kRtlTileW; }
   bool pending() const { return !ran && !group.empty(); }
 
@@ -185,6 +192,11 @@ std::vector<PassStats> RtlRop::Impl::rebase(const std::vector<TileResult>& out, 
 
 std::vector<PassStats> RtlRop::Impl::run_group() {
   if (!pending()) return {};
+  if (layered() && !(TileStates::closed(steps) &&
+                     steps.back().op.kind == FrameOpKind::kResolveLayers))
+    fail<std::invalid_argument>(
+        "rtl backend: a layers pass's layers are not resolved (they never leave the tile: "
+        "resolve-layers must follow the pass before the next resolve or the frame's end)");
   ran = true;
   accepted.assign(frags.size(), 0);
   plan_group();
@@ -242,11 +254,22 @@ void RtlRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_colo
   impl_->steps.clear();
   impl_->frags.clear();
   impl_->frame_stats.clear();
+  impl_->deferred = false;
 }
 
 void RtlRop::begin_pass(const RopState& state) {
   Impl& m = *impl_;
   if (m.fb.width == 0) fail<std::logic_error>("rtl backend: begin_pass before begin_frame");
+#ifdef ZB_RTL_MUT
+  constexpr int layers = 0;  // the mutant netlist is of zb_rop without the layers unit
+#else
+  constexpr int layers = kRtlLayers;
+#endif
+  if (state.blend == BlendMode::kLayers && (state.layers < 1 || state.layers > layers))
+    fail<std::invalid_argument>(
+        "rtl backend: a layers pass of {} layers a pixel; the Verilated zb_rop keeps {} "
+        "(LAYERS: CMake ZBLEND_RTL_LAYERS)",
+        int(state.layers), layers);
   if (m.pending() && TileStates::closed(m.steps)) m.run_group();
   if (m.ran || m.group.empty()) {  // a new group: the last one's records go
     m.group.clear();
@@ -290,6 +313,10 @@ PassStats RtlRop::end_pass() {
   stream_by_tile(m.frags.data() + p.base, p.n, m.fb.width, m.fb.height, p.tile_first, p.binned);
   for (Streamed& f : p.binned) f.index += uint32_t(p.base);
   if (m.opt.schedule == TileSchedule::kTile) return PassStats{};
+  if (m.layered()) {  // its resolve joins it (frame_op); the counters come at finish_frame
+    m.deferred = true;
+    return PassStats{};
+  }
   return m.run_group().at(0);
 }
 
@@ -302,12 +329,13 @@ bool RtlRop::pending() const { return impl_->pending(); }
 
 void RtlRop::finish_frame(std::vector<PassStats>& stats) {
   flush();
-  if (impl_->opt.schedule == TileSchedule::kTile) stats = impl_->frame_stats;
+  if (impl_->opt.schedule == TileSchedule::kTile || impl_->deferred) stats = impl_->frame_stats;
 }
 
 bool RtlRop::on_tile() const {  // every operation, while passes wait
   const Impl& m = *impl_;
-  return m.opt.schedule == TileSchedule::kTile && m.pending() && !TileStates::closed(m.steps);
+  return (m.opt.schedule == TileSchedule::kTile || m.layered()) && m.pending() &&
+         !TileStates::closed(m.steps);
 }
 
 // On the resident tiles (on_tile), the operation joins the group: a clear and a copy run there

@@ -111,7 +111,7 @@ class TileRunner {
 
   void idle_tile_port() {
     t_.tile_we_i = bits(1);
-    t_.tile_planes_i = bits(kTilePlanes);
+    t_.tile_planes_i = bits(kPortPlanes);
     t_.tile_addr_i = bits(beat_aw_);
     BeatWords w;
     scramble(w, 0, [this](unsigned b) { return bits(b); });
@@ -212,13 +212,15 @@ void TileRunner::read_all(bool copy) {
 void TileRunner::setup() {
   t_.tile_x0_i = job_.x0;
   t_.tile_y0_i = job_.y0;
-  t_.state_i = step_->state;
+  t_.state_i = port_state(step_->state);
+  t_.state_layers_i = port_state_layers(step_->state);
   t_.state_we_i = 1;
   t_.cnt_clear_i = 1;
   cleared_ = s_.cycle;
   clear(step_->io, step_->swap);
   t_.state_we_i = 0;
   t_.state_i = bits(13);  // pass_state_t
+  t_.state_layers_i = bits(3);
   t_.cnt_clear_i = 0;
 }
 
@@ -227,12 +229,14 @@ void TileRunner::setup() {
 void TileRunner::clear(const TileIo& io, bool swap) {
   t_.tile_clear_i = io.clear != 0;
   t_.tile_copy_i = swap;
-  t_.tile_planes_i = io.clear;
+  t_.tile_planes_i = port_planes(io.clear);
+  t_.tile_mlab_i = (io.clear & kPlaneLayers) != 0;  // the layers emptied
   put_beat(t_, clear_beat(io));
   s_.tick();
   if (io.clear) refuses(swap ? "tile_clear_i (a renamed copy)" : "tile_clear_i");
   t_.tile_clear_i = 0;
   t_.tile_copy_i = 0;
+  t_.tile_mlab_i = 0;
 }
 
 void TileRunner::load(uint8_t planes) {
@@ -349,6 +353,7 @@ void TileRunner::store() {
   t_.tile_we_i = 0;
   t_.tile_resolve_i = job_.resolve == StoreResolve::kUnder;
   t_.tile_wboit_i = job_.resolve == StoreResolve::kWboit;
+  t_.tile_mlab_i = job_.resolve == StoreResolve::kLayers;
   for (int b = 0; b < sweep_.beats(); ++b) {
     t_.tile_addr_i = b;
     if (job_.resolve == StoreResolve::kUnder) {  // the background in wdata lane 0, the rest unread
@@ -368,6 +373,7 @@ void TileRunner::store() {
   t_.tile_req_i = 0;
   t_.tile_resolve_i = 0;
   t_.tile_wboit_i = 0;
+  t_.tile_mlab_i = 0;
   idle_tile_port();
 }
 

@@ -22,9 +22,10 @@ AccumWord accum_clear_word(const WboitFormat& f) {
 }
 
 // The plane a pass with a colour mask reads and writes: the accumulation word in accumulate
-// mode, else the colour.
+// mode, the layers in layers mode, else the colour.
 static uint8_t blended_plane(const RopState& s) {
   if (s.color_mask == 0) return 0;
+  if (s.blend == BlendMode::kLayers) return kPlaneLayers;
   return s.blend == BlendMode::kAccumulate ? kPlaneAccum : kPlaneColor;
 }
 
@@ -33,6 +34,7 @@ static uint8_t blended_plane(const RopState& s) {
 uint8_t planes_read(const RopState& s) {
   const bool cov = is_coverage_pass(s);
   uint8_t p = blended_plane(s);
+  if (p & kPlaneLayers) p |= kPlaneColor;  // the opaque colour, for the resolve on the store
   if (s.depth_test || cov) p |= kPlaneDepth;
   if (cov) p |= kPlaneCoverage;
   if (s.peel_test && !cov) p |= kPlanePeel;
@@ -127,6 +129,7 @@ TileStates::TileStates(int width, int height, int tile, int depth_bits, Rgba8 cl
   fresh[2] = {true, 0};
   fresh[3] = {true, 0};
   fresh[4] = {true, 0};  // its value is accum_clear_
+  fresh[5] = {true, 0};  // empty
   planes_.assign(n, fresh);
 }
 
@@ -146,6 +149,9 @@ void TileStates::apply(std::array<Plane, kTilePlanes>& t, const FrameOp& op) con
       // cleared accumulation (acc_A = 0, r = 1.0) leaves a uniform colour as it is
       if (!t[4].cleared) t[0].cleared = false;
       break;
+    case FrameOpKind::kResolveLayers:  // always on the store of the group that made the layers
+      break;                           // (they never leave the tile): its store marks colour
+
   }
 }
 
@@ -190,7 +196,7 @@ TileStates::RunPlan TileStates::plan_tile(size_t tile, const GroupStep* steps, s
   RunPlan out;
   std::array<Plane, kTilePlanes> t = planes_.at(tile);
   std::array<Bank, kTilePlanes> bank{};
-  std::array<size_t, kTilePlanes> role = {0, 1, 2, 3, 4};  // plane p's bank
+  std::array<size_t, kTilePlanes> role = {0, 1, 2, 3, 4, 5};  // plane p's bank
   // The epoch's steps a written bank takes between reads of every beat: the depth banks'
   // generations are gen_bits wide, the other planes' one bit.
   const int depth_steps = (1 << std::clamp(banks.gen_bits, 1, 16)) - 1;
@@ -220,9 +226,11 @@ TileStates::RunPlan TileStates::plan_tile(size_t tile, const GroupStep* steps, s
       const FrameOp& op = st.op;
       if (op.kind == FrameOpKind::kResolveUnder) {  // on the store
         out.resolve = StoreResolve::kUnder;  // under the step's op.value
-      } else if (op.kind == FrameOpKind::kResolveWboit) {  // on the store: colour and the
-        out.resolve = StoreResolve::kWboit;                  // accumulation resident
-        for (const int p : {0, int(kAccumPlane)}) {
+      } else if (op.kind == FrameOpKind::kResolveWboit ||
+                 op.kind == FrameOpKind::kResolveLayers) {  // on the store: colour and the
+        const bool wboit = op.kind == FrameOpKind::kResolveWboit;  // accumulation (layers)
+        out.resolve = wboit ? StoreResolve::kWboit : StoreResolve::kLayers;  // resident
+        for (const int p : {0, wboit ? int(kAccumPlane) : int(kLayersPlane)}) {
           if (resident >> p & 1) continue;
           if (t[size_t(p)].cleared) {
             if (needs_sweep(p)) {
@@ -314,7 +322,7 @@ TileStates::RunPlan TileStates::plan_tile(size_t tile, const GroupStep* steps, s
   out.sweep_after = sweep;
   out.swap_after = swap;
   out.swap_after_depth = t[1].value;
-  out.store = made;
+  out.store = made & uint8_t(~kPlaneLayers);  // the layers never leave the tile
   return out;
 }
 
@@ -328,6 +336,7 @@ bool parse_schedule(const std::string& name, TileSchedule& out) {
 }
 
 void TileStates::stored(size_t tile, uint8_t planes) {
+  planes &= uint8_t(~kPlaneLayers);
   for (int p = 0; p < kTilePlanes; ++p)
     if (planes >> p & 1) planes_.at(tile)[size_t(p)].cleared = false;
 }

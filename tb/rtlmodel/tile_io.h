@@ -26,13 +26,22 @@ constexpr Rgba8 unpack_rgba(uint32_t v) {
 
 // zb_pkg::planes_t: bit p selects plane p of the tile port. The first four hold a word of at
 // most 32 bits a pixel (kWordPlanes); the accumulation plane (accumulate mode, docs/datapath.md
-// "7. Accumulate blend") a wider one, AccumWord.
+// "7. Accumulate blend") a wider one, AccumWord. The layers plane (layers mode, "8. Layers")
+// never crosses the port: it is only fast-cleared (empty), and a store's resolve reads it.
 enum : uint8_t {
-  kPlaneColor = 1, kPlaneDepth = 2, kPlaneCoverage = 4, kPlanePeel = 8, kPlaneAccum = 16
+  kPlaneColor = 1, kPlaneDepth = 2, kPlaneCoverage = 4, kPlanePeel = 8, kPlaneAccum = 16,
+  kPlaneLayers = 32
 };
-constexpr int kTilePlanes = 5;
+constexpr int kTilePlanes = 6;
 constexpr int kWordPlanes = 4;
-constexpr int kAccumPlane = 4;  // kPlaneAccum's number
+constexpr int kAccumPlane = 4;   // kPlaneAccum's number
+constexpr int kLayersPlane = 5;  // kPlaneLayers'
+// zb_rop's tile_planes_i: the planes the port moves; kPlaneLayers is tile_mlab_i with a clear.
+constexpr int kPortPlanes = 5;
+constexpr uint8_t port_planes(uint8_t planes) { return uint8_t(planes & ((1u << kPortPlanes) - 1)); }
+// zb_rop's state_i and state_layers_i: a packed pass state (pack_state) split.
+constexpr uint32_t port_state(uint16_t bits) { return bits & 0x1fffu; }
+constexpr uint32_t port_state_layers(uint16_t bits) { return uint32_t(bits) >> 13; }
 
 // A pixel's accumulation word, zb_rop's {r, acc_A, acc_B, acc_G, acc_R} (acc_R at bit 0):
 // Framebuffer::accum and Framebuffer::reveal of one pixel.
@@ -52,7 +61,8 @@ AccumWord accum_clear_word(const WboitFormat& f);
 std::string accum_text(const AccumWord& w);
 std::string accum_text(const std::array<uint32_t, 4>& acc, uint32_t reveal);
 
-// The planes a pass with state `s` may read, and may write (every pixel of a written plane is
+// The planes a pass with state `s` may read (a layers pass: the colour its resolve puts the
+// layers over), and may write (every pixel of a written plane is
 // stored, so it must be whole in the tile memory: loaded or fast-cleared).
 uint8_t planes_read(const RopState& s);
 uint8_t planes_written(const RopState& s);
@@ -75,10 +85,11 @@ bool parse_schedule(const std::string& name, TileSchedule& out);
 // Whether a frame operation ends the tile schedule's group, applied to its stores' colour
 // (docs/rtl.md "Tile operations"): the resolves.
 inline bool resolves(FrameOpKind k) {
-  return k == FrameOpKind::kResolveUnder || k == FrameOpKind::kResolveWboit;
+  return k == FrameOpKind::kResolveUnder || k == FrameOpKind::kResolveWboit ||
+         k == FrameOpKind::kResolveLayers;
 }
-// What a store's read applies to colour (zb_rop's tile_resolve_i, tile_wboit_i).
-enum class StoreResolve : uint8_t { kNone, kUnder, kWboit };
+// What a store's read applies to colour (zb_rop's tile_resolve_i, tile_wboit_i, tile_mlab_i).
+enum class StoreResolve : uint8_t { kNone, kUnder, kWboit, kLayers };
 
 // Beats of a w x h tile: a beat is `beat` neighbours of one row. Loads and stores move the
 // whole tile also where the frame clips it: every word's fast-clear generation must follow
@@ -147,8 +158,8 @@ class TileStates {
  public:
   TileStates() = default;
   // A frame just begun: every plane cleared (colour `clear_color`, depth the far value,
-  // coverage 0, peel 0, accumulation accum_clear_word(wboit)), as Framebuffer's constructor
-  // fills it.
+  // coverage 0, peel 0, accumulation accum_clear_word(wboit), no layers), as Framebuffer's
+  // constructor fills it. The layers plane stays cleared: it is never stored.
   TileStates(int width, int height, int tile, int depth_bits, Rgba8 clear_color,
              const WboitFormat& wboit = {});
 

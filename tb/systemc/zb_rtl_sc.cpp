@@ -84,6 +84,7 @@ ZbRtlSc::ZbRtlSc(sc_core::sc_module_name name)
   r.rst_ni(rst_n_);
   r.state_we_i(state_we_);
   r.state_i(state_);
+  r.state_layers_i(state_layers_);
   r.tile_x0_i(tile_x0_);
   r.tile_y0_i(tile_y0_);
   r.frag_valid_i(frag_valid_);
@@ -100,6 +101,7 @@ ZbRtlSc::ZbRtlSc(sc_core::sc_module_name name)
   r.tile_copy_i(tile_copy_);        // the tile operations: the pass schedule's driver uses none
   r.tile_resolve_i(tile_resolve_);
   r.tile_wboit_i(tile_wboit_);
+  r.tile_mlab_i(tile_mlab_);
   r.tile_planes_i(tile_planes_);
   r.tile_addr_i(tile_addr_);
   r.tile_wcolor_i(tile_wcolor_);
@@ -137,6 +139,8 @@ ZbRtlSc::ZbRtlSc(sc_core::sc_module_name name)
   r.mon_wcolor_o(mon_wcolor_);
   r.mon_awe_o(mon_awe_);
   r.mon_wacc_o(mon_wacc_);
+  r.mon_lwe_o(mon_lwe_);
+  r.mon_wlayers_o(mon_wlayers_);
   SC_HAS_PROCESS(ZbRtlSc);
   SC_THREAD(run);
 }
@@ -179,6 +183,10 @@ void ZbRtlSc::run() {
         break;
       case PassCommand::Kind::kEndPass: stats_o.write(run_pass()); break;
       case PassCommand::Kind::kFrameOp:
+        if (c.op.kind == FrameOpKind::kResolveLayers && !resolved_.empty()) {
+          fb_.color = resolved_;  // the stores' resolve, kept until now (run_tile)
+          resolved_.clear();
+        }
         apply_frame_op(fb_, c.op);
         tiles_.frame_op(c.op);
         break;
@@ -195,6 +203,7 @@ PassStats ZbRtlSc::run_pass() {
   const sc_core::sc_time start_time = sc_core::sc_time_stamp();
   bin_by_tile(frags_.data(), frags_.size(), fb_.width, fb_.height, kRtlTileW, kRtlTileH, bins_);
   prepare_stores(fb_, state_value_);
+  if (planes_written(state_value_) & kPlaneLayers) resolved_ = fb_.color;
   PassStats stats;
   for (size_t t = 0; t + 1 < bins_.first.size(); ++t)
     if (bins_.first[t] != bins_.first[t + 1])
@@ -232,20 +241,23 @@ void ZbRtlSc::run_tile(size_t tile, int x0, int y0, uint32_t b, uint32_t e, Pass
   };
   put_beat(clear_beat(io));
   tile_clear_.write(io.clear != 0);
-  tile_planes_.write(io.clear);
+  tile_planes_.write(port_planes(io.clear));
+  tile_mlab_.write((io.clear & kPlaneLayers) != 0);
   tile_x0_.write(uint32_t(x0));
   tile_y0_.write(uint32_t(y0));
-  state_.write(pack_state(state_value_));
+  state_.write(port_state(pack_state(state_value_)));
+  state_layers_.write(port_state_layers(pack_state(state_value_)));
   state_we_.write(true);
   cnt_clear_.write(true);
   cycle();
   state_we_.write(false);
   cnt_clear_.write(false);
   tile_clear_.write(false);
+  tile_mlab_.write(false);
   if (io.load) {
     tile_req_.write(true);
     tile_we_.write(true);
-    tile_planes_.write(io.load);
+    tile_planes_.write(port_planes(io.load));
     for (int k = 0; k < sweep.beats(); ++k) {
       tile_addr_.write(uint32_t(k));
       put_beat(sweep.load(fb_, k));
@@ -302,8 +314,13 @@ void ZbRtlSc::run_tile(size_t tile, int x0, int y0, uint32_t b, uint32_t e, Pass
   if (uint64_t{cnt_frag_killed_.read()} != uint64_t{cnt_frag_in_.read()} - cnt_frag_passed_.read())
     throw std::runtime_error("zb_rtl_sc: cnt_frag_killed_o != cnt_frag_in_o - cnt_frag_passed_o");
 
+  // The layers never leave the tile: a layers pass's store reads the colour resolved with them
+  // (tile_mlab_i), kept apart until the resolve operation so that the frame after the pass is
+  // the golden model's (colour as it was, the layers pending).
+  const bool layers = (io.store & kPlaneLayers) != 0;
   if (io.store) {
     tile_req_.write(true);
+    tile_mlab_.write(layers);
     for (int k = 0; k < sweep.beats(); ++k) {
       tile_addr_.write(uint32_t(k));
       cycle();
@@ -314,9 +331,15 @@ void ZbRtlSc::run_tile(size_t tile, int x0, int y0, uint32_t b, uint32_t e, Pass
         w[2][size_t(l)] = get_lane(tile_rcov_.read(), l, kCovW);
         w.accum[size_t(l)] = get_accum(tile_racc_.read(), l);
       }
-      sweep.store(w, io.store, fb_, k);
+      if (layers) {
+        for (int l = 0; l < kRtlBeat; ++l)
+          if (const int64_t i = sweep.pixel(fb_, k, l); i >= 0)
+            resolved_[size_t(i)] = unpack_rgba(w[0][size_t(l)]);
+      }
+      sweep.store(w, port_planes(io.store), fb_, k);
     }
     tile_req_.write(false);
+    tile_mlab_.write(false);
   }
   tiles_.stored(tile, io.store);
   io_cycles_ += (stream_begin - load_begin) + (cycles_ - stream_end);

@@ -54,10 +54,11 @@ class ZbRtlSc : public sc_core::sc_module {
                                   std::conditional_t<W <= 64, uint64_t, sc_dt::sc_bv<W>>>;
   static constexpr int kCovW = coverage_bits(kRtlCoverageSamples);
   static constexpr int kAccumW = accum_word_bits(kRtlWboit);
+  static constexpr int kLayersW = kRtlLayers > 0 ? kRtlLayers * (kRtlDepthBits + 32) : 1;
   Sig<bool> rst_n_, state_we_, frag_valid_, frag_ready_, stall_, tile_req_, tile_we_, tile_clear_,
-      tile_copy_, tile_resolve_, tile_wboit_,
+      tile_copy_, tile_resolve_, tile_wboit_, tile_mlab_,
       busy_, cnt_clear_;
-  Sig<uint32_t> state_, tile_x0_, tile_y0_, frag_x_, frag_y_, frag_z_, frag_rgba_, frag_cov_,
+  Sig<uint32_t> state_, state_layers_, tile_x0_, tile_y0_, frag_x_, frag_y_, frag_z_, frag_rgba_, frag_cov_,
       tile_planes_, tile_addr_, cnt_frag_in_, cnt_frag_passed_, cnt_frag_killed_,
       cnt_depth_reads_, cnt_depth_writes_, cnt_color_reads_, cnt_color_writes_,
       cnt_stall_cycles_, cnt_cycles_, cnt_tile_loads_, cnt_tile_stores_;
@@ -70,9 +71,12 @@ class ZbRtlSc : public sc_core::sc_module {
   Sig<bool> mon_x4_valid_, mon_dwe_, mon_vwe_, mon_x11_valid_, mon_cwe_, mon_awe_;
   Sig<uint32_t> mon_x4_addr_, mon_wdepth_, mon_wcov_, mon_x11_addr_, mon_wcolor_;
   Sig<Bits<kAccumW>> mon_wacc_;
+  Sig<bool> mon_lwe_;
+  Sig<Bits<kLayersW>> mon_wlayers_;
   std::unique_ptr<Vzb_rop_sc> rtl_;
 
   Framebuffer fb_;
+  std::vector<Rgba8> resolved_;  // a layers pass's colour as its stores resolved it
   TileStates tiles_;
   RopState state_value_;
   std::vector<Fragment> frags_;

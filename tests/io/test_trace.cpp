@@ -23,10 +23,13 @@ TEST(Trace, StatePackingRoundTripsEveryValidWord) {
     ++valid;
     EXPECT_EQ(zb::pack_state(s), bits);
   }
-  // Blend codes 0..5 of the 3-bit field are valid (5 is accumulate): 6 of 8.
-  EXPECT_EQ(valid, 6 << (zb::kStateBits - 3));
+  // Blend codes 0..6 of the 3-bit field are valid (6 is layers): 7 of 8.
+  EXPECT_EQ(valid, 7 << (zb::kStateBits - 3));
   zb::RopState s;
-  EXPECT_FALSE(zb::unpack_state(1u << zb::kStateBits, s));
+  EXPECT_FALSE(zb::unpack_state(uint16_t(6u << 5 | 1u << 5), s));  // blend code 7
+  EXPECT_TRUE(zb::unpack_state(uint16_t(6u << 5 | 3u << 13), s));
+  EXPECT_EQ(s.blend, zb::BlendMode::kLayers);
+  EXPECT_EQ(s.layers, 4);
 }
 
 TEST(Trace, RoundTripAndReplayMatchRender) {
@@ -95,8 +98,7 @@ TEST(Trace, DamagedFieldsNameTheProblem) {
   // First pass: name length at 39, name, frame op count (0 here), then the state word.
   const size_t name_len = uint8_t(good[39]);
   expect_rejected(patched(43 + name_len, {0xff}), "frame ops is more than");
-  expect_rejected(patched(47 + name_len, {0x00, 0x20}), "invalid pass state");
-  expect_rejected(patched(47 + name_len, {0xc0, 0x00}), "invalid pass state");  // blend 6
+  expect_rejected(patched(47 + name_len, {0xe0, 0x00}), "invalid pass state");  // blend 7
   expect_rejected(patched(49 + name_len, {0xff, 0xff, 0xff, 0xff}), "fragments announced");
   const size_t first_fragment = 57 + name_len;
   expect_rejected(patched(first_fragment, {0xff, 0x00}), "outside the 4x4 frame");
