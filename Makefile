@@ -96,7 +96,7 @@ systemc: full-tree ## Golden model and RTL as SystemC modules, co-simulated on c
 synth: ## Yosys and nextpnr-ice40 on the datapath: cells, LUTs, RAMs, FFs, max clock on HX8K: out/synth/; the lab configuration's size: out/synth/lab/
 	@scripts/setup.sh synth
 	@scripts/synth.sh
-	@scripts/synth.sh --tile 64 --tile-h 64 --beat 8 --tile-ops 1 --keep-mem --no-pnr --out out/synth/lab
+	@scripts/synth.sh --tile 64 --tile-h 64 --beat 8 --tile-ops 1 --set LAYERS=4 --keep-mem --no-pnr --out out/synth/lab
 
 formal: setup ## Formal proofs, full set, and the RTL's two views proven equal: out/formal/, out/equiv/ (make test runs --ci)
 	@scripts/formal.sh --out out/formal

@@ -24,8 +24,8 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-const std::vector<std::string> kSweeps = {"orbit",  "depth", "layers", "alpha", "samples",
-                                          "offset", "wboit", "all"};
+const std::vector<std::string> kSweeps = {"orbit",  "depth", "layers", "order", "alpha",
+                                          "samples", "offset", "wboit", "all"};
 
 struct SweepOptions {
   std::string name;
@@ -82,6 +82,7 @@ class SweepRun {
     if (all || o_.name == "orbit") orbit();
     if (all || o_.name == "depth") depth();
     if (all || o_.name == "layers") layers();
+    if (all || o_.name == "order") order();
     if (all || o_.name == "alpha") alpha();
     if (all || o_.name == "samples") samples();
     if (all || o_.name == "offset") offset();
@@ -145,6 +146,12 @@ class SweepRun {
     r.layers.methods = methods();
     r.layers_rows = lab::layers_sweep(r.layers, progress());
     emit("layers", lab::method_csv("layers", r.layers_rows));
+  }
+  void order() {
+    lab::SweepResults& r = results_;
+    r.order.viewport = size_or(r.order.viewport);
+    r.order_rows = lab::order_sweep(r.order, progress());
+    emit("order", lab::method_csv("layers", r.order_rows));
   }
   void alpha() {
     lab::SweepResults& r = results_;

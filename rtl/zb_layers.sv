@@ -6,12 +6,7 @@
 // (zb_forward), written at E11 in layers mode when the fragment passed and the mask is not 0.
 // The plane never crosses the tile port: the port only fast-clears it, and a store's read with
 // the resolve reads it for zb_resolve_layers (tile_rlayers_o).
-//   X8   per slot: occupied and not after the fragment (le); the three products a merge may need
-//        on zb_mul8 (stage 1): f under slot K-1, slot K-1 under f, slot K-1 under slot K-2
-//   X9   the word with the fragment inserted (its slot K-1 the merge's front when K are full);
-//        products, stage 2
-//   X10  m of the product the insert chose, added to the front, saturated: slot K-1 merged
-//   X11  the word's flops drive the write data (and zb_forward's bypass), no logic after them
+// X8..X11, the insert and the merge, are zb_layers_insert's.
 module zb_layers #(
   parameter int WORDS      = 4096,
   parameter int BEAT       = 8,
@@ -60,6 +55,8 @@ module zb_layers #(
 `endif
 
   logic [WW-1:0] lmem_rdata, x7_word, x11_word_q;
+  logic [BEAT*WW-1:0] no_layers;  // the fast clear's value: every slot empty
+  assign no_layers = '0;
   logic          layers_on, x10_lwe, x11_lwe;
   logic [3:0]    kk;  // K, at most LAYERS
 
@@ -81,7 +78,7 @@ module zb_layers #(
     .tile_en_i   (tile_en_i),
     .tile_clear_i(tile_clear_i),
     .tile_addr_i (tile_addr_i),
-    .tile_wdata_i('0),                // cleared empty
+    .tile_wdata_i(no_layers),         // cleared empty
     .tile_rdata_o(tile_rlayers_o),
     .pipe_re_i   (x5_valid_i),
     .pipe_raddr_i(x5_addr_i),
@@ -142,161 +139,28 @@ module zb_layers #(
   logic [LW-1:0] x8_f;  // {z, A, R, G, B}
   assign x8_f = {z_q[8], p_q[8][31:24], p_q[8][7:0], p_q[8][15:8], p_q[8][23:16]};
 
-  // ---------------------------------------------------------------------------------------
-  // X8: where the fragment goes; the merge's products.
-  // ---------------------------------------------------------------------------------------
-  logic [WW-1:0] x8_word_q;
-  always_ff @(posedge clk_i) begin
-    x8_word_q <= x7_word;
-  end
 
-  function automatic logic [LW-1:0] slot(logic [WW-1:0] w, int unsigned j);
-    slot = w[j*LW +: LW];
-  endfunction
-  function automatic logic [7:0] slot_a(logic [WW-1:0] w, int unsigned j);
-    slot_a = w[j*LW + 24 +: 8];
-  endfunction
-
-  logic [L-1:0]  x8_le;      // slot j occupied and not after the fragment
-  logic [31:0]   x8_last;  // slot K-1's colour
-  logic [7:0]    x8_prev;  // slot K-2's alpha (K-1's when K = 1)
-  always_comb begin
-    for (int unsigned j = 0; j < L; j++) begin
-      x8_le[j] = (slot_a(x8_word_q, j) != 8'h00) && (slot(x8_word_q, j) <= x8_f);
-    end
-    x8_last = x8_word_q[31:0];
-    x8_prev = x8_word_q[31:24];
-    for (int unsigned j = 1; j < L; j++) begin
-      if (4'(j) == kk - 4'd1) begin
-        x8_last = x8_word_q[j*LW +: 32];
-        x8_prev = slot_a(x8_word_q, j - 1);
-      end
-    end
-  end
-
-  // The three merges, b under f: per channel m(b_c, 255 - A_f), on zb_mul8 (k = 255 - A_f).
-  //   0: the fragment under slot K-1;  1: slot K-1 under the fragment;  2: slot K-1 under K-2.
-  logic [3*4*16-1:0] x10_t;
-  for (genvar g = 0; g < 3; g++) begin : g_merge
-    logic [7:0]  inv;
-    logic [9:0]  inv3;
-    logic [31:0] back;
-    assign inv  = 8'hff - (g == 0 ? x8_last[31:24] : g == 1 ? x8_f[31:24] : x8_prev);
-    assign inv3 = {2'b00, inv} + {1'b0, inv, 1'b0};
-    assign back = g == 0 ? x8_f[31:0] : x8_last;
-    for (genvar c = 0; c < 4; c++) begin : g_chan
-      zb_mul8 u_mul (
-        .clk_i(clk_i),
-        .k_i  (inv),
-        .k3_i (inv3),
-        .v_i  (back[8*c +: 8]),
-        .t_o  (x10_t[16*(4*g + c) +: 16])
-      );
-    end
-  end
-
-  // ---------------------------------------------------------------------------------------
-  // X9: the word with the fragment inserted; slot K-1 is the merge's front when K were full.
-  // ---------------------------------------------------------------------------------------
-  logic [WW-1:0] x9_word_d, x9_word_q, x10_word_q;
-  logic          x8_full, x8_insert;
-  logic [1:0]    x8_pick;  // which merge
-  logic          x9_merge_q, x10_merge_q;
-  logic [1:0]    x9_pick_q, x10_pick_q;
-  logic [3:0]    x9_kk_q, x10_kk_q;
-
-  always_comb begin
-    x8_full   = 1'b0;
-    x8_pick   = 2'd2;
-    x8_insert = p_q[8][31:24] != 8'h00;
-    for (int unsigned j = 0; j < L; j++) begin
-      if (4'(j) == kk - 4'd1) begin
-        x8_full = slot_a(x8_word_q, j) != 8'h00;
-        if (x8_le[j]) x8_pick = 2'd0;
-        else if (j == 0 || x8_le[j == 0 ? 0 : j - 1]) x8_pick = 2'd1;
-      end
-    end
-    for (int unsigned j = 0; j < L; j++) begin
-      if (!x8_insert || (x8_full && 4'(j) >= kk) || x8_le[j]) begin
-        x9_word_d[j*LW +: LW] = slot(x8_word_q, j);
-      end else if (j == 0 || x8_le[j == 0 ? 0 : j - 1]) begin
-        x9_word_d[j*LW +: LW] = x8_f;
-      end else begin
-        x9_word_d[j*LW +: LW] = slot(x8_word_q, j == 0 ? 0 : j - 1);
-      end
-    end
-  end
-
-  always_ff @(posedge clk_i) begin
-    x9_word_q   <= x9_word_d;
-    x9_merge_q  <= x8_insert & x8_full;
-    x9_pick_q   <= x8_pick;
-    x9_kk_q     <= kk;
-    x10_word_q  <= x9_word_q;
-    x10_merge_q <= x9_merge_q;
-    x10_pick_q  <= x9_pick_q;
-    x10_kk_q    <= x9_kk_q;
-  end
-
-  // ---------------------------------------------------------------------------------------
-  // X10: slot K-1 := front + m(back, 255 - A_front), saturated, the front's depth.
-  // ---------------------------------------------------------------------------------------
-  logic [WW-1:0] x11_word_d;
-  logic [LW-1:0] x10_front;
-  logic [15:0]   x10_tc;
-  logic [9:0]    x10_u;
-  logic [8:0]    x10_sum;
-  logic [7:0]    x10_m;
-  logic [7:0]    unused_u;
-  assign unused_u = x10_u[7:0];
-  always_comb begin
-    x11_word_d = x10_word_q;
-    x10_front  = '0;
-    x10_tc     = '0;
-    x10_u      = '0;
-    x10_m      = '0;
-    x10_sum    = '0;
-    for (int unsigned j = 0; j < L; j++) begin
-      if (x10_merge_q && 4'(j) == x10_kk_q - 4'd1) begin
-        x10_front = slot(x10_word_q, j);
-        for (int unsigned c = 0; c < 4; c++) begin
-          // m(x, y) = (t + (t >> 8) + 0x80) >> 8 = t[15:8] + ((t[7:0] + t[15:8] + 0x80) >> 8)
-          x10_tc  = x10_t[16*(4*32'(x10_pick_q) + c) +: 16];
-          x10_u   = {2'b00, x10_tc[7:0]} + {2'b00, x10_tc[15:8]} + 10'h080;
-          x10_m   = x10_tc[15:8] + {6'h00, x10_u[9:8]};
-          x10_sum = {1'b0, x10_front[8*c +: 8]} + {1'b0, x10_m};
-          x11_word_d[j*LW + 8*c +: 8] = x10_sum[8] ? 8'hff : x10_sum[7:0];
-        end
-      end
-    end
-  end
-
-  always_ff @(posedge clk_i) begin
-    x11_word_q <= x11_word_d;
-  end
+  zb_layers_insert #(
+    .DEPTH_BITS(DEPTH_BITS),
+    .LAYERS    (LAYERS)
+  ) u_insert (
+    .clk_i     (clk_i),
+    .rst_ni    (rst_ni),
+    .kk_i      (kk),
+    .x7_word_i (x7_word),
+    .x8_f_i    (x8_f),
+    .we_i      (x11_lwe),
+    .x11_word_o(x11_word_q)
+  );
 
   assign x11_lwe_o     = x11_lwe;
   assign x11_wlayers_o = x11_word_q;
 
 `ifndef SYNTHESIS
 `ifndef ZB_NO_SVA
-  // Every write keeps the layers in order, occupied slots first, at most K of them.
-  logic          x11_sorted;
-  always_comb begin
-    x11_sorted = 1'b1;
-    for (int unsigned j = 1; j < L; j++) begin
-      if (slot_a(x11_word_q, j) != 8'h00 &&
-          (slot_a(x11_word_q, j - 1) == 8'h00 ||
-           slot(x11_word_q, j) < slot(x11_word_q, j - 1))) begin
-        x11_sorted = 1'b0;
-      end
-      if (4'(j) >= x10_kk_q && slot_a(x11_word_q, j) != 8'h00) x11_sorted = 1'b0;
-    end
-  end
-  LayersSorted: assert property (@(posedge clk_i) disable iff (!rst_ni)
-      x11_lwe |-> x11_sorted);
-  LayersMerge: cover property (@(posedge clk_i) disable iff (!rst_ni)
-      x11_lwe && $past(x10_merge_q));
+  LayersCleared: cover property (@(posedge clk_i) disable iff (!rst_ni) tile_clear_i && tile_en_i);
+  LayersRead: cover property (@(posedge clk_i) disable iff (!rst_ni)
+      tile_req_i && !tile_we_i && tile_en_i);
 `endif
 `endif
 

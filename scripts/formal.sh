@@ -89,6 +89,8 @@ jobs=(
   "window_w4|induction|4|4|no|zb_window_check|WINDOW=4|sat"
   "stream_w4|induction|4|4|no|zb_stream_check|$RopSmall WINDOW=4|sat"
   "raw_w4|induction|4|4|no|zb_raw_check|$RopSmall WINDOW=4|sat"
+  "layers|induction|4|4|yes|zb_layers_check|DEPTH_BITS=8 LAYERS=2|sat"
+  "layers_k4|induction|4|4|no|zb_layers_check|DEPTH_BITS=8 LAYERS=4|sat"
 )
 
 # The defects: name | job it must fail | how (define NAME: a harness define; force PATH=VALUE:
@@ -107,6 +109,7 @@ defects=(
   "raw_color_bypass_off|raw|force dut.u_color.u_forward.byp_hit_q=1'b0||18"
   "raw_accum_bypass_off|raw|force dut.u_accum.u_forward.byp_hit_q=1'b0||18"
   "raw_interlock_off|raw|force dut.u_window.hit_q=6'b0||18"
+  "layers_merge_wrong_slot|layers|force dut.x9_kk_q=4'd2|"
 )
 
 field() { cut -d'|' -f$(( $2 + 1 )) <<<"$1"; }

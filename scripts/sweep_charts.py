@@ -119,6 +119,28 @@ def chart_layer_family(name, rows, fig):
         fig.suptitle(f"Alpha: error against the reference by layer alpha, {n} layers" + note)
 
 
+def chart_order(rows, fig):
+    """Submission order against K: each method's error by layer count, a colour a method and a
+    dash an order (near first solid, far first dashed, shuffled dotted)."""
+    dashes = {"near first": "-", "far first": "--", "shuffled": ":"}
+    colours = plt.get_cmap("tab10").colors
+    methods = list(OrderedDict.fromkeys(r["method"].split(" (")[0] for r in rows))
+    panels = [("rmse", "RMSE (8-bit units)"), ("delta_e_mean", "mean CIEDE2000")]
+    axes = fig.subplots(1, 2)
+    for ax, (col, label) in zip(axes, panels):
+        for name, (xs, ys) in series(rows, "method", "layers", col).items():
+            method, order = name[:-1].split(" (")
+            ax.plot(xs, ys, marker=".", label=name, linestyle=dashes[order],
+                    color=colours[methods.index(method) % 10])
+        ax.set_xlabel("transparent layers N")
+        ax.set_ylabel(label)
+        ax.grid(True, alpha=0.3)
+    handles, labels = axes[0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="center right", fontsize="small")
+    fig.suptitle("Order: error against the reference by layer count and submission order "
+                 "(a colour a method; solid near first, dashed far first, dotted shuffled)")
+
+
 def chart_samples(rows, fig):
     method_panels(rows, "samples", "coverage samples per pixel", fig, logx=True, by_scene=True)
     fig.suptitle("Samples: error against the supersampled reference by coverage samples")
@@ -257,6 +279,7 @@ CHARTS = {
     "depth": chart_depth,
     "layers": lambda rows, fig: chart_layer_family("layers", rows, fig),
     "alpha": lambda rows, fig: chart_layer_family("alpha", rows, fig),
+    "order": chart_order,
     "samples": chart_samples,
     "offset": chart_offset,
     "wboit": chart_wboit,
@@ -272,7 +295,7 @@ def main(argv):
     rows = read_rows(csv_path)
     if not rows:
         sys.exit(f"sweep_charts: {csv_path}: no rows")
-    panels = name in ("layers", "alpha", "samples")
+    panels = name in ("layers", "alpha", "samples", "order")
     big = name in ("offset", "wboit")
     fig = plt.figure(figsize=(17, 10) if big else (14, 8) if panels else (11, 5.5))
     CHARTS[name](rows, fig)

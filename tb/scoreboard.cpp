@@ -14,12 +14,7 @@ std::string rgba_text(Rgba8 c) { return fmt::format("rgba({},{},{},{})", c.r, c.
 
 // Does the RTL's stage agree with the golden writes? Only the planes the stage writes count.
 bool same(RetireStage stage, const PixelWrites& r, const PixelWrites& g) {
-  if (stage == RetireStage::kX4)
-    return r.depth == g.depth && (!r.depth || r.z == g.z) && r.coverage == g.coverage &&
-           (!r.coverage || r.cov == g.cov);
-  return r.color == g.color && (!r.color || r.rgba == g.rgba) && r.accum == g.accum &&
-         (!r.accum || (r.acc == g.acc && r.reveal == g.reveal)) && r.layers == g.layers &&
-         (!r.layers || r.lay == g.lay);
+  return same_stage_writes(stage == RetireStage::kX11, r, g);
 }
 
 // Earlier in one model's time: tiles run in tile order, then by cycle.

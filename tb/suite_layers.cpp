@@ -22,7 +22,7 @@ RopState layers_state(Rng& r) {
                                     DepthFunc::kAlways, DepthFunc::kGreater};
   RopState s;
   s.blend = BlendMode::kLayers;
-  s.layers = uint8_t(1 + r.below(uint32_t(kRtlLayers)));
+  s.layers = uint8_t(1 + r.below(uint32_t(RtlRop::model_layers())));
   s.depth_test = r.chance(0.85);
   s.depth_func = funcs[r.below(5)];
   s.depth_write = r.chance(0.1);
@@ -42,8 +42,8 @@ void pool_colours(Rng& r, std::vector<Fragment>& f) {
 
 Tally suite_layers(const Config& c) {
   Tally t;
-  if (kRtlLayers == 0) {
-    t.note = "skipped: the Verilated zb_rop has no layers unit (LAYERS 0)";
+  if (RtlRop::model_layers() == 0) {
+    t.note = "skipped: the Verilated zb_rop has no layers unit (LAYERS 0, or the mutant netlist)";
     return t;
   }
   const int iters = c.iterations ? c.iterations : 6;

@@ -1,5 +1,7 @@
 // The layer-count and alpha sweeps: layers_scene as one of its two parameters moves.
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <stdexcept>
 
 #include <fmt/core.h>
@@ -46,6 +48,31 @@ std::vector<MethodRow> layers_sweep(const LayersOptions& o, const SweepProgress&
     for (MethodRow& r : every_method(layers_scene(n, o.alpha), o.viewport, methods, n, note))
       rows.push_back(std::move(r));
     if (progress) progress(fmt::format("layers: {}/{} layers, {}", n, o.max_layers, note));
+  }
+  return rows;
+}
+
+std::vector<MethodRow> order_sweep(const OrderOptions& o, const SweepProgress& progress) {
+  if (o.max_layers < 1 || o.max_layers > 16)
+    throw std::invalid_argument("order_sweep: 1 to 16 layers");
+  std::vector<MethodRow> rows;
+  for (int n = 1; n <= o.max_layers; ++n) {
+    const Scene near_first = layers_scene(n, o.alpha);  // two backdrop objects, then the layers
+    for (const char* order : {"near first", "far first", "shuffled"}) {
+      Scene s = near_first;
+      const auto layers = s.objects.begin() + 2;
+      if (order[0] == 'f') std::reverse(layers, s.objects.end());
+      if (order[0] == 's') {
+        std::mt19937_64 rng(o.seed * 1000 + uint64_t(n));
+        std::shuffle(layers, s.objects.end(), rng);
+      }
+      std::string note;
+      for (MethodRow& r : every_method(s, o.viewport, o.methods, n, note)) {
+        r.method += fmt::format(" ({})", order);
+        rows.push_back(std::move(r));
+      }
+    }
+    if (progress) progress(fmt::format("order: {}/{} layers", n, o.max_layers));
   }
   return rows;
 }

@@ -1,6 +1,7 @@
 // DIR/sweeps.md: each chart with what it shows, in the run's own numbers.
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include <fmt/core.h>
 
@@ -141,6 +142,42 @@ std::string layers_section(const SweepResults& r) {
     md += fmt::format(" `three-pass` has RMSE {:.2f} on one layer, which it blends twice.",
                       three.front()->error.rmse);
   return md + "\n\n";
+}
+
+// Per method, how far its error moves with the submission order: up to K layers and beyond.
+std::string order_section(const SweepResults& r) {
+  if (r.order_rows.empty()) return "";
+  // RMSE by method, then layer count, over the three orders.
+  std::map<std::string, std::map<int, std::pair<double, double>>> range;
+  for (const MethodRow& row : r.order_rows) {
+    const std::string m = row.method.substr(0, row.method.find(" ("));
+    auto [it, fresh] = range[m].try_emplace(int(row.x), row.error.rmse, row.error.rmse);
+    if (!fresh) {
+      it->second.first = std::min(it->second.first, row.error.rmse);
+      it->second.second = std::max(it->second.second, row.error.rmse);
+    }
+  }
+  std::string per;
+  for (const std::string& m : r.order.methods) {
+    if (!range.count(m)) continue;
+    int identical = 0;  // the layer counts up to which every order gives the same RMSE
+    double spread = 0;
+    for (const auto& [n, mm] : range[m]) {
+      if (identical == n - 1 && mm.first == mm.second) identical = n;
+      spread = std::max(spread, mm.second - mm.first);
+    }
+    per += fmt::format("{}`{}` the same in every order up to {} layer{}, RMSE spread at most {:.2f}",
+                       per.empty() ? "" : "; ", m, identical, identical == 1 ? "" : "s", spread);
+  }
+  std::string md = "## Order\n\n![order](order.png)\n\n";
+  md += fmt::format(
+      "`layers_scene(N, {:.2f})` with its layers submitted near to far, far to near and shuffled "
+      "(seed {}), N = 1 to {}, at {}x{}: {}. The RMSE of a method is equal in every order up to "
+      "the layer count given, bit for bit in its frames where that count is K for mlab-K "
+      "(tests/methods/test_mlab.cpp).\n\n",
+      r.order.alpha, r.order.seed, r.order.max_layers, r.order.viewport.width,
+      r.order.viewport.height, per);
+  return md;
 }
 
 std::string alpha_section(const SweepResults& r) {
@@ -325,7 +362,8 @@ std::string sweeps_markdown(const SweepResults& r) {
       "(docs/sweeps.md defines each sweep). Errors are in 8-bit units against the exact "
       "reference; the CSV beside each chart holds every number.\n\n",
       r.seconds);
-  md += orbit_section(r) + depth_section(r) + layers_section(r) + alpha_section(r) +
+  md += orbit_section(r) + depth_section(r) + layers_section(r) + order_section(r) +
+        alpha_section(r) +
         samples_section(r) + offset_section(r) + wboit_section(r);
   return md;
 }

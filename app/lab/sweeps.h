@@ -124,6 +124,19 @@ struct AlphaOptions {
 // layers_scene(layers, a): every method against the reference; x = a.
 std::vector<MethodRow> alpha_sweep(const AlphaOptions& o, const SweepProgress& progress = {});
 
+// Submission order against K (mlab-K's order independence up to K layers, its merge beyond):
+// layers_scene(N, alpha) with its layers submitted near to far, far to near and shuffled
+// (seeded), for N = 1..max_layers; x = N, each row's method "M (order)".
+struct OrderOptions {
+  int max_layers = 16;
+  float alpha = 0.5f;
+  uint64_t seed = 1;                  // the shuffle's
+  Viewport viewport{160, 120};
+  std::vector<std::string> methods{"mlab-2", "mlab-4", "depth-peel-2", "depth-peel-4", "wboit",
+                                   "unsorted"};
+};
+std::vector<MethodRow> order_sweep(const OrderOptions& o, const SweepProgress& progress = {});
+
 // --- coverage samples (sweep_samples.cpp) ---
 
 struct SamplesOptions {
@@ -252,6 +265,8 @@ struct SweepResults {
   std::vector<MethodRow> layers_rows;
   AlphaOptions alpha;
   std::vector<MethodRow> alpha_rows;
+  OrderOptions order;
+  std::vector<MethodRow> order_rows;
   std::string samples_scene;
   SamplesOptions samples;
   std::vector<MethodRow> samples_rows;

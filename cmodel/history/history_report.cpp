@@ -34,6 +34,7 @@ std::string value_text(const FrameHistory& f, const PixelValue& v) {
   std::string s = fmt::format("colour {} depth {} coverage {} peel {}", rgba_text(v.color),
                               depth_text(v.depth, f.depth_bits), v.coverage, depth_text(v.peel, f.depth_bits));
   s += fmt::format(" accumulation ({},{},{},{}) revealage {}", v.acc[0], v.acc[1], v.acc[2], v.acc[3], v.reveal);
+  if (v.layers.n) s += ", " + layers_text(v.layers, f.depth_bits);
   return s;
 }
 
@@ -51,6 +52,8 @@ std::string changes_text(const FrameHistory& f, const PixelValue& a, const Pixel
     return fmt::format("({},{},{},{}) revealage {}", v.acc[0], v.acc[1], v.acc[2], v.acc[3], v.reveal);
   };
   add(a.acc != b.acc || a.reveal != b.reveal, acc(a), acc(b), "accumulation");
+  add(a.layers != b.layers, layers_text(a.layers, f.depth_bits), layers_text(b.layers, f.depth_bits),
+      "layers");
   return s;
 }
 
@@ -59,6 +62,7 @@ std::string state_text(const RopState& s) {
   t += fmt::format(", depth write {}", s.depth_write && s.depth_test ? "on" : "off");
   if (s.peel_test) t += ", peel test z > peel";
   t += fmt::format(", blend {}, colour mask {}", to_string(s.blend), mask_text(s.color_mask));
+  if (s.blend == BlendMode::kLayers) t += fmt::format(", {} layers a pixel", int(s.layers));
   return t;
 }
 
@@ -70,6 +74,7 @@ std::string writes_text(const FrameHistory& f, const PixelWrites& w) {
   if (w.coverage) add(fmt::format("coverage {}", w.cov));
   if (w.accum)
     add(fmt::format("accumulation ({},{},{},{}) revealage {}", w.acc[0], w.acc[1], w.acc[2], w.acc[3], w.reveal));
+  if (w.layers) add(layers_text(w.lay, f.depth_bits));
   return s.empty() ? "nothing written" : "wrote " + s;
 }
 
@@ -128,6 +133,50 @@ std::string accumulate_text(const FrameHistory& f, const Fragment& g, const Pixe
                          wboit_transmit(g.color.a), before.reveal, wboit_reveal(before.reveal, g.color.a));
 }
 
+// The insert ("8. Layers"): the fragment's layer, where it went, and a merge's roundings.
+std::string layers_steps_text(const FrameHistory& f, int k, const Fragment& g,
+                              const PixelValue& before, const PixelWrites& w) {
+  const Layer l = fragment_layer(g.z, g.color);
+  std::string s = fmt::format("layer p=m(s,a) ({},{},{}) a {}", l.p.r, l.p.g, l.p.b, l.p.a);
+  if (l.p.a == 0) return s + "; alpha 0: nothing inserted";
+  if (w.layer_at < 0) return s;
+  const int n = before.layers.n;
+  if (n < k) return s + fmt::format("; inserted at position {} ({} of {} layers in use)", w.layer_at, n + 1, k);
+  // K + 1 layers: the two farthest F (front) and B merged into slot K - 1.
+  Layer front, back;
+  if (w.layer_at == k) {
+    front = before.layers.layer[size_t(k - 1)];
+    back = l;
+  } else {
+    front = w.layer_at == k - 1 ? l : before.layers.layer[size_t(k - 2)];
+    back = before.layers.layer[size_t(k - 1)];
+  }
+  const uint8_t t = uint8_t(255 - front.p.a);
+  const uint8_t fb[4] = {front.p.r, front.p.g, front.p.b, front.p.a};
+  const uint8_t bb[4] = {back.p.r, back.p.g, back.p.b, back.p.a};
+  const Layer merged = merge_layers(front, back);
+  const uint8_t mv[4] = {merged.p.r, merged.p.g, merged.p.b, merged.p.a};
+  s += fmt::format("; {} K = {} full: the two farthest merged into slot {}, z {} (F's)",
+                   w.layer_at == k ? "behind every layer," : fmt::format("inserted at {};", w.layer_at),
+                   k, k - 1, depth_text(front.z, f.depth_bits));
+  const char names[4] = {'R', 'G', 'B', 'A'};
+  for (int c = 0; c < 4; ++c)
+    s += fmt::format("; {} {}+m({},{})={}", names[c], fb[c], bb[c], t, mv[c]);
+  return s;
+}
+
+// The resolve of the layers over the colour, step by step ("8. Layers").
+std::string resolve_layers_text(const PixelValue& before) {
+  std::string s;
+  Rgba8 acc{0, 0, 0, 0};
+  for (int i = 0; i < before.layers.n; ++i) {
+    const Rgba8 next = layer_under(acc, before.layers.layer[size_t(i)].p);
+    s += fmt::format("{}layer {} under t={}: {}", i ? "; " : "", i, 255 - acc.a, rgba_text(next));
+    acc = next;
+  }
+  return s + fmt::format("; over {} with 255-A={}", rgba_text(before.color), 255 - acc.a);
+}
+
 // The coverage blend's case and its proportionate blend ("5. Coverage blend").
 std::string coverage_text(const FrameHistory& f, const Fragment& g, const PixelValue& before) {
   const int n = f.coverage_samples, k = g.coverage, cs = before.coverage;
@@ -182,6 +231,9 @@ std::string fragment_text(const FrameHistory& f, const PassRecord& pass, const H
     if (pass.state.blend == BlendMode::kAccumulate)
       s += fmt::format("accumulate onto ({},{},{},{}) revealage {}; ", e.before.acc[0], e.before.acc[1],
                        e.before.acc[2], e.before.acc[3], e.before.reveal);
+    else if (pass.state.blend == BlendMode::kLayers)
+      s += fmt::format("insert into {} (K = {}); ", layers_text(e.before.layers, f.depth_bits),
+                       int(pass.state.layers));
     else if (pass.state.blend == BlendMode::kCoverage)
       s += fmt::format("coverage blend onto {} depth {} coverage {}; ", rgba_text(e.before.color),
                        depth_text(e.before.depth, f.depth_bits), e.before.coverage);
@@ -195,6 +247,8 @@ std::string fragment_text(const FrameHistory& f, const PassRecord& pass, const H
     const BlendMode mode = pass.state.blend;
     const std::string steps =
         mode == BlendMode::kAccumulate ? (pass.state.color_mask ? accumulate_text(f, g, e.before) : "")
+        : mode == BlendMode::kLayers
+            ? (r.writes.layers ? layers_steps_text(f, pass.state.layers, g, e.before, r.writes) : "")
         : mode == BlendMode::kCoverage ? coverage_text(f, g, e.before)
                                        : rounding_text(mode, g.color, e.before.color);
     if (!steps.empty()) s += "    roundings: " + steps + "\n";
@@ -228,7 +282,10 @@ std::string op_text(const FrameHistory& f, const HistoryEvent& e) {
   if (e.op.kind == FrameOpKind::kClearDepth)
     s += " " + depth_text(std::min(e.op.depth, depth_max(f.depth_bits)), f.depth_bits);
   if (e.before == e.after) return s + ": the pixel unchanged\n";
-  return s + ": " + changes_text(f, e.before, e.after) + "\n";
+  s += ": " + changes_text(f, e.before, e.after) + "\n";
+  if (e.op.kind == FrameOpKind::kResolveLayers && e.before.layers.n)
+    s += "    roundings: " + resolve_layers_text(e.before) + "\n";
+  return s;
 }
 
 json rgba_json(Rgba8 c) { return json::array({c.r, c.g, c.b, c.a}); }
@@ -236,9 +293,27 @@ Rgba8 rgba_from(const json& j) {
   return Rgba8{j.at(0).get<uint8_t>(), j.at(1).get<uint8_t>(), j.at(2).get<uint8_t>(), j.at(3).get<uint8_t>()};
 }
 
+// The layers in use, nearest first: [{"z", "p": [r, g, b, a]}, ...].
+json layers_json(const PixelLayers& px) {
+  json a = json::array();
+  for (int i = 0; i < px.n; ++i)
+    a.push_back({{"z", px.layer[size_t(i)].z}, {"p", rgba_json(px.layer[size_t(i)].p)}});
+  return a;
+}
+PixelLayers layers_from(const json& a) {
+  PixelLayers px;
+  if (a.size() > size_t(kMaxLayers)) throw std::invalid_argument("more than 8 layers");
+  for (const json& l : a) {
+    px.layer[size_t(px.n)] = Layer{l.at("z").get<uint32_t>(), rgba_from(l.at("p"))};
+    ++px.n;
+  }
+  return px;
+}
+
 json value_json(const PixelValue& v) {
   return {{"color", rgba_json(v.color)}, {"depth", v.depth}, {"coverage", v.coverage},
-          {"peel", v.peel}, {"accum", v.acc}, {"reveal", v.reveal}};
+          {"peel", v.peel}, {"accum", v.acc}, {"reveal", v.reveal},
+          {"layers", layers_json(v.layers)}};
 }
 PixelValue value_from(const json& j) {
   PixelValue v;
@@ -248,6 +323,7 @@ PixelValue value_from(const json& j) {
   v.peel = j.at("peel").get<uint32_t>();
   v.acc = j.at("accum").get<std::array<uint32_t, 4>>();
   v.reveal = j.at("reveal").get<uint32_t>();
+  if (j.contains("layers")) v.layers = layers_from(j.at("layers"));  // written since version 1
   return v;
 }
 
@@ -271,7 +347,8 @@ json event_json(const HistoryEvent& e) {
   j["blended"] = rgba_json(r.blended);
   j["writes"] = {{"depth", w.depth}, {"z", w.z}, {"coverage", w.coverage}, {"cov", w.cov},
                  {"color", w.color}, {"rgba", rgba_json(w.rgba)}, {"accum", w.accum},
-                 {"acc", w.acc}, {"reveal", w.reveal}};
+                 {"acc", w.acc}, {"reveal", w.reveal}, {"layers", w.layers},
+                 {"layer_at", w.layer_at}, {"lay", layers_json(w.lay)}};
   return j;
 }
 
@@ -318,6 +395,11 @@ HistoryEvent event_from(const json& j, int x, int y) {
   r.writes.accum = w.at("accum").get<bool>();
   r.writes.acc = w.at("acc").get<std::array<uint32_t, 4>>();
   r.writes.reveal = w.at("reveal").get<uint32_t>();
+  if (w.contains("layers")) {
+    r.writes.layers = w.at("layers").get<bool>();
+    r.writes.layer_at = w.at("layer_at").get<int>();
+    r.writes.lay = layers_from(w.at("lay"));
+  }
   return e;
 }
 
@@ -416,7 +498,8 @@ std::string history_json(const FrameHistory& f, const std::string& scene_name, c
     passes.push_back({{"name", p.name}, {"state_bits", pack_state(p.state)}, {"edges", p.edges},
                       {"depth_test", p.state.depth_test}, {"depth_func", to_string(p.state.depth_func)},
                       {"depth_write", p.state.depth_write}, {"blend", to_string(p.state.blend)},
-                      {"color_mask", p.state.color_mask}, {"peel_test", p.state.peel_test}});
+                      {"color_mask", p.state.color_mask}, {"peel_test", p.state.peel_test},
+                      {"layers", p.state.layers}});
   json pixels = json::array();
   for (const PixelHistory& h : f.pixels) {
     json events = json::array();

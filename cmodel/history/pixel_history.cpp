@@ -17,6 +17,7 @@ PixelValue PixelValue::of(const Framebuffer& fb, size_t i) {
   v.peel = fb.peel[i];
   v.acc = fb.accum_at(i);
   v.reveal = fb.reveal_at(i);
+  v.layers = fb.layers_at(i);
   return v;
 }
 
@@ -108,12 +109,7 @@ FrameHistory HistoryRecorder::take() {
 }
 
 bool same_stage_writes(const RetireRecord& r, const PixelWrites& g) {
-  const PixelWrites& w = r.writes;
-  if (!r.x11)
-    return w.depth == g.depth && (!w.depth || w.z == g.z) && w.coverage == g.coverage &&
-           (!w.coverage || w.cov == g.cov);
-  return w.color == g.color && (!w.color || w.rgba == g.rgba) && w.accum == g.accum &&
-         (!w.accum || (w.acc == g.acc && w.reveal == g.reveal));
+  return same_stage_writes(r.x11, r.writes, g);
 }
 
 namespace {
@@ -130,6 +126,7 @@ std::string planes_differing(const PixelValue& a, const PixelValue& b) {
   add(a.peel != b.peel, "peel");
   add(a.acc != b.acc, "accumulation");
   add(a.reveal != b.reveal, "revealage");
+  add(a.layers != b.layers, "layers");
   return s;
 }
 
@@ -151,6 +148,7 @@ std::optional<std::string> replay_error(const PixelHistory& h, const FrameHistor
         v.acc = w.acc;
         v.reveal = w.reveal;
       }
+      if (w.layers) v.layers = w.lay;
     } else {
       // The frame operation itself, on a one-pixel frame holding the value so far.
       Framebuffer one(1, 1, f.depth_bits, v.color, f.coverage_samples, f.wboit);
@@ -160,6 +158,8 @@ std::optional<std::string> replay_error(const PixelHistory& h, const FrameHistor
       one.touch_accum();
       one.accum[0] = v.acc;
       one.reveal[0] = v.reveal;
+      one.touch_layers();
+      one.layers[0] = v.layers;
       apply_frame_op(one, e.op);
       v = PixelValue::of(one, 0);
     }

@@ -27,10 +27,11 @@ struct PixelValue {
   uint32_t peel = 0;
   std::array<uint32_t, 4> acc{};
   uint32_t reveal = 0;
+  PixelLayers layers;  // mlab-K's, between a layers pass and its resolve
   static PixelValue of(const Framebuffer& fb, size_t i);
   friend bool operator==(const PixelValue& a, const PixelValue& b) {
     return a.color == b.color && a.depth == b.depth && a.coverage == b.coverage &&
-           a.peel == b.peel && a.acc == b.acc && a.reveal == b.reveal;
+           a.peel == b.peel && a.acc == b.acc && a.reveal == b.reveal && a.layers == b.layers;
   }
   friend bool operator!=(const PixelValue& a, const PixelValue& b) { return !(a == b); }
 };

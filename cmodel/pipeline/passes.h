@@ -22,8 +22,9 @@ constexpr int kDepthPeelLayers[] = {2, 4, 8};
 PassPlan make_depth_peel_plan(int k);
 
 // mlab-K, one-pass transparency in K layers a pixel (docs/datapath.md "8. Layers"): the
-// plans registered are K = 2, 4 and 8; any K of 1..kMaxLayers is built by make_mlab_plan.
-constexpr int kMlabLayers[] = {2, 4, 8};
+// plans registered are K = 2 and 4, the simulated zb_rop's LAYERS (4: its layers plane is
+// already seven times its colour plane); any K of 1..kMaxLayers is built by make_mlab_plan.
+constexpr int kMlabLayers[] = {2, 4};
 PassPlan make_mlab_plan(int k);
 
 // hidden-line's edge passes: depth offset (raster.md "Depth offset"), visible and hidden colours.

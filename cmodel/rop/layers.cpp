@@ -73,14 +73,15 @@ std::string layers_text(const PixelLayers& px, int depth_bits) {
   return s;
 }
 
+Rgba8 layer_under(Rgba8 acc, Rgba8 p) {
+  const uint8_t t = static_cast<uint8_t>(255 - acc.a);
+  return Rgba8{sat_add(acc.r, mul_unorm8(p.r, t)), sat_add(acc.g, mul_unorm8(p.g, t)),
+               sat_add(acc.b, mul_unorm8(p.b, t)), sat_add(acc.a, mul_unorm8(p.a, t))};
+}
+
 Rgba8 resolve_layers(const PixelLayers& px, Rgba8 opaque) {
   Rgba8 acc{0, 0, 0, 0};
-  for (int i = 0; i < px.n; ++i) {
-    const Rgba8 p = px.layer[size_t(i)].p;
-    const uint8_t t = static_cast<uint8_t>(255 - acc.a);
-    acc = Rgba8{sat_add(acc.r, mul_unorm8(p.r, t)), sat_add(acc.g, mul_unorm8(p.g, t)),
-                sat_add(acc.b, mul_unorm8(p.b, t)), sat_add(acc.a, mul_unorm8(p.a, t))};
-  }
+  for (int i = 0; i < px.n; ++i) acc = layer_under(acc, px.layer[size_t(i)].p);
   return Rgba8{resolve_under(acc.r, opaque.r, acc.a), resolve_under(acc.g, opaque.g, acc.a),
                resolve_under(acc.b, opaque.b, acc.a), resolve_under(acc.a, opaque.a, acc.a)};
 }

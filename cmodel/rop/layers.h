@@ -50,6 +50,10 @@ std::string layers_text(const PixelLayers& px, int depth_bits);
 // into the last).
 int insert_layer(PixelLayers& px, int k, const Layer& f);
 
+// One step of the resolve's chain: `p` (premultiplied, alpha A) under `acc`, t = 255 - acc_A:
+// min(255, acc_c + m(p_c, t)) every channel.
+Rgba8 layer_under(Rgba8 acc, Rgba8 p);
+
 // The layers front to back over the opaque colour: the under blend's chain ("6. Under blend")
 // from (0, 0, 0, 0), then over `opaque` as the resolve under does. With no layer, `opaque`.
 Rgba8 resolve_layers(const PixelLayers& px, Rgba8 opaque);

@@ -94,6 +94,15 @@ WboitPixel accumulate_wboit(uint32_t z, Rgba8 c, const std::array<uint32_t, 4>& 
   return out;
 }
 
+bool same_stage_writes(bool x11, const PixelWrites& w, const PixelWrites& g) {
+  if (!x11)
+    return w.depth == g.depth && (!w.depth || w.z == g.z) && w.coverage == g.coverage &&
+           (!w.coverage || w.cov == g.cov);
+  return w.color == g.color && (!w.color || w.rgba == g.rgba) && w.accum == g.accum &&
+         (!w.accum || (w.acc == g.acc && w.reveal == g.reveal)) && w.layers == g.layers &&
+         (!w.layers || w.lay == g.lay);
+}
+
 Rgba8 resolve_coverage(Rgba8 stored, int /*coverage*/, int /*n*/) { return stored; }
 
 Rgba8 apply_color_mask(uint8_t mask, Rgba8 blended, Rgba8 d) {

@@ -65,6 +65,11 @@ struct PixelWrites {
   PixelLayers lay;      // the layers written
 };
 
+// Whether two write logs agree on the planes one retire stage writes: X4 depth and coverage,
+// X11 (x11) colour, the accumulation word and the layers. The lock-step scoreboard's rule and
+// the pixel history's.
+bool same_stage_writes(bool x11, const PixelWrites& a, const PixelWrites& b);
+
 // The four terms (R, G, B, A) an accumulate-mode fragment of depth z and colour c adds to the
 // accumulation before the saturating add (docs/datapath.md "7. Accumulate blend").
 std::array<uint32_t, 4> wboit_terms(uint32_t z, Rgba8 c, int depth_bits, const WboitFormat& format);

@@ -82,7 +82,8 @@ module zb_rop_cov #(
         for (genvar m = 0; m < 16; m++) begin : g_mask
           for (genvar p = 0; p < 2; p++) begin : g_peel
             always_ff @(posedge clk_i) begin
-              if (rst_ni && x4_valid) begin
+              // (layers mode, blend 6, has its own bins: zb_layers' covers)
+              if (rst_ni && x4_valid && state_q.blend != zb_pkg::BlendLayers) begin
                 PassState: cover (state_idx == 12'(d * 384 + w * 192 + b * 32 + m * 2 + p));
               end
             end

@@ -225,6 +225,14 @@ const char* RtlRop::build() {
 #endif
 }
 
+int RtlRop::model_layers() {
+#ifdef ZB_RTL_MUT
+  return 0;  // the mutant netlist is of zb_rop without the layers unit (tb/mutation)
+#else
+  return kRtlLayers;
+#endif
+}
+
 RtlRop::RtlRop(RtlOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {}
 RtlRop::~RtlRop() = default;
 
@@ -260,11 +268,7 @@ void RtlRop::begin_frame(int width, int height, int depth_bits, Rgba8 clear_colo
 void RtlRop::begin_pass(const RopState& state) {
   Impl& m = *impl_;
   if (m.fb.width == 0) fail<std::logic_error>("rtl backend: begin_pass before begin_frame");
-#ifdef ZB_RTL_MUT
-  constexpr int layers = 0;  // the mutant netlist is of zb_rop without the layers unit
-#else
-  constexpr int layers = kRtlLayers;
-#endif
+  const int layers = model_layers();
   if (state.blend == BlendMode::kLayers && (state.layers < 1 || state.layers > layers))
     fail<std::invalid_argument>(
         "rtl backend: a layers pass of {} layers a pixel; the Verilated zb_rop keeps {} "

@@ -86,6 +86,8 @@ class RtlRop final : public Backend {
   // Which Verilated build of zb_rop this program links (docs/rtl.md "Two builds"), for its
   // header line: "speed build, no assertions" or "assertion build".
   static const char* build();
+  // The layers a pixel the model's layers unit keeps (LAYERS; 0 in the mutant netlist's).
+  static int model_layers();
   using Backend::begin_frame;
   void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color,
                    int coverage_samples, const WboitFormat& wboit) override;

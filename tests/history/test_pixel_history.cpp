@@ -185,6 +185,51 @@ TEST(PixelHistory, CoverageAndAccumulateStepsByHand) {
   EXPECT_EQ(f.pixels[1].final_value.reveal, 0u);
 }
 
+// mlab-K's insert, merge and resolve, step by step, by hand from docs/datapath.md "8. Layers"
+// (K = 2, at (1, 1) over an opaque blue at 0x800000):
+//   f1 z 0x300000 (200,0,0,128): p = m(200,128) = 100: (100,0,0) a 128 at position 0;
+//   f2 z 0x100000 (0,200,0,128): (0,100,0) a 128, nearer: at position 0;
+//   f3 z 0x200000 (0,0,200,64): (0,0,m(200,64) = 50) a 64 goes between: K full, the two farthest
+//     (f3 front, f1 back) merge, t = 255 - 64 = 191: R 0 + m(100,191) = 75, G 0, B 50 + 0 = 50,
+//     A 64 + m(128,191) = 160, z 0x200000;
+//   resolve: layer 0 under t = 255: (0,100,0,128); layer 1 under t = 127: R m(75,127) = 37,
+//     G 100, B m(50,127) = 25, A 128 + m(160,127) = 208; over (0,0,255,255) with 47:
+//     B 25 + m(255,47) = 72, A 255: (37,100,72,255).
+TEST(PixelHistory, LayersStepsByHand) {
+  Trace t;
+  t.width = t.height = 4;
+  t.clear_color = Rgba8{0, 0, 0, 255};
+  TracePass opaque;
+  opaque.fragments = {at(1, 1, 0x800000, {0, 0, 255, 255})};
+  TracePass layers;
+  layers.state.blend = BlendMode::kLayers;
+  layers.state.layers = 2;
+  layers.state.depth_write = false;
+  layers.fragments = {at(1, 1, 0x300000, {200, 0, 0, 128}), at(1, 1, 0x100000, {0, 200, 0, 128}),
+                      at(1, 1, 0x200000, {0, 0, 200, 64})};
+  t.passes = {opaque, layers};
+  t.final_ops = {FrameOp{FrameOpKind::kResolveLayers, Rgba8{}, 0, false}};
+  const FrameHistory f = record_history(t, {{1, 1}});
+  const std::string s = history_text(f, f.pixels[0]);
+  EXPECT_NE(s.find("layer p=m(s,a) (100,0,0) a 128; inserted at position 0 (1 of 2 layers in use)"),
+            std::string::npos) << s;
+  EXPECT_NE(s.find("layer p=m(s,a) (0,100,0) a 128; inserted at position 0 (2 of 2 layers in use)"),
+            std::string::npos) << s;
+  EXPECT_NE(s.find("layer p=m(s,a) (0,0,50) a 64; inserted at 1; K = 2 full: the two farthest "
+                   "merged into slot 1, z 0x200000 (0.125000) (F's); R 0+m(100,191)=75; G 0+m(0,191)=0; "
+                   "B 50+m(0,191)=50; A 64+m(128,191)=160"), std::string::npos) << s;
+  EXPECT_NE(s.find("roundings: layer 0 under t=255: (0,100,0,128); layer 1 under t=127: "
+                   "(37,100,25,208); over (0,0,255,255) with 255-A=47"),
+            std::string::npos) << s;
+  EXPECT_EQ(f.pixels[0].final_value.color, (Rgba8{37, 100, 72, 255}));
+  EXPECT_EQ(f.pixels[0].final_value.layers.n, 0);
+  // Through its JSON: the layers come back and the history replays.
+  const FrameHistory back = parse_history_json(history_json(f, "trace", "mlab-2"));
+  ASSERT_EQ(back.pixels.size(), 1u);
+  EXPECT_FALSE(replay_error(back.pixels[0], back).has_value());
+  EXPECT_EQ(history_text(back, back.pixels[0]), s);
+}
+
 // Every pixel of a small frame of each built-in scene under every method: each history replays
 // (record_history throws otherwise) and ends at the golden model's own framebuffer, rendered
 // without a recorder.

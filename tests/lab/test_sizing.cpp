@@ -219,8 +219,10 @@ TEST(Sizing, NearQuadsNeedSixteenBits) {
 }
 
 // Three layers, E = 0: only a method that composites all three in order stays within the
-// rounding, depth peeling with K >= 3; depth-peel-4 is the cheaper of the two.
-TEST(Sizing, TransparentSceneAtZeroErrorPicksAnExactPeel) {
+// rounding: depth peeling with K >= 3, and mlab-K, whose merge folds a third layer into the
+// second front over back as the chain would (one rounding more, within a unit a layer). mlab-2
+// is the cheapest: one geometry pass for the transparent layers, not one a peel.
+TEST(Sizing, TransparentSceneAtZeroErrorPicksOnePassLayers) {
   SizingOptions o;
   o.width = 160;
   o.height = 120;
@@ -228,30 +230,40 @@ TEST(Sizing, TransparentSceneAtZeroErrorPicksAnExactPeel) {
   const SizingResult r = size_model(layers_scene(3, 0.5f), o);
   ASSERT_TRUE(r.found);
   EXPECT_EQ(r.analysis.max_layers, 3);
-  EXPECT_EQ(r.choice.method, "depth-peel-4");
+  EXPECT_EQ(r.choice.method, "mlab-2");
   EXPECT_FALSE(uses_coverage(r.choice.method));
+  uint64_t peel4 = 0, mlab2 = 0;
   for (const SizingTrial& t : r.trials) {
+    if (t.step != "method") continue;
     if (t.method == "depth-peel-2" || t.method == "unsorted") {
       EXPECT_FALSE(t.meets) << t.method;
     }
+    if (t.method == "depth-peel-4" || t.method == "mlab-2" || t.method == "mlab-4") {
+      EXPECT_TRUE(t.meets) << t.method;
+    }
+    if (t.method == "depth-peel-4") peel4 = t.cycles();
+    if (t.method == "mlab-2") mlab2 = t.cycles();
   }
+  EXPECT_LT(4 * mlab2, peel4);
 }
 
 // Twelve layers of alpha 0.1: depth-peel-8 misses four, which still show through the eight in
 // front by 0.9^8 = 43%, and the patents' methods blend out of order. wboit's depth weights
-// (nearer weighs more) come close to the exact weights a (1 - a)^k of low-alpha layers: it is
-// the one method within E = 0, whose floor allows a unit per layer (12 here).
-TEST(Sizing, WboitAloneMeetsTwelveLowAlphaLayers) {
+// (nearer weighs more) come close to the exact weights a (1 - a)^k of low-alpha layers, and
+// mlab-4 keeps the nearest three exact and folds the other nine into the fourth front over
+// back: the two methods within E = 0, whose floor allows a unit per layer (12 here). mlab-4 is
+// the cheaper: the cycles of wboit, and its layers never cross the tile port.
+TEST(Sizing, WboitAndMlab4MeetTwelveLowAlphaLayers) {
   SizingOptions o;
   o.width = 64;
   o.height = 48;
   o.max_error = 0;
   const SizingResult r = size_model(layers_scene(12, 0.1f), o);
   ASSERT_TRUE(r.found);
-  EXPECT_EQ(r.choice.method, "wboit");
+  EXPECT_EQ(r.choice.method, "mlab-4");
   for (const SizingTrial& t : r.trials)
     if (t.step == "method") {
-      EXPECT_EQ(t.meets, t.method == "wboit") << t.method;
+      EXPECT_EQ(t.meets, t.method == "wboit" || t.method == "mlab-4") << t.method;
     }
 }
 

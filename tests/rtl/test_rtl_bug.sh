@@ -4,7 +4,10 @@
 #   window  a fragment entering the issue window in the cycle another to its pixel is picked
 #           misses it, and may issue one cycle after it instead of Span cycles (a hazard);
 #   accum   the accumulation word's bypass is never taken: an accumulate fragment issued Span
-#           cycles after one to its pixel adds to the word before that one's write.
+#           cycles after one to its pixel adds to the word before that one's write;
+#   layers  the layers word's bypass is never taken: a layers fragment issued Span cycles after
+#           one to its pixel inserts into the word before that one's write;
+#   resolve-layers  the store's resolve composites a pixel's layers back to front.
 # The lock-step scoreboard must stop each at its first wrong write, naming the fragment, the
 # cycle, both values and the pixel's history, with an FST; the end-of-pass comparison
 # (--no-lockstep) must catch each on its own too; the window defect also the RTL's assertions
@@ -28,6 +31,24 @@ grep -qE '^  X11: rtl wrote no colour, accumulation acc\([0-9,]+\) reveal [0-9]+
 end_of_pass accum --defect accum --suite accum --seed 1
 grep -qE '^  accumulation: rtl=acc\([0-9,]+\) reveal [0-9]+ golden=acc' "$tmp/out.txt" ||
   fail "accum: the pixel report has no accumulation line"
+# The layers defect: the layers suite's same-pixel inserts at distance 4, under both schedules
+# (the pass schedule runs a layers pass with its resolve as one group, as the tile schedule does).
+for sch in pass tile; do
+  lockstep layers-$sch X11 --defect layers --schedule $sch --suite layers --seed 1
+  grep -qE '^  X11: rtl wrote no colour, ([0-9]+ layers?: z 0x[0-9a-f]+ p\([0-9,]+\) a [0-9]+.*|no layers); golden no colour, [0-9]+ layers?: z ' \
+    "$tmp/out.txt" || fail "layers-$sch: the X11 line does not name both layers words"
+  grep -q 'blend=layers color_mask=0x[0-9a-f] peel_test=[01] layers=[1-8] ' "$tmp/out.txt" ||
+    fail "layers-$sch: the state line does not give the pass's K"
+done
+end_of_pass layers --defect layers --suite layers --seed 1
+# The resolve's defect shows at the store: the first wrong write is a stored beat's colour.
+for sch in pass tile; do
+  run resolve-layers-$sch --defect resolve-layers --schedule $sch --suite layers --seed 1
+  grep -qE '^  tile store beat [0-9]+ lane [0-9]+: colour rtl rgba\([0-9,]+\) golden rgba\([0-9,]+\)$' \
+    "$tmp/out.txt" || fail "resolve-layers-$sch: no 'tile store beat B lane L: colour rtl ... golden ...' line"
+  echo "ok: resolve-layers-$sch stopped at: $(grep -m1 '^  tile store beat' "$tmp/out.txt")"
+done
+
 # The timing check alone (before the pass ends): the tile streamed faster than the schedule.
 "$tb" --defect window --no-assertions --no-lockstep --suite hazard --seed 1 -q --mismatch-fst "" \
   >"$tmp/out.txt" 2>&1
