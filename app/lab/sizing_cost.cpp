@@ -282,6 +282,9 @@ void CostCounter::frame_op(const FrameOp& op) {
     g.states.frame_op(op);
     g.resident_states.frame_op(op);
   }
+  // The layers' resolve runs on the store of their group's tiles under either schedule (they
+  // never leave the tile, RtlRop): never on the host.
+  if (op.kind == FrameOpKind::kResolveLayers) return;
   ++cost_.frame_ops;
   cost_.frame_op_pixels += uint64_t(width_) * uint64_t(height_);
 }
