@@ -171,7 +171,7 @@ TileIo TileStates::plan(const std::array<Plane, kTilePlanes>& t, const RopState&
       io.clear |= uint8_t(1u << p);
       if (p == kAccumPlane)
         io.accum_clear = accum_clear_;
-      else
+      else if (p < kWordPlanes)  // the layers plane clears empty: no value
         io.clear_value[size_t(p)] = pl.value;
     } else {
       io.load |= uint8_t(1u << p);
@@ -240,7 +240,7 @@ TileStates::RunPlan TileStates::plan_tile(size_t tile, const GroupStep* steps, s
             out.clear_after.clear |= uint8_t(1u << p);
             if (p == kAccumPlane)
               out.clear_after.accum_clear = accum_clear_;
-            else
+            else if (p < kWordPlanes)  // the layers plane clears empty: no value
               out.clear_after.clear_value[size_t(p)] = t[size_t(p)].value;
             fast_clear(p);
           } else {
