@@ -359,6 +359,41 @@ TEST(TileStates, ResolveOfTheAccumulationOnTheStore) {
   EXPECT_FALSE(resident.closing_setup());
 }
 
+// mlab-K's layers never cross the port: a layers pass fast-clears them (empty: no clear value,
+// the four word planes' values untouched), has the colour resident for its resolve, and its
+// group stores the colour the resolve makes, never the layers.
+TEST(TileStates, LayersStayOnTheTile) {
+  const Rgba8 bg{10, 20, 30, 255};
+  TileStates frame(64, 64, 64, kRtlDepthBits, bg);
+  TileStates::GroupStep layers;
+  layers.pass = layers.touches = true;
+  layers.state.depth_write = false;
+  layers.state.blend = BlendMode::kLayers;
+  layers.state.layers = 4;
+  EXPECT_EQ(planes_read(layers.state), kPlaneLayers | kPlaneColor | kPlaneDepth);
+  EXPECT_EQ(planes_written(layers.state), kPlaneLayers);
+  const TileIo io = frame.plan(0, layers.state);
+  EXPECT_EQ(io.clear, kPlaneColor | kPlaneDepth | kPlaneLayers);
+  EXPECT_EQ(io.clear_value[0], pack_rgba(bg));
+  EXPECT_EQ(io.clear_value[1], depth_max(kRtlDepthBits));
+  EXPECT_EQ(io.clear_value[2], 0u);
+  EXPECT_EQ(io.clear_value[3], 0u);
+  EXPECT_EQ(io.accum_clear, AccumWord{});  // the accumulation is not cleared: untouched
+  TileStates::GroupStep resolve;
+  resolve.op = FrameOp{FrameOpKind::kResolveLayers, Rgba8{}, 0, false};
+  const std::vector<TileStates::GroupStep> steps = {layers, resolve};
+  const TileStates::RunPlan run = frame.plan_tile(0, steps.data(), steps.size());
+  EXPECT_EQ(run.resolve, StoreResolve::kLayers);
+  EXPECT_EQ(run.store, kPlaneColor);
+  EXPECT_EQ(run.steps.at(0).io.clear, kPlaneColor | kPlaneDepth | kPlaneLayers);
+  EXPECT_FALSE(run.closing_setup());
+  frame.stored(0, kPlaneColor | kPlaneDepth | kPlaneLayers);  // the layers stay cleared
+  const TileIo after = frame.plan(0, layers.state);
+  EXPECT_EQ(after.load, kPlaneColor | kPlaneDepth);
+  EXPECT_EQ(after.clear, kPlaneLayers);
+  EXPECT_EQ(port_planes(after.clear), 0);  // tile_mlab_i carries it, not tile_planes_i
+}
+
 // The resolve under the background is a step as well: it closes the group and the store
 // applies it; nothing needs to be resident for it but the colour the group made.
 TEST(TileStates, ResolveUnderTheBackgroundClosesTheGroup) {
