@@ -71,7 +71,8 @@ void put_ops(std::string& out, const std::vector<FrameOp>& ops) {
   }
 }
 
-std::vector<FrameOp> get_ops(Reader& r, const std::string& where) {
+// `kinds`: the frame operation codes the file's version has.
+std::vector<FrameOp> get_ops(Reader& r, const std::string& where, uint64_t kinds) {
   const size_t at = r.offset();
   const uint64_t n = r.get(4, "a frame op count");
   if (n > kMaxFrameOps) r.fail(at, fmt::format("{}: {} frame ops is more than {}", where, n, kMaxFrameOps));
@@ -79,7 +80,7 @@ std::vector<FrameOp> get_ops(Reader& r, const std::string& where) {
   for (FrameOp& op : ops) {
     const size_t at_op = r.offset();
     const uint64_t kind = r.get(1, "a frame op kind");
-    if (kind >= kFrameOpKinds) r.fail(at_op, fmt::format("{}: frame op kind {} is unknown", where, kind));
+    if (kind >= kinds) r.fail(at_op, fmt::format("{}: frame op kind {} is unknown", where, kind));
     op.kind = FrameOpKind(kind);
     op.value.r = uint8_t(r.get(1, "a frame op value"));
     op.value.g = uint8_t(r.get(1, "a frame op value"));
@@ -150,9 +151,12 @@ Trace parse_trace(const std::string& bytes, const std::string& name) {
   if (r.get_string(sizeof kMagic, "the magic 'ZBTRACE'") != std::string(kMagic, sizeof kMagic))
     r.fail(0, "not a zblend trace (bad magic)");
   const size_t at_version = r.offset();
-  if (const uint64_t v = r.get(4, "the version"); v < kOldestVersion || v > kVersion)
-    r.fail(at_version, fmt::format("version {} is not supported (this zblend reads {} to {})", v,
-                                   kOldestVersion, kVersion));
+  const uint64_t version = r.get(4, "the version");
+  if (version < kOldestVersion || version > kVersion)
+    r.fail(at_version, fmt::format("version {} is not supported (this zblend reads {} to {})",
+                                   version, kOldestVersion, kVersion));
+  // Version 4 has no layers: a 13-bit state (blend at most 5) and frame operations 0 to 4.
+  const uint64_t op_kinds = version == 4 ? 5 : kFrameOpKinds;
   Trace t;
   const size_t at_size = r.offset();
   const uint64_t w = r.get(4, "the width"), h = r.get(4, "the height");
@@ -196,9 +200,11 @@ Trace parse_trace(const std::string& bytes, const std::string& name) {
     const uint64_t len = r.get(4, "a pass name length");
     if (len > kMaxNameLength) r.fail(at_name, fmt::format("pass name of {} bytes", len));
     pass.name = r.get_string(size_t(len), "a pass name");
-    pass.frame_ops = get_ops(r, fmt::format("pass {}", p + 1));
+    pass.frame_ops = get_ops(r, fmt::format("pass {}", p + 1), op_kinds);
     const size_t at_state = r.offset();
-    if (!unpack_state(uint16_t(r.get(2, "a pass state")), pass.state))
+    const uint64_t state_bits = r.get(2, "a pass state");
+    if (!unpack_state(uint16_t(state_bits), pass.state) ||
+        (version == 4 && (state_bits >> 13 || pass.state.blend == BlendMode::kLayers)))
       r.fail(at_state, fmt::format("pass {}: invalid pass state", p + 1));
     const size_t at_count = r.offset();
     const uint64_t count = r.get(8, "a fragment count");
@@ -231,7 +237,7 @@ Trace parse_trace(const std::string& bytes, const std::string& name) {
     }
     t.passes.push_back(std::move(pass));
   }
-  t.final_ops = get_ops(r, "after the last pass");
+  t.final_ops = get_ops(r, "after the last pass", op_kinds);
   if (r.remaining() != 0) r.fail(r.offset(), fmt::format("{} bytes after the last pass", r.remaining()));
   return t;
 }

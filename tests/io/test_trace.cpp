@@ -32,6 +32,23 @@ TEST(Trace, StatePackingRoundTripsEveryValidWord) {
   EXPECT_EQ(s.layers, 4);
 }
 
+// Version 4 files (13-bit state, no layers) still read; layers in one are refused.
+TEST(Trace, VersionFourReadsWithoutLayers) {
+  std::string bytes = zb::serialize_trace(small_trace());
+  bytes[8] = 4;  // the version word, little-endian
+  const zb::Trace back = zb::parse_trace(bytes, "v4");
+  EXPECT_EQ(back.passes.size(), 3u);
+  const std::string current = zb::serialize_trace(back);
+  EXPECT_EQ(current[8], 5);
+  EXPECT_EQ(current.substr(12), bytes.substr(12));
+  zb::Trace layers = small_trace();
+  layers.passes[1].state.blend = zb::BlendMode::kLayers;
+  std::string v4 = zb::serialize_trace(layers);
+  EXPECT_NO_THROW(zb::parse_trace(v4, "v5"));
+  v4[8] = 4;
+  EXPECT_THROW(zb::parse_trace(v4, "v4"), zb::TraceError);
+}
+
 TEST(Trace, RoundTripAndReplayMatchRender) {
   zb::Trace t = small_trace();
   ASSERT_EQ(t.passes.size(), 3u);
