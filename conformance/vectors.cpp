@@ -34,10 +34,9 @@ constexpr Field kOpcodeField{120, 8};
 constexpr Field kFrameWidth{0, 16}, kFrameHeight{16, 16}, kFrameDepthBits{32, 8},
     kFrameSamples{40, 8}, kFrameClear{64, 32}, kFrameAccBits{96, 8}, kFrameRevBits{104, 8},
     kFrameWeightBits{112, 8};
-// The kit's pass state is the 13-bit register and its frame operations codes 0 to 4: mlab-K's
-// layers (the state's K field, blend 6, resolve-layers) are not in the kit yet.
-constexpr Field kPassState{0, 13};
-constexpr unsigned kKitFrameOpKinds = 5;
+// The kit's pass state is the core register and its frame operations the core ones: mlab-K's
+// layers are not in the kit yet.
+constexpr Field kPassState{0, kCoreStateBits};
 constexpr Field kFragX{0, 16}, kFragY{16, 16}, kFragZ{32, 32}, kFragRgba{64, 32},
     kFragCoverage{96, 8};
 constexpr Field kOpKind{0, 4}, kOpValue{32, 32}, kOpDepth{64, 32};
@@ -264,7 +263,7 @@ Trace decode_stream(const std::string& text, const std::string& name) {
         pass = TracePass{fmt::format("pass-{}", t.passes.size() + 1), std::move(ops), {}, {}};
         ops.clear();
         const uint64_t state = w.get(kPassState);
-        if (!unpack_state(uint16_t(state), pass.state) || pass.state.blend == BlendMode::kLayers)
+        if (!unpack_core_state(state, pass.state))
           in.fail(fmt::format("PASS: state 0x{:x} is not a pass state register (blend [7:5] at "
                               "most 5; docs/datapath.md \"The pass state\")", state));
         in_pass = true;
@@ -304,7 +303,7 @@ Trace decode_stream(const std::string& text, const std::string& name) {
         check_fields({kOpKind, kOpValue, kOpDepth});
         check_between_passes();
         const uint64_t kind = w.get(kOpKind);
-        if (kind >= kKitFrameOpKinds)
+        if (kind >= kCoreFrameOpKinds)
           in.fail(fmt::format("FRAME_OP: kind {} is not a frame operation (0 clear colour, 1 clear "
                               "depth, 2 copy depth to peel, 3 resolve under, 4 resolve wboit)",
                               kind));

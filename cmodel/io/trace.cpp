@@ -155,8 +155,8 @@ Trace parse_trace(const std::string& bytes, const std::string& name) {
   if (version < kOldestVersion || version > kVersion)
     r.fail(at_version, fmt::format("version {} is not supported (this zblend reads {} to {})",
                                    version, kOldestVersion, kVersion));
-  // Version 4 has no layers: a 13-bit state (blend at most 5) and frame operations 0 to 4.
-  const uint64_t op_kinds = version == 4 ? 5 : kFrameOpKinds;
+  // Version 4 has no layers: the core state and frame operations.
+  const uint64_t op_kinds = version == 4 ? kCoreFrameOpKinds : kFrameOpKinds;
   Trace t;
   const size_t at_size = r.offset();
   const uint64_t w = r.get(4, "the width"), h = r.get(4, "the height");
@@ -203,8 +203,8 @@ Trace parse_trace(const std::string& bytes, const std::string& name) {
     pass.frame_ops = get_ops(r, fmt::format("pass {}", p + 1), op_kinds);
     const size_t at_state = r.offset();
     const uint64_t state_bits = r.get(2, "a pass state");
-    if (!unpack_state(uint16_t(state_bits), pass.state) ||
-        (version == 4 && (state_bits >> 13 || pass.state.blend == BlendMode::kLayers)))
+    if (version == 4 ? !unpack_core_state(state_bits, pass.state)
+                     : !unpack_state(uint16_t(state_bits), pass.state))
       r.fail(at_state, fmt::format("pass {}: invalid pass state", p + 1));
     const size_t at_count = r.offset();
     const uint64_t count = r.get(8, "a fragment count");

@@ -11,7 +11,6 @@ uint16_t pack_state(const RopState& s) {
 }
 
 bool unpack_state(uint16_t bits, RopState& out) {
-  if (bits >> kStateBits) return false;
   const unsigned blend = (bits >> 5) & 7u;
   if (blend >= kBlendModes) return false;
   out.depth_test = bits & 1u;
@@ -22,6 +21,11 @@ bool unpack_state(uint16_t bits, RopState& out) {
   out.peel_test = (bits >> 12) & 1u;
   out.layers = static_cast<uint8_t>(((bits >> 13) & 7u) + 1u);
   return true;
+}
+
+bool unpack_core_state(uint64_t bits, RopState& out) {
+  return bits >> kCoreStateBits == 0 && unpack_state(uint16_t(bits), out) &&
+         out.blend != BlendMode::kLayers;
 }
 
 const char* to_string(DepthFunc f) {

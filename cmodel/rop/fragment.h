@@ -132,9 +132,15 @@ struct PassState {
 // [0] depth_test, [3:1] depth_func, [4] depth_write, [7:5] blend, [11:8] color_mask,
 // [12] peel_test, [15:13] layers - 1.
 constexpr int kStateBits = 16;
+// The register before layers: 13 bits, blend at most 5, frame operations 0 to 4. Version 4
+// traces and the conformance kit (no layers feature yet) hold only these.
+constexpr int kCoreStateBits = 13;
+constexpr unsigned kCoreFrameOpKinds = 5;
 uint16_t pack_state(const RopState& s);
-// False when `bits` is not a valid state (bits above kStateBits set, or a blend code above 6).
+// False when `bits` is not a valid state (a blend code above 6: the 16 bits are all fields).
 bool unpack_state(uint16_t bits, RopState& out);
+// unpack_state of a register before layers: false also for bits 13 and up, or blend 6.
+bool unpack_core_state(uint64_t bits, RopState& out);
 
 const char* to_string(DepthFunc f);
 const char* to_string(BlendMode b);

@@ -237,12 +237,9 @@ int zb_golden_begin_pass(zb_golden* g, uint32_t state) {
   return guarded(g, "zb_golden_begin_pass", [&](zb_golden& h) -> Failure {
     if (h.in_pass)
       return {ZB_EORDER, "a pass is already open (end it with zb_golden_end_pass first)"};
-    // The kit's pass state is the 13-bit register: mlab-K's layers (blend 6, the K field) are
-    // not in the kit yet.
-    constexpr int kKitStateBits = 13;
+    // The kit's pass state is the core register: mlab-K's layers are not in the kit yet.
     zb::RopState s;
-    if (state >> kKitStateBits || !zb::unpack_state(uint16_t(state), s) ||
-        s.blend == zb::BlendMode::kLayers)
+    if (!zb::unpack_core_state(state, s))
       return {ZB_EARG, fmt::format("state 0x{:x} is not a pass state register (bits 13 and up "
                                    "zero, blend [7:5] at most 5; docs/datapath.md \"The pass "
                                    "state\")", state)};
