@@ -143,14 +143,7 @@ std::string layers_steps_text(const FrameHistory& f, int k, const Fragment& g,
   const int n = before.layers.n;
   if (n < k) return s + fmt::format("; inserted at position {} ({} of {} layers in use)", w.layer_at, n + 1, k);
   // K + 1 layers: the two farthest F (front) and B merged into slot K - 1.
-  Layer front, back;
-  if (w.layer_at == k) {
-    front = before.layers.layer[size_t(k - 1)];
-    back = l;
-  } else {
-    front = w.layer_at == k - 1 ? l : before.layers.layer[size_t(k - 2)];
-    back = before.layers.layer[size_t(k - 1)];
-  }
+  const auto [front, back] = farthest_two(before.layers, k, l, w.layer_at);
   const uint8_t t = uint8_t(255 - front.p.a);
   const uint8_t fb[4] = {front.p.r, front.p.g, front.p.b, front.p.a};
   const uint8_t bb[4] = {back.p.r, back.p.g, back.p.b, back.p.a};

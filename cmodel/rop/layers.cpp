@@ -37,12 +37,23 @@ Layer merge_layers(const Layer& front, const Layer& back) {
                          sat_add(front.p.a, mul_unorm8(back.p.a, t))}};
 }
 
+int layer_position(const PixelLayers& px, const Layer& f) {
+  int at = 0;
+  while (at < px.n && !layer_before(f, px.layer[size_t(at)])) ++at;
+  return at;
+}
+
+std::pair<Layer, Layer> farthest_two(const PixelLayers& px, int k, const Layer& f, int at) {
+  const Layer& last = px.layer[size_t(k - 1)];
+  if (at == k) return {last, f};
+  return {at == k - 1 ? f : px.layer[size_t(k - 2)], last};
+}
+
 int insert_layer(PixelLayers& px, int k, const Layer& f) {
   if (k < 1 || k > kMaxLayers || px.n < 0 || px.n > k)
     throw std::invalid_argument("insert_layer: k or the layer count out of range");
   if (f.p.a == 0) return -1;
-  int at = 0;
-  while (at < px.n && !layer_before(f, px.layer[size_t(at)])) ++at;
+  const int at = layer_position(px, f);
   if (px.n < k) {
     for (int i = px.n; i > at; --i) px.layer[size_t(i)] = px.layer[size_t(i - 1)];
     px.layer[size_t(at)] = f;
@@ -50,14 +61,10 @@ int insert_layer(PixelLayers& px, int k, const Layer& f) {
     return at;
   }
   // k + 1 layers: the new one at `at`, the two farthest merged into slot k - 1.
-  if (at == k) {
-    px.layer[size_t(k - 1)] = merge_layers(px.layer[size_t(k - 1)], f);
-    return k;
-  }
-  const Layer last = px.layer[size_t(k - 1)];
+  const auto [front, back] = farthest_two(px, k, f, at);
   for (int i = k - 1; i > at; --i) px.layer[size_t(i)] = px.layer[size_t(i - 1)];
-  px.layer[size_t(at)] = f;
-  px.layer[size_t(k - 1)] = merge_layers(px.layer[size_t(k - 1)], last);
+  if (at < k) px.layer[size_t(at)] = f;
+  px.layer[size_t(k - 1)] = merge_layers(front, back);
   return at;
 }
 

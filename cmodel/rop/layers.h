@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 
 #include "fixed.h"
 
@@ -43,6 +44,13 @@ struct PixelLayers {
 
 // "2 layers: z 0x0f4240 p(12,200,3) a 120; z ..." ("no layers"), depths in depth_bits' hex digits.
 std::string layers_text(const PixelLayers& px, int depth_bits);
+
+// Where `f` goes among `px`'s layers: after every layer whose key is at most its own.
+int layer_position(const PixelLayers& px, const Layer& f);
+
+// In a pixel `px` holding k layers, the two farthest of the k + 1 once `f` joins at `at`
+// (layer_position): the front and the back of their merge.
+std::pair<Layer, Layer> farthest_two(const PixelLayers& px, int k, const Layer& f, int at);
 
 // Inserts `f` (alpha above 0; an alpha of 0 changes nothing) into `px`, which holds at most k
 // (1..kMaxLayers) layers: at its place in layer_before's order; with k layers already, the two
