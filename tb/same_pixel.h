@@ -2,8 +2,12 @@
 // same-pixel issue distances the forwarding and bypass serve (docs/rtl.md "Same-pixel distance").
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <string>
 #include <vector>
+
+#include <fmt/core.h>
 
 #include "rop/fixed.h"
 #include "rop/fragment.h"
@@ -90,6 +94,46 @@ inline void count_distances(const std::vector<Fragment>& f, uint64_t dist[4]) {
       ++dist[issue[i] - prev - 4];
     last[px[i]] = issue[i];
   }
+}
+
+// A read-modify-write suite's frame loop (accum, layers): per iteration a fresh Cosim on one
+// tile, its Rng (seed ^ salt) and streams (a depth pool of `zpool` depths), the frame cleared,
+// an opaque pass of per_pass / 2 fragments named NAME-opaque, then `passes` calls of
+// pass(cs, r, d, per_pass, p, dist), which draws pass p and counts its distances. The note
+// gives the distances reached in MODE passes, and warns when one never was.
+template <class Pass>
+Tally same_pixel_suite(const char* name, const char* mode, const Config& c, int passes,
+                       uint64_t salt, size_t zpool, Pass&& pass) {
+  Tally t;
+  const int iters = c.iterations ? c.iterations : 6;
+  const size_t per_pass =
+      c.fragments ? std::max<uint64_t>(1, c.fragments / uint64_t(iters) / uint64_t(passes)) : 3000;
+  uint64_t dist[4] = {};
+  WorkCounter progress(c, uint64_t(iters));
+  for (int it = 0; it < iters; ++it) {
+    const uint64_t seed = c.seed + it;
+    const bool ok = run_iteration(name, c, seed, t, [&](Cosim& cs) {
+      Rng r(seed ^ salt);
+      SamePixelStreams d{r, std::vector<uint32_t>(zpool)};
+      for (uint32_t& z : d.zpool) z = r.below(depth_max(24));
+      cs.begin_frame(kRtlTileW, kRtlTileH, 24, Rgba8{20, 40, 60, 255}, kRtlCoverageSamples,
+                     kRtlWboit);
+      RopState opaque;  // the opaque depth (and colour) the passes test against
+      opaque.depth_test = true;
+      opaque.depth_write = true;
+      draw_pass(cs, std::string(name) + "-opaque", opaque, d.stream(per_pass / 2));
+      for (int p = 0; p < passes; ++p) pass(cs, r, d, per_pass, p, dist);
+    });
+    if (!ok) break;
+    progress.add();
+  }
+  t.note = fmt::format(
+      "same-pixel issue distances 4/5/6/7 in {} passes (the schedule without back-pressure): "
+      "{}/{}/{}/{}",
+      mode, dist[0], dist[1], dist[2], dist[3]);
+  if (!t.failed && std::find(std::begin(dist), std::end(dist), 0u) != std::end(dist))
+    t.note += "; warning: a distance was never reached";
+  return t;
 }
 
 }  // namespace zb::tb

@@ -36,27 +36,10 @@ RopState accumulate_state(Rng& r) {
 }  // namespace
 
 Tally suite_accum(const Config& c) {
-  Tally t;
-  const int iters = c.iterations ? c.iterations : 6;
   constexpr int kPasses = 4;
-  const size_t per_pass =
-      c.fragments ? std::max<uint64_t>(1, c.fragments / uint64_t(iters) / kPasses) : 3000;
-  uint64_t dist[4] = {};
-  WorkCounter progress(c, uint64_t(iters));
-  for (int it = 0; it < iters; ++it) {
-    const uint64_t seed = c.seed + it;
-    const bool ok = run_iteration("accum", c, seed, t, [&](Cosim& cs) {
-      Rng r(seed ^ 0xacc0ull);
-      SamePixelStreams d{r, std::vector<uint32_t>(6)};
-      for (uint32_t& z : d.zpool) z = r.below(depth_max(24));
-      cs.begin_frame(kRtlTileW, kRtlTileH, 24, Rgba8{20, 40, 60, 255}, kRtlCoverageSamples,
-                     kRtlWboit);
-      // The opaque depth the accumulate passes test against.
-      RopState opaque;
-      opaque.depth_test = true;
-      opaque.depth_write = true;
-      draw_pass(cs, "accum-opaque", opaque, d.stream(per_pass / 2));
-      for (int p = 0; p < kPasses; ++p) {
+  return same_pixel_suite(
+      "accum", "accumulate", c, kPasses, 0xacc0ull, 6,
+      [&](Cosim& cs, Rng& r, SamePixelStreams& d, size_t per_pass, int p, uint64_t dist[4]) {
         if (r.chance(0.3)) cs.frame_op({FrameOpKind::kCopyDepthToPeel, {}, 0, false});
         if (r.chance(0.3)) cs.frame_op({FrameOpKind::kResolveWboit, {}, 0, false});
         if (r.chance(0.1))
@@ -66,19 +49,8 @@ Tally suite_accum(const Config& c) {
         const std::vector<Fragment> f = d.stream(per_pass);
         if (st.color_mask != 0) count_distances(f, dist);
         draw_pass(cs, "accum-" + std::to_string(p + 1), st, f);
-      }
-      cs.frame_op({FrameOpKind::kResolveWboit, {}, 0, false});
-    });
-    if (!ok) break;
-    progress.add();
-  }
-  t.note = fmt::format(
-      "same-pixel issue distances 4/5/6/7 in accumulate passes (the schedule without "
-      "back-pressure): {}/{}/{}/{}",
-      dist[0], dist[1], dist[2], dist[3]);
-  if (!t.failed && std::find(std::begin(dist), std::end(dist), 0u) != std::end(dist))
-    t.note += "; warning: a distance was never reached";
-  return t;
+        if (p == kPasses - 1) cs.frame_op({FrameOpKind::kResolveWboit, {}, 0, false});
+      });
 }
 
 }  // namespace zb::tb

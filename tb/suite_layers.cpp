@@ -41,30 +41,14 @@ void pool_colours(Rng& r, std::vector<Fragment>& f) {
 }  // namespace
 
 Tally suite_layers(const Config& c) {
-  Tally t;
   if (RtlRop::model_layers() == 0) {
+    Tally t;
     t.note = "skipped: the Verilated zb_rop has no layers unit (LAYERS 0, or the mutant netlist)";
     return t;
   }
-  const int iters = c.iterations ? c.iterations : 6;
-  constexpr int kPasses = 3;
-  const size_t per_pass =
-      c.fragments ? std::max<uint64_t>(1, c.fragments / uint64_t(iters) / kPasses) : 3000;
-  uint64_t dist[4] = {};
-  WorkCounter progress(c, uint64_t(iters));
-  for (int it = 0; it < iters; ++it) {
-    const uint64_t seed = c.seed + it;
-    const bool ok = run_iteration("layers", c, seed, t, [&](Cosim& cs) {
-      Rng r(seed ^ 0x1a7e5ull);
-      SamePixelStreams d{r, std::vector<uint32_t>(4)};
-      for (uint32_t& z : d.zpool) z = r.below(depth_max(24));
-      cs.begin_frame(kRtlTileW, kRtlTileH, 24, Rgba8{20, 40, 60, 255}, kRtlCoverageSamples,
-                     kRtlWboit);
-      RopState opaque;  // the opaque depth and colour the layers are tested and resolved over
-      opaque.depth_test = true;
-      opaque.depth_write = true;
-      draw_pass(cs, "layers-opaque", opaque, d.stream(per_pass / 2));
-      for (int p = 0; p < kPasses; ++p) {
+  return same_pixel_suite(
+      "layers", "layers", c, 3, 0x1a7e5ull, 4,
+      [&](Cosim& cs, Rng& r, SamePixelStreams& d, size_t per_pass, int p, uint64_t dist[4]) {
         if (r.chance(0.3)) cs.frame_op({FrameOpKind::kCopyDepthToPeel, {}, 0, false});
         const RopState st = layers_state(r);
         std::vector<Fragment> f = d.stream(per_pass);
@@ -72,18 +56,7 @@ Tally suite_layers(const Config& c) {
         if (st.color_mask != 0) count_distances(f, dist);
         draw_pass(cs, fmt::format("layers-{}-k{}", p + 1, int(st.layers)), st, f);
         cs.frame_op({FrameOpKind::kResolveLayers, {}, 0, false});
-      }
-    });
-    if (!ok) break;
-    progress.add();
-  }
-  t.note = fmt::format(
-      "same-pixel issue distances 4/5/6/7 in layers passes (the schedule without "
-      "back-pressure): {}/{}/{}/{}",
-      dist[0], dist[1], dist[2], dist[3]);
-  if (!t.failed && std::find(std::begin(dist), std::end(dist), 0u) != std::end(dist))
-    t.note += "; warning: a distance was never reached";
-  return t;
+      });
 }
 
 }  // namespace zb::tb
