@@ -18,21 +18,11 @@ namespace {
 
 using zb::Rgba8;
 using zbtest::Layer;
+using zbtest::kBackground;
+using zbtest::kOpaque;
 using zbtest::m_spec;
-
-const Rgba8 kBackground{250, 250, 240, 255};
-const Layer kOpaque{12000000, {40, 60, 200, 255}};
-
-uint32_t sat(uint32_t v) { return std::min(255u, v); }
-
-std::vector<Layer> make_layers(int n) {
-  std::vector<Layer> out;
-  for (int i = 0; i < n; ++i)
-    out.push_back({uint32_t(1000000 + 1000000 * i),
-                   {uint8_t(37 * i + 200), uint8_t(91 * i + 20), uint8_t(53 * i + 110),
-                    uint8_t(70 + 17 * i)}});
-  return out;
-}
+using zbtest::make_layers;
+using zbtest::sat;
 
 struct P4 {
   uint32_t c[4];

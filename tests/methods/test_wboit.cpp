@@ -20,10 +20,10 @@ namespace {
 using zb::Rgba8;
 using zb::WboitFormat;
 using zbtest::Layer;
+using zbtest::kBackground;
+using zbtest::kOpaque;
 using zbtest::m_spec;
 
-const Rgba8 kBackground{250, 250, 240, 255};
-const Layer kOpaque{12000000, {40, 60, 200, 255}};
 constexpr uint32_t kZmax = (1u << 24) - 1;
 
 // The top 8 bits of 1 - d, as equation 10 sees the depth in the datapath.

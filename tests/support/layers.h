@@ -20,10 +20,25 @@ inline zb::Rgba8 over(zb::Rgba8 s, zb::Rgba8 d) {
   return {ch(s.r, d.r), ch(s.g, d.g), ch(s.b, d.b), ch(s.a, d.a)};
 }
 
+inline uint32_t sat(uint32_t v) { return std::min(255u, v); }
+
 struct Layer {
   uint32_t z;
   zb::Rgba8 color;
 };
+
+// The methods' tests' pixel: a background, an opaque layer, and n transparent layers at distinct
+// depths in front of it, each its own colour and alpha.
+const zb::Rgba8 kBackground{250, 250, 240, 255};
+const Layer kOpaque{12000000, {40, 60, 200, 255}};
+inline std::vector<Layer> make_layers(int n) {
+  std::vector<Layer> out;
+  for (int i = 0; i < n; ++i)
+    out.push_back({uint32_t(1000000 + 1000000 * i),
+                   {uint8_t(37 * i + 200), uint8_t(91 * i + 20), uint8_t(53 * i + 110),
+                    uint8_t(70 + 17 * i)}});
+  return out;
+}
 
 constexpr int kSize = 4;
 
