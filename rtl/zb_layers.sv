@@ -28,7 +28,6 @@ module zb_layers #(
   input  logic [$clog2(WORDS / BEAT)-1:0] tile_addr_i,
   output logic [BEAT*WW-1:0]              tile_rlayers_o,
   // The pipeline.
-  input  logic                            m_valid_i,
   input  logic [DEPTH_BITS-1:0]           m_z_i,
   input  logic                            x5_valid_i,
   input  logic                            x6_valid_i,
@@ -74,7 +73,7 @@ module zb_layers #(
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
     .tile_req_i  (tile_req_i),
-    .tile_we_i   (1'b0),              // never loaded
+    .tile_we_i   (tile_we_i),         // a load is no read here; tile_en_i is never set on one
     .tile_en_i   (tile_en_i),
     .tile_clear_i(tile_clear_i),
     .tile_addr_i (tile_addr_i),
@@ -133,8 +132,6 @@ module zb_layers #(
     p_q[7] <= p_q[6];
     p_q[8] <= p_q[7];
   end
-  logic unused_in;
-  assign unused_in = ^{m_valid_i, tile_we_i};
 
   logic [LW-1:0] x8_f;  // {z, A, R, G, B}
   assign x8_f = {z_q[8], p_q[8][31:24], p_q[8][7:0], p_q[8][15:8], p_q[8][23:16]};

@@ -571,7 +571,6 @@ module zb_rop
       .tile_en_i     (tile_mlab_i),
       .tile_addr_i   (tile_addr_i),
       .tile_rlayers_o(layers_lanes),
-      .m_valid_i     (m_valid_q),
       .m_z_i         (m_z_q),
       .x5_valid_i    (x_valid_q[5]),
       .x6_valid_i    (x_valid_q[6]),
