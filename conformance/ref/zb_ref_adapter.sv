@@ -2,8 +2,9 @@
 // (conformance/ref/README.md): the conformance testbench's DUT interface (docs/conformance.md
 // "The adapter") on the reference DUT. Both speak pixels a clock, so the adapter only narrows and
 // widens: depth and peel to DEPTH_BITS, the coverage count to its width. Only zb_ref_rop with
-// ZB_REF_FULL has the accumulation plane (planes_o = 5'b11111); the others 5'b01111. No retire
-// port (the valids tied low).
+// ZB_REF_FULL has the accumulation plane (planes_o = 5'b11111; the others 5'b01111) and the
+// layers (layers_o = 4: four a pixel; the others 0, state_layers_i and st_resolve_i unread).
+// No retire port (the valids tied low).
 // The testbench instantiates the adapter as zb_conf_adapter whatever its file is called.
 /* verilator lint_off DECLFILENAME */
 module zb_conf_adapter #(
@@ -24,6 +25,7 @@ module zb_conf_adapter #(
   input  logic        rst_ni,
   input  logic        state_we_i,
   input  logic [12:0] state_i,
+  input  logic [2:0]  state_layers_i,
   input  logic [15:0] tile_x0_i,
   input  logic [15:0] tile_y0_i,
   input  logic        ld_valid_i,
@@ -42,6 +44,7 @@ module zb_conf_adapter #(
   input  logic [7:0]  frag_cov_i,
   output logic        idle_o,
   input  logic        st_start_i,
+  input  logic        st_resolve_i,
   output logic        st_valid_o,
   output logic [31:0] st_color_o,
   output logic [31:0] st_depth_o,
@@ -49,6 +52,7 @@ module zb_conf_adapter #(
   output logic [31:0] st_peel_o,
   output logic [4*ACC_BITS+REV_BITS-1:0] st_acc_o,
   output logic [4:0]  planes_o,
+  output logic [3:0]  layers_o,
   output logic        ret_d_valid_o,
   output logic [31:0] ret_d_pixel_o,
   output logic        ret_dwe_o,
@@ -104,8 +108,9 @@ module zb_conf_adapter #(
     .st_peel_o   (st_peel)
   );
   assign st_acc_o = '0;
+  assign layers_o = 4'd0;  // no layers
   logic unused_pipe;
-  assign unused_pipe = ^ld_acc_i;
+  assign unused_pipe = ^{ld_acc_i, state_layers_i, st_resolve_i};
 `else
   zb_ref_rop #(
     .DEPTH_BITS (DEPTH_BITS),
@@ -114,12 +119,14 @@ module zb_conf_adapter #(
     .TILE_H     (TILE_H),
     .ACC_BITS   (ACC_BITS),
     .REV_BITS   (REV_BITS),
-    .WEIGHT_BITS(WEIGHT_BITS)
+    .WEIGHT_BITS(WEIGHT_BITS),
+    .LAYERS     (4)
   ) u_ref (
     .clk_i,
     .rst_ni,
     .state_we_i,
     .state_i,
+    .state_layers_i,
     .tile_x0_i,
     .tile_y0_i,
     .ld_valid_i,
@@ -138,12 +145,14 @@ module zb_conf_adapter #(
     .frag_cov_i  (frag_cov_i[CovW-1:0]),
     .idle_o,
     .st_start_i,
+    .st_resolve_i,
     .st_valid_o,
     .st_color_o,
     .st_depth_o  (st_depth),
     .st_cov_o    (st_cov),
     .st_peel_o   (st_peel),
-    .st_acc_o
+    .st_acc_o,
+    .layers_o
   );
 `endif
 

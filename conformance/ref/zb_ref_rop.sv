@@ -11,8 +11,9 @@
 // killed: it writes nothing.
 //
 // With ZB_REF_FULL (profile_full.json) it has the whole datapath: every blend mode (additive,
-// the coverage blend, under, accumulate into the accumulation plane), the peel test and the
-// coverage plane; only blend 6 and 7 (invalid) are killed.
+// the coverage blend, under, accumulate into the accumulation plane, layers into LAYERS slots a
+// pixel, resolved by a store with st_resolve_i), the peel test and the coverage plane; only
+// blend 7 (invalid) is killed.
 //
 // Defects for the kit's own tests: ZB_REF_INJECT_BLEND_BUG drops the 0x80 rounding term of the
 // unorm multiply in the alpha blend; ZB_REF_INJECT_HANG never raises frag_ready_o again once
@@ -30,6 +31,7 @@ module zb_ref_rop #(
   parameter int REV_BITS    = 8,
   /* verilator lint_off UNUSEDPARAM */
   parameter int WEIGHT_BITS = 4,
+  parameter int LAYERS      = 4,                      // layers a pixel, 1 to 8 (ZB_REF_FULL only)
   /* verilator lint_on UNUSEDPARAM */
   parameter int COV_W = $clog2(COV_SAMPLES + 1),      // derived: the coverage count's width
   parameter int ACC_W = 4 * ACC_BITS + REV_BITS       // derived: {r, acc_A, acc_B, acc_G, acc_R}
@@ -39,6 +41,7 @@ module zb_ref_rop #(
   // The pass state register (datapath.md "The pass state"), written while idle_o.
   input  logic                  state_we_i,
   input  logic [12:0]           state_i,
+  input  logic [2:0]            state_layers_i,  // the pass state's [15:13], K - 1 (ZB_REF_FULL)
   // The resident tile's origin in frame pixels.
   input  logic [15:0]           tile_x0_i,
   input  logic [15:0]           tile_y0_i,
@@ -61,14 +64,17 @@ module zb_ref_rop #(
   // No fragment in flight, no load or store under way; rises a random number of cycles late.
   output logic                  idle_o,
   // Tile store: a pulse while idle; pixel 0 is offered in the cycle right after the edge that
-  // takes it, then one pixel each cycle st_valid_o is high, in raster order.
+  // takes it (resolving the layers: LAYERS cycles later), then one pixel each cycle st_valid_o
+  // is high, in raster order.
   input  logic                  st_start_i,
+  input  logic                  st_resolve_i,  // with st_start_i: resolve the layers (ZB_REF_FULL)
   output logic                  st_valid_o,
   output logic [31:0]           st_color_o,
   output logic [DEPTH_BITS-1:0] st_depth_o,
   output logic [COV_W-1:0]      st_cov_o,
   output logic [DEPTH_BITS-1:0] st_peel_o,
-  output logic [ACC_W-1:0]      st_acc_o    // zero without ZB_REF_FULL
+  output logic [ACC_W-1:0]      st_acc_o,   // zero without ZB_REF_FULL
+  output logic [3:0]            layers_o    // LAYERS with ZB_REF_FULL, else 0 (no layers)
 );
 
   localparam int Words = TILE_W * TILE_H;
@@ -197,7 +203,9 @@ module zb_ref_rop #(
   // ---------------------------------------------------------------------------------------
   // The fragment FSM: one fragment from its acceptance to its write, nothing overlapped.
   // ---------------------------------------------------------------------------------------
-  typedef enum logic [2:0] { FWait, FRead, FTest, FBlend, FWrite } fsm_e;
+  // FLayer and FMerge (ZB_REF_FULL): a layers fragment's walk over its pixel's slots, a slot a
+  // cycle, and the merge of the two farthest when the pixel was full.
+  typedef enum logic [2:0] { FWait, FRead, FTest, FBlend, FWrite, FLayer, FMerge } fsm_e;
   fsm_e             fsm_q, fsm_d;
   logic [AddrW-1:0] addr_q, frag_addr;
   logic [D-1:0]     z_q, dst_z_q;
@@ -206,6 +214,7 @@ module zb_ref_rop #(
   logic [1:0]       chan_q;
   logic             zwe_q, cwe_q, frag_take, ld_take, pass, in_profile, zwe_d, cwe_d;
   logic             kill_wr_d;  // a killed fragment that still writes (a defect's path)
+  logic             lay_pass, lay_we_d;  // a passing layers fragment; one that inserts (mask not 0)
   logic [AddrW-1:0] ld_ptr_q, ld_ptr_d;
 
   assign frag_take  = frag_valid_i && frag_ready_o;
@@ -380,7 +389,7 @@ module zb_ref_rop #(
     end
   end
 
-  assign in_profile = blend <= 3'd5;
+  assign in_profile = blend <= 3'd6;
   // The coverage blend passes every fragment; the others test depth, then the peel plane.
   assign pass = blend == 3'd3 ? 1'b1 : in_profile && zpass && (!peel_test || ppass);
   always_comb begin
@@ -399,7 +408,7 @@ module zb_ref_rop #(
 `endif
     end
   end
-  assign cwe_d   = pass && color_mask != 4'd0 && blend != 3'd5;
+  assign cwe_d   = pass && color_mask != 4'd0 && blend != 3'd5 && blend != 3'd6;
   assign kill_wr_d = !pass && zwe_d;
   assign covwe_d = blend == 3'd3;
 `ifdef ZB_REF_DEFECT_ACCUM_MASK_ZERO
@@ -448,12 +457,142 @@ module zb_ref_rop #(
       acc_sh_q  <= acc_sh_q >> A;
     end
   end
+
+  // ---------------------------------------------------------------------------------------
+  // "8. Layers": per pixel LAYERS slots {z, A, R, G, B} (B at bit 0), nearest first, so that a
+  // slot read as a number is the order's key; A = 0 is an empty slot (every slot after a load).
+  // A layers fragment walks slots 0 .. K - 1, a slot a cycle, carrying a layer (its own at
+  // first): the carried layer goes into an empty slot, or into the place of a layer whose key is
+  // above its own, carrying that one on; so it lands after every layer whose key is at most its
+  // own. A layer still carried after slot K - 1 is the farthest of K + 1: FMerge merges it
+  // behind slot K - 1.
+  // ---------------------------------------------------------------------------------------
+  localparam int SW = D + 32;                           // a slot
+  localparam int LW = LAYERS > 1 ? $clog2(LAYERS) : 1;  // a slot's index
+
+  logic [SW-1:0] lay_mem [LAYERS][Words];
+  logic [2:0]    lay_k1_q;  // the pass state's K - 1
+  logic [LW-1:0] lay_j_q, lay_last;
+  logic [SW-1:0] carry_q, carry_d, lay_cur, lay_merged;
+  logic          lay_take, lay_before, lay_over;
+
+  assign lay_pass = pass && blend == 3'd6;
+  assign lay_we_d = lay_pass && color_mask != 4'd0;
+  // K - 1, at most LAYERS - 1.
+  assign lay_last = 32'(lay_k1_q) > LAYERS - 1 ? LW'(LAYERS - 1) : LW'(lay_k1_q);
+
+  // A fragment's layer: p = m(s, a) a colour channel, A = a.
+  function automatic logic [SW-1:0] frag_layer(input logic [D-1:0] z, input logic [31:0] c);
+    return {z, c[31:24], unorm_mul(c[7:0], c[31:24]), unorm_mul(c[15:8], c[31:24]),
+            unorm_mul(c[23:16], c[31:24])};
+  endfunction
+
+  // The merge's product m(p_B, 255 - A_F).
+  function automatic logic [7:0] merge_mul(input logic [7:0] x, input logic [7:0] y);
+`ifdef ZB_REF_DEFECT_LAYERS_MERGE_ROUND
+    logic [15:0] t;
+    t = 16'(x) * 16'(y);
+    return 8'((t + (t >> 8)) >> 8);  // the defect: no + 0x80, the product truncated
+`else
+    return unorm_mul(x, y);
+`endif
+  endfunction
+
+  // Front f over back b as one layer: min(255, f + m(b, 255 - A_f)) every byte, f's depth.
+  function automatic logic [SW-1:0] merge_layers(input logic [SW-1:0] f, input logic [SW-1:0] b);
+    logic [SW-1:0] r;
+    logic [8:0]    sum;
+    r = f;
+    for (int c = 0; c < 4; c++) begin
+      sum = 9'(f[8*c +: 8]) + 9'(merge_mul(b[8*c +: 8], 8'd255 - f[31:24]));
+      r[8*c +: 8] = sum > 9'd255 ? 8'd255 : 8'(sum);
+    end
+    return r;
+  endfunction
+
+  assign lay_cur = lay_mem[lay_j_q][addr_q];
+`ifdef ZB_REF_DEFECT_LAYERS_EQUAL_ORDER
+  // The defect: depths alone, with <=: at equal depth the new layer goes before the others.
+  assign lay_before = carry_q[SW-1:32] <= lay_cur[SW-1:32];
+`else
+  assign lay_before = carry_q < lay_cur;
+`endif
+  assign lay_take = carry_q[31:24] != 8'd0 && (lay_cur[31:24] == 8'd0 || lay_before);
+  assign carry_d  = lay_take ? lay_cur : carry_q;
+  assign lay_over = carry_d[31:24] != 8'd0;  // a layer carried past the slot
+`ifdef ZB_REF_DEFECT_LAYERS_DROP
+  assign lay_merged = lay_mem[lay_last][addr_q];  // the defect: the farthest dropped, not merged
+`else
+  assign lay_merged = merge_layers(lay_mem[lay_last][addr_q], carry_q);
+`endif
+
+  always_ff @(posedge clk_i) begin
+    if (fsm_q == FTest) begin
+      carry_q <= frag_layer(z_q, src_q);  // alpha 0: an empty layer, never placed
+      lay_j_q <= '0;
+    end
+    if (fsm_q == FLayer) begin
+      carry_q <= carry_d;
+      lay_j_q <= lay_j_q + LW'(1);
+    end
+  end
+
+`ifdef ZB_REF_DEFECT_LAYERS_LEFT_OVER
+  // The defect's only clear: every slot emptied once, at time 0.
+  initial for (int j = 0; j < LAYERS; j++) for (int i = 0; i < Words; i++) lay_mem[j][i] = '0;
+`endif
+  // A load empties its pixel's slots; the walk and the merge write one slot. Never in the same
+  // cycle: a load pixel is taken only with no fragment in flight.
+  always_ff @(posedge clk_i) begin
+    if (ld_take) begin
+`ifdef ZB_REF_DEFECT_LAYERS_LEFT_OVER
+      // The defect: the load leaves the layers, so the previous tile's stay.
+`else
+      for (int j = 0; j < LAYERS; j++) lay_mem[j][ld_ptr_q] <= '0;
+`endif
+    end else if (fsm_q == FLayer && lay_take) lay_mem[lay_j_q][addr_q] <= carry_q;
+    else if (fsm_q == FMerge) lay_mem[lay_last][addr_q] <= lay_merged;
+  end
+
+`ifdef ZB_REF_DEFECT_STATE_AT_LOAD
+  logic [2:0] lay_k1_w_q;  // held with the rest of the state until a load begins (the defect)
+`endif
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      lay_k1_q <= '0;
+`ifdef ZB_REF_DEFECT_STATE_AT_LOAD
+      lay_k1_w_q <= '0;
+`endif
+    end else begin
+`ifdef ZB_REF_DEFECT_STATE_AT_LOAD
+      if (state_we_i) lay_k1_w_q <= state_layers_i;
+      if (ld_take && ld_ptr_q == '0) lay_k1_q <= lay_k1_w_q;
+`else
+      if (state_we_i) lay_k1_q <= state_layers_i;
+`endif
+    end
+  end
+
+  // One step of the resolve: min(255, acc + m(p, t)) every channel, in the colour plane's byte
+  // order (R at bit 0). Over the opaque colour is the same step with p = o.
+  function automatic logic [31:0] under_step(input logic [31:0] acc, input logic [31:0] p,
+                                             input logic [7:0] t);
+    logic [31:0] r;
+    logic [8:0]  sum;
+    for (int c = 0; c < 4; c++) begin
+      sum = 9'(acc[8*c +: 8]) + 9'(unorm_mul(p[8*c +: 8], t));
+      r[8*c +: 8] = sum > 9'd255 ? 8'd255 : 8'(sum);
+    end
+    return r;
+  endfunction
 `else
   assign in_profile = blend <= 3'd1 && !peel_test;
   assign pass       = in_profile && zpass;
   assign zwe_d      = depth_test && depth_write;  // datapath.md "2. Depth write"
   assign cwe_d      = color_mask != 4'd0;
   assign kill_wr_d  = 1'b0;
+  assign lay_pass   = 1'b0;
+  assign lay_we_d   = 1'b0;
   logic [7:0] chan_out;
   assign chan_out = blend_alpha(src_sh_q[7:0], dst_sh_q[7:0], src_q[31:24]);
 `endif
@@ -463,11 +602,19 @@ module zb_ref_rop #(
     case (fsm_q)
       FWait:   if (frag_take) fsm_d = FRead;
       FRead:   fsm_d = FTest;
-      FTest:   if (pass && blend != 3'd0) fsm_d = FBlend;
+      FTest:   if (lay_we_d) fsm_d = FLayer;
+               else if (lay_pass) fsm_d = FWrite;  // colour mask 0: the depth write alone
+               else if (pass && blend != 3'd0) fsm_d = FBlend;
                else if (pass || kill_wr_d) fsm_d = FWrite;
                else fsm_d = FWait;  // killed: nothing written
       FBlend:  if (chan_q == 2'd3) fsm_d = FWrite;
       FWrite:  fsm_d = FWait;
+`ifdef ZB_REF_FULL
+      // After slot K - 1: the merge when a layer is still carried (the pixel held K).
+      FLayer:  if (lay_j_q == lay_last && lay_over) fsm_d = FMerge;
+               else if (lay_j_q == lay_last) fsm_d = FWrite;
+      FMerge:  fsm_d = FWrite;
+`endif
       default: fsm_d = FWait;
     endcase
   end
@@ -545,6 +692,7 @@ module zb_ref_rop #(
   // Load and store.
   // ---------------------------------------------------------------------------------------
   logic             st_busy_q, st_busy_d, st_valid_q, st_read;
+  logic             st_hold, st_offer;  // a resolve walk under way; a pixel offered next cycle
   logic [CntW-1:0]  st_next_q;  // the next pixel to read out, Words when all are read
   logic [AddrW-1:0] st_addr;
   logic [31:0]      st_color_q;
@@ -553,10 +701,67 @@ module zb_ref_rop #(
 
   assign ld_ptr_d  = !ld_take ? ld_ptr_q : ld_ptr_q == AddrW'(Words - 1) ? '0 : ld_ptr_q + 1'b1;
   // A store runs from the edge that takes st_start_i to the edge that takes its last pixel.
-  assign st_busy_d = st_busy_q ? st_next_q != CntW'(Words) : st_start_i;
+  assign st_busy_d = st_busy_q ? st_next_q != CntW'(Words) || st_hold : st_start_i;
   // The first pixel is read at the edge that takes st_start_i, whatever the stall byte says.
-  assign st_read   = st_busy_q ? st_next_q != CntW'(Words) && !stall_st : st_start_i;
+  assign st_read   = st_busy_q ? st_next_q != CntW'(Words) && !stall_st && !st_hold : st_start_i;
   assign st_addr   = st_busy_q ? AddrW'(st_next_q) : '0;
+
+`ifdef ZB_REF_FULL
+  // The resolve (st_resolve_i with st_start_i): after a pixel's read, its slots under acc, one
+  // a cycle front to back, then its colour under acc is offered; the next read waits for the
+  // edge that takes it, as st_color_q holds it.
+  logic             rs_on_q, rs_on_d, rs_walk_q, rs_done;
+  logic [LW-1:0]    rs_j_q, rs_slot;
+  logic [AddrW-1:0] rs_addr_q;
+  logic [SW-1:0]    rs_lay;
+  logic [31:0]      rs_acc_q, rs_acc_d, rs_color;
+  logic [7:0]       rs_t;
+  assign rs_on_d = st_busy_q ? rs_on_q : st_start_i && st_resolve_i;
+  assign rs_done = rs_walk_q && rs_j_q == LW'(LAYERS - 1);
+`ifdef ZB_REF_DEFECT_LAYERS_RESOLVE_ORDER
+  assign rs_slot = LW'(LAYERS - 1) - rs_j_q;  // the defect: back to front
+`else
+  assign rs_slot = rs_j_q;
+`endif
+  assign rs_lay = lay_mem[rs_slot][rs_addr_q];
+`ifdef ZB_REF_DEFECT_LAYERS_TRANS_SAT
+  assign rs_t = 8'd0 - rs_acc_q[31:24];  // the defect: 1 - acc_A as 256 - acc_A, 0 at acc_A = 0
+`else
+  assign rs_t = 8'd255 - rs_acc_q[31:24];
+`endif
+  // The slot's {A, R, G, B} in the colour plane's order {A, B, G, R}.
+  assign rs_acc_d = under_step(rs_acc_q, {rs_lay[31:24], rs_lay[7:0], rs_lay[15:8], rs_lay[23:16]},
+                               rs_t);
+  assign rs_color = under_step(rs_acc_d, st_color_q, 8'd255 - rs_acc_d[31:24]);
+  assign st_hold  = rs_walk_q;
+  assign st_offer = rs_on_d ? rs_done : st_read;
+  logic unused_rs_z;
+  assign unused_rs_z = ^rs_lay[SW-1:32];
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      rs_on_q   <= 1'b0;
+      rs_walk_q <= 1'b0;
+    end else begin
+      rs_on_q <= rs_on_d;
+      if (st_read) rs_walk_q <= rs_on_d;
+      else if (rs_done) rs_walk_q <= 1'b0;
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    if (st_read) begin
+      rs_j_q    <= '0;
+      rs_acc_q  <= '0;
+      rs_addr_q <= st_addr;
+    end else if (rs_walk_q) begin
+      rs_j_q   <= rs_j_q + LW'(1);
+      rs_acc_q <= rs_acc_d;
+    end
+  end
+`else
+  assign st_hold  = 1'b0;
+  assign st_offer = st_read;
+`endif
 
   // Memory writes: the load port, and the fragment's write (never the same cycle: a load pixel
   // is taken only while no fragment is in flight).
@@ -626,6 +831,9 @@ module zb_ref_rop #(
       st_acc_q   <= acc_mem[st_addr];
 `endif
     end
+`ifdef ZB_REF_FULL
+    else if (rs_done) st_color_q <= rs_color;  // the resolved colour, in place of the read one
+`endif
   end
 
   // ---------------------------------------------------------------------------------------
@@ -660,7 +868,7 @@ module zb_ref_rop #(
       rng_q      <= rng_d;
       ld_ptr_q   <= ld_ptr_d;
       st_busy_q  <= st_busy_d;
-      st_valid_q <= st_read;  // a pixel read at this edge is offered until the next
+      st_valid_q <= st_offer;  // a pixel read (or resolved) at this edge is offered until the next
       if (st_read) st_next_q <= st_busy_q ? st_next_q + 1'b1 : CntW'(1);
       ld_ready_q   <= fsm_d == FWait && !st_busy_d && !stall_ld;
       frag_ready_q <= fsm_d == FWait && !st_busy_d && ld_ptr_d == '0 && !stall_frag && !hang;
@@ -678,11 +886,13 @@ module zb_ref_rop #(
   assign st_peel_o    = st_peel_q;
 `ifdef ZB_REF_FULL
   assign st_acc_o     = st_acc_q;
+  assign layers_o     = 4'(LAYERS);
 `else
   assign st_acc_o     = '0;
-  // The subset has no accumulate or coverage blend: these inputs are not read.
+  assign layers_o     = 4'd0;
+  // The subset has no accumulate, coverage or layers blend: these inputs are not read.
   logic unused_full;
-  assign unused_full = ^{ld_acc_i, frag_cov_i};
+  assign unused_full = ^{ld_acc_i, frag_cov_i, state_layers_i, st_resolve_i};
 `endif
 
 endmodule
