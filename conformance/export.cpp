@@ -32,6 +32,7 @@ std::vector<std::string> trace_features(const Trace& trace) {
     const RopState& s = p.state;
     f.insert(fmt::format("blend.{}", to_string(s.blend)));
     if (s.blend == BlendMode::kAccumulate) f.insert("accum_plane");
+    if (s.blend == BlendMode::kLayers) f.insert(fmt::format("layers.{}", s.layers));
     const bool coverage = is_coverage_pass(s);
     if (s.depth_test && !coverage) f.insert(fmt::format("depth_func.{}", to_string(s.depth_func)));
     if (s.depth_test && s.depth_write) f.insert("depth_write");

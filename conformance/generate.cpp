@@ -1,8 +1,11 @@
 #include "generate.h"
 
 #include <algorithm>
+#include <utility>
 #include <stdexcept>
 #include <string>
+
+#include <fmt/core.h>
 
 #include "reach.h"
 #include "stimulus.h"
@@ -12,7 +15,7 @@ namespace {
 
 // Fixed seeds, one a family, so that a family's bytes never depend on another's draws.
 constexpr uint64_t kStatesSeed = 61, kDepthBitsSeed = 62, kValuesSeed = 63, kCoverageSeed = 64,
-                   kAccumSeed = 65, kTilesSeed = 66, kSamePixelSeed = 67;
+                   kAccumSeed = 65, kTilesSeed = 66, kSamePixelSeed = 67, kLayersSeed = 68;
 constexpr int kDraws = 4096;  // draws for one visible pixel before the generator gives up
 
 const Rgba8 kClear{12, 34, 56, 78};
@@ -310,8 +313,9 @@ Trace same_pixel_trace(BlendMode blend, int depth_bits, int samples) {
   const uint32_t zmax = depth_max(depth_bits);
   const bool coverage = blend == BlendMode::kCoverage;
   // Depth tested and written where the blend allows it, so the depth plane's hazard is in play.
-  const RopState s = state_of(coverage, coverage ? DepthFunc::kLess : DepthFunc::kAlways, coverage,
-                              blend, kMaskRgba, false);
+  RopState s = state_of(coverage, coverage ? DepthFunc::kLess : DepthFunc::kAlways, coverage,
+                        blend, kMaskRgba, false);
+  if (blend == BlendMode::kLayers) s.layers = kKitLayers;  // runs longer than K merge
   TracePass pass{std::string("runs-") + to_string(blend), {}, s, {}};
   TracePass depth{"runs-depth", {},
                   state_of(true, DepthFunc::kLequal, true, BlendMode::kReplace, kMaskRgba, false), {}};
@@ -331,6 +335,126 @@ Trace same_pixel_trace(BlendMode blend, int depth_bits, int samples) {
   t.passes.push_back(std::move(pass));
   if (blend == BlendMode::kAlpha) t.passes.push_back(std::move(depth));
   if (blend == BlendMode::kAccumulate) t.final_ops.push_back({FrameOpKind::kResolveWboit, {}, 0, false});
+  if (blend == BlendMode::kLayers) t.final_ops.push_back({FrameOpKind::kResolveLayers, {}, 0, false});
+  return t;
+}
+
+Trace layers_trace(int depth_bits, int samples) {
+  tb::Rng r(kLayersSeed);
+  constexpr int kW = 192, kH = 64;  // whole tiles of 16, 32 and 64: layers on every tile
+  constexpr int kStride = 37;       // case i on pixel 37 i: every tile of every size gets some
+  Trace t = frame(kW, kH, depth_bits, samples);
+  const uint32_t zmax = depth_max(depth_bits);
+  const uint32_t step = std::max<uint32_t>(4, zmax >> 6);  // between a case's layers
+  const uint32_t base = zmax >> 3;
+  int next = 0;
+  auto pixel = [&] {
+    const int i = next++ * kStride % (kW * kH);
+    return std::pair<uint16_t, uint16_t>{uint16_t(i % kW), uint16_t(i / kW)};
+  };
+  auto layer_color = [&](uint8_t a) {
+    Rgba8 c = random_color(r);
+    c.a = a;
+    return c;
+  };
+  auto put = [&](TracePass& p, std::pair<uint16_t, uint16_t> px, uint32_t z, Rgba8 c) {
+    Fragment f;
+    f.x = px.first;
+    f.y = px.second;
+    f.z = std::min(z, zmax - 1);
+    f.color = c;
+    p.fragments.push_back(f);
+  };
+  // Opaque surfaces on some pixels (depth written): the layers behind them are killed.
+  TracePass opaque = setup_pass("opaque", {});
+  auto layers_pass = [&](const std::string& name, int k, DepthFunc func, bool write, uint8_t mask) {
+    RopState s = state_of(true, func, write, BlendMode::kLayers, mask, false);
+    s.layers = uint8_t(k);
+    return TracePass{name, {}, s, {}};
+  };
+  std::vector<TracePass> passes;
+  for (int k = 1; k <= kKitLayers; ++k) {
+    TracePass p = layers_pass(fmt::format("layers-k{}", k), k, DepthFunc::kLess, false, kMaskRgba);
+    // Every position 0..n among n = 0..K layers: full when n = K (the merge at each place).
+    for (int rep = 0; rep < 3; ++rep)
+      for (int n = 0; n <= k; ++n)
+        for (int pos = 0; pos <= n; ++pos) {
+          const auto px = pixel();
+          for (int j = 0; j < n; ++j)
+            put(p, px, base + step * uint32_t(2 * j + 2), layer_color(uint8_t(40 + r.below(215))));
+          put(p, px, base + step * uint32_t(2 * pos + 1), layer_color(uint8_t(40 + r.below(215))));
+        }
+    // Equal depths: a fragment at a layer's depth with a smaller and a larger colour word, and
+    // one with the same key, after n layers (full or not).
+    for (int n = 1; n <= k; ++n)
+      for (int j = 0; j < n; ++j)
+        for (int which = 0; which < 3; ++which) {
+          const auto px = pixel();
+          std::vector<Rgba8> cs;
+          for (int i = 0; i < n; ++i) cs.push_back(layer_color(uint8_t(60 + r.below(150))));
+          for (int i = 0; i < n; ++i) put(p, px, base + step * uint32_t(i + 1), cs[size_t(i)]);
+          Rgba8 c = cs[size_t(j)];
+          if (which == 0) c.a = uint8_t(c.a - 1 - r.below(20));
+          if (which == 1) c.a = uint8_t(c.a + 1 + r.below(20));
+          put(p, px, base + step * uint32_t(j + 1), c);
+        }
+    // The same fragments in every order (two at equal depth): at most K, the layers are the
+    // same whatever the order; one more and the merge shows the order.
+    for (int extra = 0; extra < 2; ++extra) {
+      const int n = std::min(k, 3) + extra;
+      std::vector<std::pair<uint32_t, Rgba8>> set;
+      for (int i = 0; i < n; ++i)
+        set.push_back({base + step * uint32_t(i == 1 ? 1 : i + 1), layer_color(uint8_t(50 + r.below(200)))});
+      std::vector<int> order(static_cast<size_t>(n));
+      for (int i = 0; i < n; ++i) order[size_t(i)] = i;
+      do {
+        const auto px = pixel();
+        for (int i : order) put(p, px, set[size_t(i)].first, set[size_t(i)].second);
+      } while (std::next_permutation(order.begin(), order.end()));
+    }
+    // Long runs: merges on merges, random depths and alphas (high ones saturate the resolve's
+    // coverage of the pixel), alpha 0 among them.
+    for (int run = 0; run < 8; ++run) {
+      const auto px = pixel();
+      const int len = 5 + int(r.below(10));
+      for (int i = 0; i < len; ++i) {
+        const uint8_t a = run < 2 ? uint8_t(230 + r.below(26)) : r.chance(0.15) ? 0 : uint8_t(1 + r.below(255));
+        put(p, px, base + r.below(step * 16), layer_color(a));
+      }
+    }
+    // Behind an opaque surface (killed) and in front of it, with alpha 0 on an empty pixel.
+    for (int i = 0; i < 4; ++i) {
+      const auto px = pixel();
+      put(opaque, px, base + step * 3, layer_color(255));
+      put(p, px, base + step * 2, layer_color(uint8_t(100 + r.below(100))));
+      put(p, px, base + step * 4, layer_color(uint8_t(100 + r.below(100))));
+      put(p, px, base + step * 3, layer_color(uint8_t(100 + r.below(100))));
+    }
+    put(p, pixel(), base + step, layer_color(0));
+    passes.push_back(std::move(p));
+  }
+  // Pass states beside the method's: the mask 0 (no access) and a partial mask (the whole word),
+  // depth written in layers mode (lequal: a later fragment behind it is killed), the test off.
+  TracePass masked = layers_pass("layers-mask0", 2, DepthFunc::kLess, false, 0);
+  TracePass partial = layers_pass("layers-mask-r", 3, DepthFunc::kLequal, true, 1);
+  TracePass off = layers_pass("layers-test-off", 4, DepthFunc::kNever, false, kMaskRgba);
+  off.state.depth_test = false;
+  for (TracePass* p : {&masked, &partial, &off})
+    for (int i = 0; i < 12; ++i) {
+      const auto px = pixel();
+      for (int j = 0; j < 3 + int(r.below(3)); ++j)
+        put(*p, px, base + r.below(step * 8), layer_color(uint8_t(1 + r.below(255))));
+    }
+  passes.push_back(std::move(masked));
+  passes.push_back(std::move(partial));
+  passes.push_back(std::move(off));
+  // The opaque pass first; each layers pass resolved before the next.
+  t.passes.push_back(std::move(opaque));
+  for (TracePass& p : passes) {
+    if (t.passes.size() > 1) p.frame_ops.push_back({FrameOpKind::kResolveLayers, {}, 0, false});
+    t.passes.push_back(std::move(p));
+  }
+  t.final_ops.push_back({FrameOpKind::kResolveLayers, {}, 0, false});
   return t;
 }
 

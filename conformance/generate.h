@@ -42,4 +42,16 @@ Trace tiles_trace(int depth_bits, int samples);
 // (the depth plane's own read-modify-write).
 Trace same_pixel_trace(BlendMode blend, int depth_bits, int samples);
 
+// The most layers a pixel the kit's tests keep (mlab-K's K): zb_rop's LAYERS in its adapter
+// (conformance/sv/zb_conf_adapter.sv) and the reference DUT's, so the plan's layers bins too.
+constexpr int kKitLayers = 4;
+
+// Layers mode (suite version 7) at K = 1 to kKitLayers, each case on a pixel of its own, spread
+// over every tile of each size: a fragment at every position among 0 to K layers (full: the
+// merge there), at a layer's depth with a smaller, a larger and the same colour word, the same
+// fragments in every order, long runs of merges with high alphas and alpha 0, layers behind and
+// in front of an opaque surface; then passes with the colour mask 0, a partial mask with depth
+// written, the depth test off. Each layers pass resolved (frame operation 5) before the next.
+Trace layers_trace(int depth_bits, int samples);
+
 }  // namespace zb::conformance

@@ -10,7 +10,9 @@
 
 #include "parallel/parallel.h"
 #include "rop/blend.h"
+#include "rop/layers.h"
 #include "rop/rop.h"
+#include "generate.h"
 #include "suite.h"
 
 namespace zb::conformance {
@@ -28,7 +30,8 @@ constexpr int kGoalDepthBits[] = {16, 24, 32};
 constexpr int kGoalSamples[] = {4, 16};
 constexpr int kRunDistances = 16;  // same-pixel runs under read-modify-write blends
 const BlendMode kRmwBlends[] = {BlendMode::kAlpha, BlendMode::kAdditive, BlendMode::kCoverage,
-                                BlendMode::kUnder, BlendMode::kAccumulate};
+                                BlendMode::kUnder, BlendMode::kAccumulate, BlendMode::kLayers};
+
 
 int relation(uint32_t z, uint32_t stored) { return z < stored ? 0 : z == stored ? 1 : 2; }
 
@@ -91,6 +94,48 @@ void tb_order(const Trace& t, const DutShape& shape, Visit visit) {
   }
 }
 
+// A layers write's bins, as zb_layers_insert's covers sample it (at X11, with the pixel's
+// layers before it): where it went and whether the pixel was full, equal depths and keys, K at
+// a merge; alpha 0 writes the word back unchanged.
+void count_layers(BinCounts& bins, int k, const PixelLayers& px, const Layer& f) {
+  if (f.p.a == 0) {
+    ++bins["layers_cases.alpha_zero"];
+    return;
+  }
+  const bool full = px.n == k;
+  ++bins[fmt::format("layers_insert[position={},full={}]", layer_position(px, f),
+                     full ? "yes" : "no")];
+  if (full) {
+    ++bins[fmt::format("layers_k[k={}]", k)];
+    ++bins["layers_cases.merge"];
+  }
+  bool eq_z = false, eq_key = false;
+  for (int j = 0; j < px.n; ++j) {
+    eq_z |= px.layer[size_t(j)].z == f.z;
+    eq_key |= px.layer[size_t(j)] == f;
+  }
+  if (eq_key) ++bins["layers_cases.equal_key"];
+  else if (eq_z) ++bins["layers_cases.equal_depth"];
+}
+
+// Whether a store resolves the layers (st_resolve_i): a resolve of the layers right after a
+// group of passes (the testbench's: one pass, or on resident tiles those since the last frame
+// operation) in which some fragment loaded a tile.
+bool resolves_layers(const Trace& t, const DutShape& shape) {
+  auto resolve_in = [](const std::vector<FrameOp>& ops) {
+    return !ops.empty() && ops.front().kind == FrameOpKind::kResolveLayers;
+  };
+  for (size_t p = 0; p < t.passes.size(); ++p) {
+    const bool last = p + 1 == t.passes.size();
+    if (!resolve_in(last ? t.final_ops : t.passes[p + 1].frame_ops)) continue;
+    for (size_t g = p + 1; g-- > 0;) {
+      if (!t.passes[g].fragments.empty()) return true;
+      if (!shape.resident || !t.passes[g].frame_ops.empty()) break;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 std::vector<RopState> pass_states() {
@@ -121,6 +166,8 @@ bool visible(const RopState& state, const Fragment& f, const StoredPixel& p, int
         if (w.acc[size_t(c)] == p.acc[size_t(c)]) return false;
       return w.reveal != p.reveal;
     }
+    case BlendMode::kLayers:  // no pass-state goal: the layers' own bins below
+      return false;
     case BlendMode::kCoverage: {
       const CoveragePixel c = composite_coverage(f.z, f.color, f.coverage, p.depth, p.color,
                                                  p.coverage, samples);
@@ -162,9 +209,12 @@ BinCounts trace_reach(const Trace& t, const DutShape& shape) {
                                fb.reveal_at(i)};
       const uint32_t peel = fb.peel[i];
       const int rel = relation(f.z, before.depth);
+      const PixelLayers layers = fb.layers_at(i);
       const PixelWrites w = golden.process(f);
+      if (w.layers) count_layers(bins, s.layers, layers, fragment_layer(f.z, f.color));
 
-      ++bins["pass_state[" + dims + "]"];
+      if (s.blend != BlendMode::kLayers)  // the plan's cross leaves layers mode out
+        ++bins["pass_state[" + dims + "]"];
       if (s.depth_test && !cov_mode)
         ++bins[fmt::format("depth_compare[func={},relation={}]", to_string(s.depth_func),
                            kRelations[rel])];
@@ -238,6 +288,7 @@ BinCounts trace_reach(const Trace& t, const DutShape& shape) {
     }
     golden.end_pass();
   }
+  if (resolves_layers(t, shape)) ++bins["layers_cases.resolve_read"];
 
   for (int tile : kGoalTiles)
     if (t.width % tile == 0 && t.height % tile == 0 && t.width >= 2 * tile && t.height >= 2 * tile)
@@ -340,6 +391,14 @@ BinList reach_bins(const DutShape& shape) {
       plan.push_back(fmt::format("plane_ops[plane={},op={}]", p, op));
   plan.push_back("frame_ops.state_write");
   plan.push_back("pass_resident.boundary");
+  for (int pos = 0; pos <= kKitLayers; ++pos)
+    for (const char* full : {"no", "yes"})
+      plan.push_back(fmt::format("layers_insert[position={},full={}]", pos, full));
+  for (int k = 1; k <= kKitLayers; ++k) plan.push_back(fmt::format("layers_k[k={}]", k));
+  for (const char* c : {"b", "g", "r", "a"})
+    plan.push_back(fmt::format("layers_merge_saturation[channel={}]", c));
+  for (const char* b : {"equal_depth", "equal_key", "alpha_zero", "merge", "resolve_read"})
+    plan.push_back(fmt::format("layers_cases.{}", b));
 
   std::vector<std::string>& goals = out.goals;
   for (const std::string& s : states)

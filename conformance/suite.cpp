@@ -42,10 +42,10 @@ const char* const kQuick[] = {
     "states-replace-peel", "states-additive-peel", "states-coverage-peel", "states-under",
     "states-under-peel", "states-accumulate-peel", "states-coverage", "states-accumulate",
     "values-replace", "random-c4", "depth-bits-d32", "depth-bits", "values-coverage",
-    "depth-bits-d16", "tiles", "values-coverage-c4", "cad-coverage-aa", "cad-depth-peel-2",
-    "particles-facing-additive", "hazard", "glass-torus-back-front", "values-accumulate",
-    "glass-torus-facing-additive", "particles-back-front", "sphere-torus-wboit",
-    "values-additive"};
+    "depth-bits-d16", "particles-mlab-4", "tiles", "values-coverage-c4", "cad-coverage-aa",
+    "cad-depth-peel-2", "particles-facing-additive", "layers-cases", "hazard",
+    "glass-torus-back-front", "values-accumulate", "glass-torus-facing-additive",
+    "particles-back-front", "sphere-torus-wboit", "values-additive", "sphere-torus-mlab-2"};
 
 // A plan that came with suite version 3 (its accumulate passes and resolve read and write the
 // accumulation plane): its tests follow the base config's earlier ones, so no name moves.
@@ -162,14 +162,13 @@ const char* to_string(Family f) {
     case Family::kAccumValues: return "values-accumulate";
     case Family::kTiles: return "tiles";
     case Family::kSamePixel: return "same-pixel";
+    case Family::kLayers: return "layers-cases";
   }
   return "?";
 }
 
 std::vector<TestSpec> suite_tests(bool quick) {
   std::vector<TestSpec> all;
-  // mlab-K's layers are not in the kit yet: its profile has no layers feature, and the suite's
-  // scenes keep the methods they had (docs/conformance.md).
   for (const SceneInfo& s : builtin_scenes())
     for (const PassPlan& p : pass_plans())
       if (!uses_accumulation(p) && !uses_blend(p, BlendMode::kLayers))
@@ -191,6 +190,13 @@ std::vector<TestSpec> suite_tests(bool quick) {
     all.push_back(random_test(*c, RandomMix::kCore));  // version 5
     add_generated(all, *c);
   }
+  // Version 7: mlab-K's layers (a profile's blend.layers and layers.K).
+  for (const SceneInfo& s : builtin_scenes())
+    for (const PassPlan& p : pass_plans())
+      if (uses_blend(p, BlendMode::kLayers)) all.push_back(scene_test(kBase, s.name, p.name));
+  all.push_back(generated_test(kBase, Family::kLayers));
+  all.push_back(generated_test(kBase, Family::kSamePixel, BlendMode::kLayers));
+  for (const Config* c : {&kDepth16, &kDepth32}) all.push_back(generated_test(*c, Family::kLayers));
   for (TestSpec& t : all)
     t.quick = std::find(std::begin(kQuick), std::end(kQuick), t.name) != std::end(kQuick);
   if (quick)
@@ -257,6 +263,7 @@ Trace test_trace(const TestSpec& t) {
         case Family::kAccumValues: trace = accumulate_values_trace(b, n); break;
         case Family::kTiles: trace = tiles_trace(b, n); break;
         case Family::kSamePixel: trace = same_pixel_trace(t.blend, b, n); break;
+        case Family::kLayers: trace = layers_trace(b, n); break;
       }
       break;
     }

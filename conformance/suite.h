@@ -25,7 +25,10 @@ constexpr const char* kSuiteName = "zblend-conformance";
 // end of their configs' groups; the tiers (quick chosen by the reach's ranking, full, and the
 // seeded random tier); the manifest's "tier" and, for a generated test, "family" (the other
 // tests' bytes as in version 5).
-constexpr int kSuiteVersion = 6;
+// Version 7: mlab-K's layers (blend 6): PASS carries the 16-bit pass state ([15:13] K - 1),
+// FRAME_OP kind 5 resolves the layers; the scenes with mlab-2 and mlab-4, the layers family, the
+// same-pixel runs of layers, at the end of the suite (the other tests' bytes as in version 6).
+constexpr int kSuiteVersion = 7;
 
 // Bad input to the kit (a malformed suite, a path it cannot use, an unknown test): one line.
 struct ConformanceError : std::runtime_error {
@@ -44,7 +47,9 @@ enum class TestKind { kScene, kHazard, kRandom, kGenerated };
 const char* to_string(TestKind k);  // "scene", "hazard", "random", "generated": the manifest's kind
 
 // A generated test's family (generate.h).
-enum class Family { kStates, kDepthBits, kValues, kCoverageValues, kAccumValues, kTiles, kSamePixel };
+enum class Family {
+  kStates, kDepthBits, kValues, kCoverageValues, kAccumValues, kTiles, kSamePixel, kLayers
+};
 const char* to_string(Family f);  // "states", "depth-bits", ...: the manifest's family
 
 struct TestSpec {

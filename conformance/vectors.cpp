@@ -34,9 +34,8 @@ constexpr Field kOpcodeField{120, 8};
 constexpr Field kFrameWidth{0, 16}, kFrameHeight{16, 16}, kFrameDepthBits{32, 8},
     kFrameSamples{40, 8}, kFrameClear{64, 32}, kFrameAccBits{96, 8}, kFrameRevBits{104, 8},
     kFrameWeightBits{112, 8};
-// The kit's pass state is the core register and its frame operations the core ones: mlab-K's
-// layers are not in the kit yet.
-constexpr Field kPassState{0, kCoreStateBits};
+// The whole 16-bit pass state: [15:13] is mlab-K's K - 1 (the adapter's state_layers_i).
+constexpr Field kPassState{0, kStateBits};
 constexpr Field kFragX{0, 16}, kFragY{16, 16}, kFragZ{32, 32}, kFragRgba{64, 32},
     kFragCoverage{96, 8};
 constexpr Field kOpKind{0, 4}, kOpValue{32, 32}, kOpDepth{64, 32};
@@ -74,7 +73,7 @@ class Writer {
       Word w(kOpFrameOp);
       w.field(kOpKind, uint64_t(op.kind));
       // Unused fields stay zero: the value for the clears of colour and the resolve under, the
-      // depth for the depth clear; the resolve wboit has none.
+      // depth for the depth clear; the resolves of wboit and layers have none.
       if (op.kind == FrameOpKind::kClearColor || op.kind == FrameOpKind::kResolveUnder)
         w.field(kOpValue, pack(op.value));
       if (op.kind == FrameOpKind::kClearDepth) w.field(kOpDepth, op.depth);
@@ -263,9 +262,9 @@ Trace decode_stream(const std::string& text, const std::string& name) {
         pass = TracePass{fmt::format("pass-{}", t.passes.size() + 1), std::move(ops), {}, {}};
         ops.clear();
         const uint64_t state = w.get(kPassState);
-        if (!unpack_core_state(state, pass.state))
+        if (!unpack_state(uint16_t(state), pass.state))
           in.fail(fmt::format("PASS: state 0x{:x} is not a pass state register (blend [7:5] at "
-                              "most 5; docs/datapath.md \"The pass state\")", state));
+                              "most 6; docs/datapath.md \"The pass state\")", state));
         in_pass = true;
         pass_line = in.line();
         break;
@@ -303,10 +302,10 @@ Trace decode_stream(const std::string& text, const std::string& name) {
         check_fields({kOpKind, kOpValue, kOpDepth});
         check_between_passes();
         const uint64_t kind = w.get(kOpKind);
-        if (kind >= kCoreFrameOpKinds)
+        if (kind >= kFrameOpKinds)
           in.fail(fmt::format("FRAME_OP: kind {} is not a frame operation (0 clear colour, 1 clear "
-                              "depth, 2 copy depth to peel, 3 resolve under, 4 resolve wboit)",
-                              kind));
+                              "depth, 2 copy depth to peel, 3 resolve under, 4 resolve wboit, 5 "
+                              "resolve layers)", kind));
         FrameOp o;
         o.kind = FrameOpKind(kind);
         o.value = unpack(uint32_t(w.get(kOpValue)));

@@ -31,8 +31,8 @@ Tiers: --quick runs the manifest's quick tier (the fewest tests keeping the most
 the whole suite is the full tier; `zblend conformance export --seed N` writes the seeded random
 tier, a suite of its own.
 
-Suite versions: 6 (generated tests, tiers). Earlier suites lack what this script selects by:
-export the suite again with this zblend.
+Suite versions: 7 (mlab-K's layers; 6 added the generated tests and tiers). Earlier suites lack
+what this script selects by or the layers tests: export the suite again with this zblend.
 """
 import argparse
 import concurrent.futures
@@ -51,12 +51,14 @@ import time
 import xml.etree.ElementTree as ET
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SUITE_VERSIONS = (6,)  # the versions this script runs (conformance/suite.h kSuiteVersion)
+SUITE_VERSIONS = (7,)  # the versions this script runs (conformance/suite.h kSuiteVersion)
 # Why each earlier version is refused.
 REFUSED = {v: "it has no per-test features or file checksums (version 5 added them)"
            for v in range(1, 5)}
 REFUSED[5] = ("it has no tiers and none of the tests generated from the coverage plan "
               "(version 6 added them)")
+REFUSED[6] = ("it has no tests of mlab-K's layers, and its PASS words carry the 13-bit pass "
+              "state (version 7 added them)")
 TIMINGS = {"tight": 0, "loose": 1, "random": 2}  # zb_conf_tb's +timing
 PLANES = ("color", "depth", "coverage", "peel", "accum")
 # The testbench's parameters that each test's configuration sets (manifest "configs").
@@ -77,6 +79,7 @@ FEATURES = (["blend." + b for b in ("replace", "alpha", "additive", "coverage", 
                                     "accumulate")]
             + ["depth_func." + f for f in ("never", "less", "equal", "lequal", "greater",
                                            "notequal", "gequal", "always")]
+            + ["blend.layers"] + [f"layers.{k}" for k in range(1, 9)]
             + ["depth_write", "color_mask", "peel_test", "accum_plane"]
             + [f"depth_bits.{b}" for b in range(8, 33)] + [f"coverage_samples.{n}" for n in
                                                              (1, 2, 4, 8, 16)])
@@ -86,10 +89,12 @@ PROFILE_KEYS = {"dut", "features", "params", "retire_port", "resident_tile", "so
 # The waves' save file: the testbench's signals by role (zb_conf_tb.sv), hex for buses.
 WAVE_GROUPS = [
     ("testbench: pass, fragment offered (index in the pass), tile, pass state",
-     ["pass_index", "frag_index", "tile_x0[15:0]", "tile_y0[15:0]", "state[12:0]"]),
+     ["pass_index", "frag_index", "tile_x0[15:0]", "tile_y0[15:0]", "state[12:0]",
+      "state_layers[2:0]"]),
     ("fragments", ["clk", "frag_valid", "frag_ready", "frag_x[15:0]", "frag_y[15:0]",
                    "frag_z[31:0]", "frag_rgba[31:0]", "frag_cov[7:0]", "idle"]),
-    ("tile load and store", ["ld_valid", "ld_ready", "ld_color[31:0]", "st_start", "st_valid",
+    ("tile load and store", ["ld_valid", "ld_ready", "ld_color[31:0]", "st_start", "st_resolve",
+                             "st_valid",
                              "st_color[31:0]", "st_depth[31:0]"]),
     ("retire port (lock-step)", ["ret_d_valid", "ret_d_pixel[31:0]", "ret_dwe", "ret_wdepth[31:0]",
                                  "ret_vwe", "ret_wcov[7:0]", "ret_c_valid", "ret_c_pixel[31:0]",
@@ -366,6 +371,8 @@ def run_test(test, run_cmd, a):
          "%Error"))), "")
     if timed_out:
         first = f"killed after {a.timeout} s (--timeout){': ' + first if first else ''}"
+    elif skipped and finished:  # the testbench's reason: "zb_conf: skip: STREAM: why"
+        first = next(ln for ln in lines if ln.startswith("zb_conf: skip:")).split(": ", 3)[-1]
     elif not finished and not first:
         first = f"the simulation exited {p.returncode} without its done line (sim.log)"
     # The DUT's planes, as the testbench read them from the adapter.
@@ -373,6 +380,12 @@ def run_test(test, run_cmd, a):
                    for ln in lines)
     hint = "timeout" if timed_out else "not_supported" if skipped and finished else ""
     return test["name"], finished, secs, first, hint, no_accum
+
+
+def layers_skip(sim):
+    """Whether a run (finished, seconds, first line, hint) was skipped by the testbench for the
+    layers its test keeps a pixel (more than the adapter's layers_o)."""
+    return sim[3] == "not_supported" and "layers a pixel" in sim[2]
 
 
 def strip_option(argv, name):
@@ -591,7 +604,7 @@ def main():
         no_accum |= lacks_accum
         sims[name] = (finished, secs, first, hint)
         # The simulation's end only: whether it passed is the checker's line, after it.
-        verdict = ("skipped (no accumulation plane)" if hint == "not_supported" else
+        verdict = ("skipped" if hint == "not_supported" else
                    "ran" if finished else "TIMEOUT" if hint == "timeout" else "FAILED")
         print(f"conformance: [{i}/{len(runs)}] {verdict} {name} {secs:.1f} s"
               + (f": {first}" if first else ""), file=sys.stderr, flush=True)
@@ -614,7 +627,10 @@ def main():
     print(f"conformance: {len(sims)} simulations on {a.sim} in {time.time() - t0:.0f} s, "
           f"{len(unfinished)} failed to finish", file=sys.stderr)
 
-    finished = [t["name"] for t in to_run if sims.get(t["name"], (False,))[0]]
+    # The checker judges what ran; a test the testbench skipped for the layers it keeps wrote
+    # nothing (the checker's --no-accum names the accumulation plane's skips itself).
+    finished = [t["name"] for t in to_run if sims.get(t["name"], (False,))[0]
+                and not layers_skip(sims[t["name"]])]
     if not a.first_fail:
         checked.update(check_tests(a, finished, no_accum))
 
@@ -637,6 +653,8 @@ def main():
                 r.update(verdict="fail", message=first)
             elif word == "pass":
                 r.update(verdict="pass", message="")
+            elif layers_skip(sims[name]):
+                r.update(verdict="not_supported", message=first)
             elif word == "skip" or hint == "not_supported":
                 r.update(verdict="not_supported",
                          message="the DUT has no accumulation plane (planes_o[4] low)")
@@ -650,9 +668,15 @@ def main():
         for r in results:
             for feat in unsupported.get(r["name"], []):
                 needs[feat] = needs.get(feat, 0) + 1
-        print("conformance: NOT SUPPORTED by the profile: " + ", ".join(
-            f"{k} ({v} tests)" for k, v in sorted(needs.items(), key=lambda kv: -kv[1])),
-            file=sys.stderr)
+        if needs:
+            print("conformance: NOT SUPPORTED by the profile: " + ", ".join(
+                f"{k} ({v} tests)" for k, v in sorted(needs.items(), key=lambda kv: -kv[1])),
+                file=sys.stderr)
+        skipped = sum(r["verdict"] == "not_supported" and r["name"] not in unsupported
+                      for r in results)
+        if skipped:
+            print(f"conformance: NOT SUPPORTED by the DUT (skipped by the testbench: planes_o, "
+                  f"layers_o): {skipped} tests", file=sys.stderr)
     print(f"conformance: {counts['pass']} pass, {counts['fail']} fail, {counts['not_supported']} "
           f"not supported, {counts['timeout']} timeout, "
           + (f"{counts['not_run']} not run (--first-fail), " if counts["not_run"] else "")

@@ -237,11 +237,10 @@ int zb_golden_begin_pass(zb_golden* g, uint32_t state) {
   return guarded(g, "zb_golden_begin_pass", [&](zb_golden& h) -> Failure {
     if (h.in_pass)
       return {ZB_EORDER, "a pass is already open (end it with zb_golden_end_pass first)"};
-    // The kit's pass state is the core register: mlab-K's layers are not in the kit yet.
     zb::RopState s;
-    if (!zb::unpack_core_state(state, s))
-      return {ZB_EARG, fmt::format("state 0x{:x} is not a pass state register (bits 13 and up "
-                                   "zero, blend [7:5] at most 5; docs/datapath.md \"The pass "
+    if (state >> zb::kStateBits != 0 || !zb::unpack_state(uint16_t(state), s))
+      return {ZB_EARG, fmt::format("state 0x{:x} is not a pass state register (bits 16 and up "
+                                   "zero, blend [7:5] at most 6; docs/datapath.md \"The pass "
                                    "state\")", state)};
     h.rop.begin_pass(s);
     h.in_pass = true;
@@ -274,7 +273,8 @@ int zb_golden_push(zb_golden* g, int x, int y, uint32_t z, uint32_t rgba, int co
     f.coverage = uint8_t(coverage);
     const zb::PixelWrites w = h.rop.process(f);
     put<uint32_t>(wrote, (w.depth ? ZB_WROTE_DEPTH : 0) | (w.coverage ? ZB_WROTE_COVERAGE : 0) |
-                             (w.color ? ZB_WROTE_COLOR : 0) | (w.accum ? ZB_WROTE_ACCUM : 0));
+                             (w.color ? ZB_WROTE_COLOR : 0) | (w.accum ? ZB_WROTE_ACCUM : 0) |
+                             (w.layers ? ZB_WROTE_LAYERS : 0));
     put<uint32_t>(depth, w.depth ? w.z : 0);
     put<uint32_t>(coverage_out, w.coverage ? w.cov : 0);
     put<uint32_t>(rgba_out, w.color ? pack(w.rgba) : 0);
@@ -304,10 +304,10 @@ int zb_golden_frame_op(zb_golden* g, int kind, uint32_t value_rgba, uint32_t dep
     if (h.in_pass)
       return {ZB_EORDER, "a pass is open: frame operations come between passes (end it with "
                          "zb_golden_end_pass first)"};
-    if (kind < 0 || kind > int(zb::FrameOpKind::kResolveWboit))
+    if (kind < 0 || kind >= int(zb::kFrameOpKinds))
       return {ZB_EARG, fmt::format("kind {} is not a frame operation (0 clear colour, 1 clear "
                                    "depth, 2 copy depth to peel, 3 resolve under, 4 resolve "
-                                   "wboit)", kind)};
+                                   "wboit, 5 resolve layers)", kind)};
     zb::FrameOp op;
     op.kind = zb::FrameOpKind(kind);
     op.value = unpack(value_rgba);

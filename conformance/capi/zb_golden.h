@@ -44,8 +44,10 @@ enum {
 
 /* Bits of zb_golden_push's `wrote`: which planes the fragment wrote. ZB_WROTE_ACCUM: the
  * accumulation word (accumulate mode); its new value is the pixel's ZB_PLANE_ACC_* and
- * ZB_PLANE_REVEAL, read right after the push. */
-enum { ZB_WROTE_DEPTH = 1, ZB_WROTE_COVERAGE = 2, ZB_WROTE_COLOR = 4, ZB_WROTE_ACCUM = 8 };
+ * ZB_PLANE_REVEAL, read right after the push. ZB_WROTE_LAYERS: the pixel's layers (layers mode,
+ * mlab-K), which stay inside the model: they show in the colour at ZB_OP_RESOLVE_LAYERS. */
+enum { ZB_WROTE_DEPTH = 1, ZB_WROTE_COVERAGE = 2, ZB_WROTE_COLOR = 4, ZB_WROTE_ACCUM = 8,
+       ZB_WROTE_LAYERS = 16 };
 
 /* Frame operations (docs/datapath.md "Frame operations"), done between passes. */
 enum {
@@ -53,7 +55,8 @@ enum {
   ZB_OP_CLEAR_DEPTH = 1,        /* every depth := min(depth, ZMAX) */
   ZB_OP_COPY_DEPTH_TO_PEEL = 2, /* peel := depth */
   ZB_OP_RESOLVE_UNDER = 3,      /* colour := min(255, c + m(value_c, 255 - A)) per channel */
-  ZB_OP_RESOLVE_WBOIT = 4       /* colour := from the accumulation word (datapath.md "Resolve") */
+  ZB_OP_RESOLVE_WBOIT = 4,      /* colour := from the accumulation word (datapath.md "Resolve") */
+  ZB_OP_RESOLVE_LAYERS = 5      /* colour := its layers over it; the layers emptied ("8. Layers") */
 };
 
 /* Colours are packed RGBA8 words: r | g << 8 | b << 16 | a << 24 (frag_rgba_i's lane order). */
@@ -75,9 +78,9 @@ int zb_golden_set_wboit(zb_golden* g, int acc_bits, int rev_bits, int weight_bit
 void zb_golden_destroy(zb_golden* g);
 
 /* Starts a pass with the pass state register (docs/datapath.md "The pass state"): [0]
- * depth_test, [3:1] depth_func, [4] depth_write, [7:5] blend (0 to 5), [11:8] color_mask, [12]
- * peel_test; every other bit zero. Blend 5 (accumulate) writes only the accumulation word.
- * Fails inside a pass. */
+ * depth_test, [3:1] depth_func, [4] depth_write, [7:5] blend (0 to 6), [11:8] color_mask, [12]
+ * peel_test, [15:13] K - 1 (layers mode); every other bit zero. Blend 5 (accumulate) writes only
+ * the accumulation word, blend 6 (layers) only the pixel's K layers. Fails inside a pass. */
 int zb_golden_begin_pass(zb_golden* g, uint32_t state);
 
 /* One fragment through the datapath, in stream order: pixel (x, y), depth z (at most ZMAX),

@@ -4,7 +4,13 @@
 // tile-port beats and spreads the stored beats back into pixels. A team's own ROP gets an
 // adapter of its own with the same ports; this one is the worked example. Defined
 // ZB_CONF_NO_ACCUM, it stands for a DUT without the accumulation plane: planes_o says so and
-// the testbench skips the tests that need the plane.
+// the testbench skips the tests that need the plane. LAYERS is zb_rop's layers unit (mlab-K):
+// a load fast-clears the layers first, a store with st_resolve_i reads with tile_mlab_i; after
+// reset a read of every beat puts the plane's words at its epoch (zb_plane's
+// FastClearAfterSweep), as zb_rop's C++ driver does. Defined ZB_CONF_NO_LAYERS, and under
+// Icarus, LAYERS is 0: a four-state simulator cannot settle the never-loaded layers plane's X
+// words by that sweep, so there zb_rop runs without the unit and the testbench skips the layers
+// tests (layers_o = 0).
 module zb_conf_adapter #(
   parameter int DEPTH_BITS  = 24,
   parameter int COV_SAMPLES = 16,
@@ -13,13 +19,22 @@ module zb_conf_adapter #(
   parameter int BEAT        = 8,
   parameter int ACC_BITS    = 16,  // the accumulation word: 4 channels of ACC_BITS, then
   parameter int REV_BITS    = 8,   // the revealage (docs/datapath.md "7. Accumulate blend")
-  parameter int WEIGHT_BITS = 4
+  parameter int WEIGHT_BITS = 4,
+  // zb_rop's own, not the testbench's: the most layers a pixel (0: no layers unit)
+`ifdef ZB_CONF_NO_LAYERS
+  parameter int LAYERS      = 0
+`elsif __ICARUS__
+  parameter int LAYERS      = 0
+`else
+  parameter int LAYERS      = 4
+`endif
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
   // Pass state register (docs/datapath.md "The pass state"), loaded while idle_o.
   input  logic        state_we_i,
   input  logic [12:0] state_i,
+  input  logic [2:0]  state_layers_i,  // the pass state's [15:13]: K - 1 (layers mode)
   // The resident tile's origin in frame pixels; stable from a tile's load to its store.
   input  logic [15:0] tile_x0_i,
   input  logic [15:0] tile_y0_i,
@@ -43,8 +58,10 @@ module zb_conf_adapter #(
   // Every accepted fragment has made its writes and no load or store is under way.
   output logic        idle_o,
   // Store: a pulse on st_start_i (while idle_o) reads the tile back; its pixels come out in
-  // load order, one per st_valid_o.
+  // load order, one per st_valid_o. With st_resolve_i beside st_start_i, each colour is its
+  // pixel's layers resolved over it (frame operation 5 on the way out).
   input  logic        st_start_i,
+  input  logic        st_resolve_i,
   output logic        st_valid_o,
   output logic [31:0] st_color_o,
   output logic [31:0] st_depth_o,
@@ -54,6 +71,8 @@ module zb_conf_adapter #(
   // The planes the DUT carries (zb_pkg::planes_t order: colour, depth, coverage, peel,
   // accumulation); constant. Without bit 4, st_acc_o and the ret_a* outputs are unused.
   output logic [4:0]  planes_o,
+  // The most layers a pixel the DUT keeps (mlab-K's K); constant. 0: no layers mode.
+  output logic [3:0]  layers_o,
   // Retire port for a lock-step scoreboard (optional for other DUTs: tie the valids low). Per
   // accepted fragment, in order per pixel: one depth-side retire (depth and coverage writes)
   // and one colour-side retire, each naming the tile pixel and what it wrote.
@@ -86,7 +105,8 @@ module zb_conf_adapter #(
 `endif
 
   // The tile port as zb_rop takes it.
-  logic                tile_req, tile_we;
+  logic                tile_req, tile_we, tile_clear, tile_mlab;
+  logic [4:0]          tile_planes;
   logic [BeatAW-1:0]   tile_addr;
   logic [BEAT*32-1:0]  wcolor_q, rcolor;
   logic [BEAT*D-1:0]   wdepth_q, wpeel_q, rdepth, rpeel;
@@ -119,6 +139,10 @@ module zb_conf_adapter #(
     end
   end
 
+  // A tile starts with no layers: the load's first pixel fast-clears the layers plane alone
+  // (no beat is written in that cycle: the previous tile's last one went before its store).
+  assign tile_clear = LAYERS > 0 && ld_valid_i && ld_pixel_q == '0;
+
   always_ff @(posedge clk_i) begin
     if (ld_valid_i) begin
       wcolor_q[ld_lane*32 +: 32]     <= ld_color_i;
@@ -134,6 +158,7 @@ module zb_conf_adapter #(
   // ---------------------------------------------------------------------------------------
   typedef enum logic [1:0] { StIdle, StRead, StCapture, StEmit } st_e;
   st_e               st_q;
+  logic              st_resolve_q;
   logic [BeatAW-1:0] st_beat_q;
   logic [LaneW-1:0]  st_lane_q;
   logic [BEAT*32-1:0]   cap_color_q;
@@ -143,14 +168,16 @@ module zb_conf_adapter #(
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      st_q      <= StIdle;
-      st_beat_q <= '0;
-      st_lane_q <= '0;
+      st_q         <= StIdle;
+      st_beat_q    <= '0;
+      st_lane_q    <= '0;
+      st_resolve_q <= 1'b0;
     end else begin
       unique case (st_q)
         StIdle: if (st_start_i) begin
-          st_q      <= StRead;
-          st_beat_q <= '0;
+          st_q         <= StRead;
+          st_beat_q    <= '0;
+          st_resolve_q <= st_resolve_i && LAYERS > 0;
         end
         StRead:    st_q <= StCapture;
         StCapture: begin
@@ -186,11 +213,28 @@ module zb_conf_adapter #(
   assign st_peel_o  = 32'(cap_peel_q[st_lane_q*D +: D]);
   assign st_acc_o   = cap_acc_q[st_lane_q*AccW +: AccW];
   assign planes_o   = Planes;
+  assign layers_o   = 4'(LAYERS);
 
-  assign tile_req  = ld_go_q || st_q == StRead;
+  // The sweep after reset: a read of every beat, nothing sent (the layers plane's words put at
+  // its epoch before the first fast clear).
+  logic              sweep_q;
+  logic [BeatAW-1:0] sweep_beat_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      sweep_q      <= LAYERS > 0;
+      sweep_beat_q <= '0;
+    end else if (sweep_q) begin
+      sweep_beat_q <= sweep_beat_q + 1'b1;
+      sweep_q      <= sweep_beat_q != BeatAW'(Beats - 1);
+    end
+  end
+
+  assign tile_req  = ld_go_q || st_q == StRead || sweep_q;
   assign tile_we   = ld_go_q;
-  assign tile_addr = ld_go_q ? ld_beat_q : st_beat_q;
-  assign idle_o    = !busy && !ld_go_q && st_q == StIdle;
+  assign tile_addr = ld_go_q ? ld_beat_q : sweep_q ? sweep_beat_q : st_beat_q;
+  assign tile_mlab = tile_clear || (st_q == StRead && st_resolve_q);
+  assign tile_planes = tile_clear ? 5'b00000 : Planes;  // the layers' clear alone
+  assign idle_o    = !busy && !ld_go_q && st_q == StIdle && !sweep_q;
 
   // ---------------------------------------------------------------------------------------
   // The DUT.
@@ -210,13 +254,14 @@ module zb_conf_adapter #(
     .BEAT       (BEAT),
     .ACC_BITS   (ACC_BITS),
     .REV_BITS   (REV_BITS),
-    .WEIGHT_BITS(WEIGHT_BITS)
+    .WEIGHT_BITS(WEIGHT_BITS),
+    .LAYERS     (LAYERS)
   ) u_rop (
     .clk_i,
     .rst_ni,
     .state_we_i,
     .state_i           (state),
-    .state_layers_i    (3'b000),
+    .state_layers_i,
     .tile_x0_i,
     .tile_y0_i,
     .frag_valid_i,
@@ -229,12 +274,12 @@ module zb_conf_adapter #(
     .stall_i           (1'b0),
     .tile_req_i        (tile_req),
     .tile_we_i         (tile_we),
-    .tile_clear_i      (1'b0),
+    .tile_clear_i      (tile_clear),
     .tile_copy_i       (1'b0),
     .tile_resolve_i    (1'b0),
     .tile_wboit_i      (1'b0),
-    .tile_mlab_i       (1'b0),
-    .tile_planes_i     (Planes),
+    .tile_mlab_i       (tile_mlab),
+    .tile_planes_i     (tile_planes),
     .tile_addr_i       (tile_addr),
     .tile_wcolor_i     (wcolor_q),
     .tile_wdepth_i     (wdepth_q),

@@ -76,7 +76,7 @@ module zb_conf_scoreboard
   endfunction
 
   // `index`: the pass's place in the stream (on resident tiles a pass is begun once a tile).
-  function automatic void begin_pass(input logic [12:0] state, input int unsigned index);
+  function automatic void begin_pass(input logic [15:0] state, input int unsigned index);
     pass_no = index;
     check(zb_golden_begin_pass(golden, 32'(state)), "begin_pass");
   endfunction

@@ -2,11 +2,13 @@
 // test's command stream ($readmemh, conformance_spec in docs/conformance.md "The vectors"), keeps
 // the frame's planes, and for every pass and every tile the pass touches loads the tile into
 // the DUT, streams that tile's fragments, waits for the DUT to drain and stores the tile back;
-// frame operations are the host's, done here on the frame (the resolve wboit among them). At the
-// end it writes the planes as signatures (got.<plane>.hex) for `zblend conformance check`. A
-// DUT whose adapter has no accumulation plane (planes_o[4] low) runs the other tests: a test
-// that resolves from the plane is skipped (a "zb_conf: skip:" line, no files), and no
-// got.accum.hex is written.
+// frame operations are the host's, done here on the frame (the resolve wboit among them), but
+// for the resolve of mlab-K's layers, which live on the tile: the stores of the passes before
+// it resolve them on their way out (st_resolve_i). At the end it writes the planes as signatures
+// (got.<plane>.hex) for `zblend conformance check`. A DUT whose adapter has no accumulation
+// plane (planes_o[4] low) runs the other tests: a test that resolves from the plane is skipped
+// (a "zb_conf: skip:" line, no files), and no got.accum.hex is written; so is a test keeping
+// more layers a pixel than the DUT's layers_o.
 //
 // Plusargs: +stream=FILE (required) +out=DIR (existing; default .) +gap=P (percent of cycles
 // with no fragment offered, default 0) +seed=N (the gaps' pattern) +dump=FILE (waves of the
@@ -59,6 +61,7 @@ module zb_conf_tb #(
   // ---------------------------------------------------------------------------------------
   logic        state_we = 1'b0;
   logic [12:0] state = '0;
+  logic [2:0]  state_layers = '0;  // the pass state's [15:13]: K - 1
   logic [15:0] tile_x0 = '0, tile_y0 = '0;
   logic        ld_valid = 1'b0, ld_ready;
   logic [31:0] ld_color = '0, ld_depth = '0, ld_peel = '0;
@@ -70,7 +73,8 @@ module zb_conf_tb #(
   logic [15:0] frag_x = '0, frag_y = '0;
   logic [31:0] frag_z = '0, frag_rgba = '0;
   logic [7:0]  frag_cov = '0;
-  logic        idle, st_start = 1'b0, st_valid;
+  logic        idle, st_start = 1'b0, st_resolve = 1'b0, st_valid;
+  logic [3:0]  layers;  // the most layers a pixel the DUT keeps
   logic [31:0] st_color, st_depth, st_peel;
   logic [7:0]  st_cov;
   logic        ret_d_valid, ret_dwe, ret_vwe, ret_c_valid, ret_cwe;
@@ -91,6 +95,7 @@ module zb_conf_tb #(
     .rst_ni       (rst_n),
     .state_we_i   (state_we),
     .state_i      (state),
+    .state_layers_i(state_layers),
     .tile_x0_i    (tile_x0),
     .tile_y0_i    (tile_y0),
     .ld_valid_i   (ld_valid),
@@ -109,6 +114,7 @@ module zb_conf_tb #(
     .frag_cov_i   (frag_cov),
     .idle_o       (idle),
     .st_start_i   (st_start),
+    .st_resolve_i (st_resolve),
     .st_valid_o   (st_valid),
     .st_color_o   (st_color),
     .st_depth_o   (st_depth),
@@ -116,6 +122,7 @@ module zb_conf_tb #(
     .st_peel_o    (st_peel),
     .st_acc_o     (st_acc),
     .planes_o     (planes),
+    .layers_o     (layers),
     .ret_d_valid_o(ret_d_valid),
     .ret_d_pixel_o(ret_d_pixel),
     .ret_dwe_o    (ret_dwe),
@@ -148,6 +155,7 @@ module zb_conf_tb #(
   bit          storing = 1'b0;     // from the edge that takes st_start_i to the last pixel read
   bit          checking = 1'b0;    // after reset
   logic [4:0]  planes_at_reset;
+  logic [3:0]  layers_at_reset;
   always @(posedge clk) cycle <= cycle + 1;
 
   function automatic void progress();
@@ -175,6 +183,9 @@ module zb_conf_tb #(
       if (planes !== planes_at_reset)
         protocol("planes_o", $sformatf("changed from %05b after reset: it is a constant",
                                        planes_at_reset));
+      if (layers !== layers_at_reset)
+        protocol("layers_o", $sformatf("changed from %0d after reset: it is a constant",
+                                       layers_at_reset));
       if (st_valid && !storing)
         protocol("st_valid_o", "high with no store under way (a store begins at the edge that takes st_start_i)");
       if (idle && storing)
@@ -307,6 +318,7 @@ module zb_conf_tb #(
                          resolve_under(c[15:8],  value[15:8],  c[31:24]),
                          resolve_under(c[7:0],   value[7:0],   c[31:24])};
         end
+        4'd5: ;  // the layers are the DUT's: resolved by the stores before this (st_resolve_i)
         4'd4: begin
           c     = fb_color[p];
           acc_a = acc_field(fb_acc[p], 3);
@@ -413,13 +425,15 @@ module zb_conf_tb #(
   // Reads the tile back into the frame (its pixels on the frame).
   // A pixel is taken at each rising edge with st_valid_o high, from the first one after the edge
   // that takes st_start_i: read here at the falling edge before it.
-  task automatic store_tile(input int unsigned x0, input int unsigned y0);
+  task automatic store_tile(input int unsigned x0, input int unsigned y0, input bit resolve);
     int unsigned k, x, y;
-    st_start = 1'b1;
+    st_start   = 1'b1;
+    st_resolve = resolve;
     @(posedge clk);
     storing = 1'b1;
     @(negedge clk);
-    st_start = 1'b0;
+    st_start   = 1'b0;
+    st_resolve = 1'b0;
     k = 0;
     while (k < Words) begin
       phase = $sformatf("storing tile (%0d, %0d), pixel %0d of %0d: waiting for st_valid_o", x0, y0, k, Words);
@@ -459,12 +473,13 @@ module zb_conf_tb #(
   endtask
 
   // A pass state write: a one-cycle pulse while idle_o.
-  task automatic write_state(input logic [12:0] pass_state);
+  task automatic write_state(input logic [15:0] pass_state);
     slack();
     phase = "before a pass state write: waiting for idle_o";
     while (!idle) @(negedge clk);
-    state    = pass_state;
-    state_we = 1'b1;
+    state        = pass_state[12:0];
+    state_layers = pass_state[15:13];
+    state_we     = 1'b1;
     @(negedge clk);
     state_we = 1'b0;
   endtask
@@ -477,9 +492,9 @@ module zb_conf_tb #(
   endfunction
 
   // One pass: the fragments are words[first .. last - 1]; every tile with one of them is
-  // loaded, streamed and stored.
-  task automatic run_pass(input logic [12:0] pass_state, input int unsigned first,
-                          input int unsigned last);
+  // loaded, streamed and stored (with resolve, its layers resolved on the way out).
+  task automatic run_pass(input logic [15:0] pass_state, input int unsigned first,
+                          input int unsigned last, input bit resolve);
     pass_index = n_passes;
 `ifdef ZB_CONF_LOCKSTEP
     u_sb.begin_pass(pass_state, pass_index);
@@ -501,7 +516,7 @@ module zb_conf_tb #(
 `ifdef ZB_CONF_LOCKSTEP
           u_sb.end_tile();
 `endif
-          store_tile(x0, y0);
+          store_tile(x0, y0, resolve);
         end
       end
     end
@@ -517,7 +532,7 @@ module zb_conf_tb #(
   int unsigned group_state [MAX_GROUP];
   int unsigned group_first [MAX_GROUP];
   int unsigned group_last  [MAX_GROUP];
-  task automatic run_resident(input int unsigned passes);
+  task automatic run_resident(input int unsigned passes, input bit resolve);
     bit touched, loaded;
     for (int unsigned y0 = 0; y0 < height; y0 += TILE_H) begin
       for (int unsigned x0 = 0; x0 < width; x0 += TILE_W) begin
@@ -532,11 +547,11 @@ module zb_conf_tb #(
           for (int unsigned g = 0; g < passes; g++) begin
             if (pass_touches(group_first[g], group_last[g], x0, y0)) begin
               pass_index = n_passes + g;
-              write_state(13'(group_state[g]));
+              write_state(16'(group_state[g]));
               if (!loaded) load_tile(x0, y0);
               loaded = 1'b1;
 `ifdef ZB_CONF_LOCKSTEP
-              u_sb.begin_pass(13'(group_state[g]), pass_index);
+              u_sb.begin_pass(16'(group_state[g]), pass_index);
               u_sb.begin_tile(x0, y0);
 `endif
               stream_tile(group_first[g], group_last[g], x0, y0);
@@ -547,7 +562,7 @@ module zb_conf_tb #(
 `endif
             end
           end
-          store_tile(x0, y0);
+          store_tile(x0, y0, resolve);
         end
       end
     end
@@ -586,7 +601,8 @@ module zb_conf_tb #(
   initial begin : run
     logic [127:0] w;
     int unsigned  pc, group;
-    bit           needs_accum;
+    bit           needs_accum, layered, resolve;
+    int unsigned  needs_layers;
     if (!$value$plusargs("stream=%s", stream_path))
       $fatal(1, "zb_conf: no +stream=FILE: name a test's stream.hex (docs/conformance.md)");
     if (!$value$plusargs("out=%s", out_dir)) out_dir = ".";
@@ -636,6 +652,7 @@ module zb_conf_tb #(
     rst_n = 1'b1;
     @(negedge clk);
     planes_at_reset = planes;
+    layers_at_reset = layers;
     progress();
     checking = 1'b1;
     if (planes[3:0] != 4'hf)
@@ -651,6 +668,16 @@ module zb_conf_tb #(
                stream_path);
       $finish;
     end
+    // A layers pass (blend 6) keeps K = [15:13] + 1 layers a pixel: at most layers_o.
+    needs_layers = 0;
+    for (int unsigned k = 2; k <= count; k++)
+      if (opcode(words[k]) == OpPass && words[k][7:5] == 3'd6 && 32'(words[k][15:13]) + 1 > needs_layers)
+        needs_layers = 32'(words[k][15:13]) + 1;
+    if (needs_layers > 32'(layers)) begin
+      $display("zb_conf: skip: %s: the test keeps %0d layers a pixel; the DUT keeps %0d (layers_o)",
+               stream_path, needs_layers, layers);
+      $finish;
+    end
 
     pc = 2;
     while (opcode(words[pc]) != OpEnd) begin
@@ -662,9 +689,11 @@ module zb_conf_tb #(
       end else if (opcode(w) == OpPass) begin
         // A pass; on resident tiles, the passes up to the next frame operation or END, run
         // tile by tile.
-        group = 0;
+        group   = 0;
+        layered = 1'b0;
         while (opcode(words[pc]) == OpPass && group < (resident ? MAX_GROUP : 1)) begin
-          group_state[group] = 32'(words[pc][12:0]);
+          group_state[group] = 32'(words[pc][15:0]);
+          layered |= words[pc][7:5] == 3'd6;
           group_first[group] = pc + 1;
           pc++;
           while (pc <= count && opcode(words[pc]) == OpFrag) pc++;
@@ -673,8 +702,15 @@ module zb_conf_tb #(
           group++;
           pc++;
         end
-        if (resident) run_resident(group);
-        else run_pass(13'(group_state[0]), group_first[0], group_last[0]);
+        // The layers live on the tile: the group's stores resolve them when a resolve of the
+        // layers follows it, and a layers pass must be followed by one before any store.
+        resolve = opcode(words[pc]) == OpFrameOp && words[pc][3:0] == 4'd5;
+        if (layered && !resolve)
+          fail($sformatf("word %0d: a layers pass (blend 6) not followed by frame operation 5 (resolve layers): %s",
+                         pc, resident ? "its layers would be lost at the tile's store"
+                                      : "its layers would be lost at the pass's store (try +resident=1)"));
+        if (resident) run_resident(group, resolve);
+        else run_pass(16'(group_state[0]), group_first[0], group_last[0], resolve);
         n_passes += group;
       end else begin
         fail($sformatf("word %0d: opcode %02x where a pass, a frame operation or END belongs",

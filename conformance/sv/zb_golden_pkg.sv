@@ -29,6 +29,7 @@ package zb_golden_pkg;
   localparam int unsigned ZB_WROTE_COVERAGE = 32'd2;
   localparam int unsigned ZB_WROTE_COLOR    = 32'd4;
   localparam int unsigned ZB_WROTE_ACCUM    = 32'd8;  // the word: read its planes after the push
+  localparam int unsigned ZB_WROTE_LAYERS   = 32'd16; // the layers: seen in the colour at the resolve
 
   // Frame operations (docs/datapath.md "Frame operations"), between passes.
   localparam int ZB_OP_CLEAR_COLOR        = 0;
@@ -36,6 +37,7 @@ package zb_golden_pkg;
   localparam int ZB_OP_COPY_DEPTH_TO_PEEL = 2;
   localparam int ZB_OP_RESOLVE_UNDER      = 3;
   localparam int ZB_OP_RESOLVE_WBOIT      = 4;
+  localparam int ZB_OP_RESOLVE_LAYERS     = 5;
 
   // Colours are packed RGBA8: r | g << 8 | b << 16 | a << 24 (frag_rgba_i's lane order).
 
@@ -52,7 +54,7 @@ package zb_golden_pkg;
   import "DPI-C" zb_dpi_set_wboit = function int zb_golden_set_wboit(
       input chandle handle, input int acc_bits, input int rev_bits, input int weight_bits);
 
-  // The 13-bit pass state register (docs/datapath.md "The pass state"; zb_pass_state below).
+  // The 16-bit pass state register (docs/datapath.md "The pass state"; zb_pass_state below).
   import "DPI-C" zb_dpi_begin_pass = function int zb_golden_begin_pass(
       input chandle handle, input int unsigned state);
 
@@ -89,6 +91,11 @@ package zb_golden_pkg;
                                                 input bit depth_write, input bit [2:0] blend,
                                                 input bit [3:0] color_mask, input bit peel_test);
     return {19'd0, peel_test, color_mask, blend, depth_write, depth_func, depth_test};
+  endfunction
+
+  // A layers-mode state (blend 6) keeping k layers a pixel (1 to 8): K - 1 at [15:13].
+  function automatic int unsigned zb_layers_state(input int unsigned state, input int unsigned k);
+    return (state & 32'h1fff) | ((k - 32'd1) & 32'd7) << 13;
   endfunction
 
   // A packed colour from its channels.

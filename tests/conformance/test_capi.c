@@ -104,9 +104,8 @@ static void test_errors(void) {
   EXPECT_ERROR(zb_golden_push(g, 0, 0, 0, 0, 0, &wrote, NULL, NULL, NULL), ZB_EORDER, g, "zb_golden_push");
   EXPECT_ERROR(zb_golden_end_pass(g, &in, NULL, NULL, NULL, NULL, NULL), ZB_EORDER, g, "zb_golden_end_pass");
 
-  /* Bad state words: bits above 12, blend codes 6 and 7. */
-  EXPECT_ERROR(zb_golden_begin_pass(g, 1u << 13), ZB_EARG, g, "zb_golden_begin_pass");
-  EXPECT_ERROR(zb_golden_begin_pass(g, 6u << 5), ZB_EARG, g, "zb_golden_begin_pass");
+  /* Bad state words: bits above 15, blend code 7. */
+  EXPECT_ERROR(zb_golden_begin_pass(g, 1u << 16), ZB_EARG, g, "zb_golden_begin_pass");
   EXPECT_ERROR(zb_golden_begin_pass(g, 7u << 5), ZB_EARG, g, "zb_golden_begin_pass");
   EXPECT_ERROR(zb_golden_begin_pass(g, 0xffffffffu), ZB_EARG, g, "zb_golden_begin_pass");
   CHECK(zb_golden_begin_pass(g, STATE_COVERAGE) == ZB_OK, "begin: %s", zb_golden_last_error(g));
@@ -137,7 +136,7 @@ static void test_errors(void) {
 
   /* Frame operations and reads. */
   EXPECT_ERROR(zb_golden_frame_op(g, -1, 0, 0), ZB_EARG, g, "zb_golden_frame_op");
-  EXPECT_ERROR(zb_golden_frame_op(g, 5, 0, 0), ZB_EARG, g, "zb_golden_frame_op");
+  EXPECT_ERROR(zb_golden_frame_op(g, 6, 0, 0), ZB_EARG, g, "zb_golden_frame_op");
   EXPECT_ERROR(zb_golden_read(g, -1, 0, 0, &v), ZB_EARG, g, "zb_golden_read");
   EXPECT_ERROR(zb_golden_read(g, 9, 0, 0, &v), ZB_EARG, g, "zb_golden_read");
   EXPECT_ERROR(zb_golden_read(g, ZB_PLANE_PEEL, 8, 0, &v), ZB_EARG, g, "zb_golden_read");
@@ -181,6 +180,39 @@ static void test_accumulate(void) {
   CHECK(read_plane(g, ZB_PLANE_COLOR, 1, 1) == 0xff0064c8u, "resolved %08x, want ff0064c8",
         read_plane(g, ZB_PLANE_COLOR, 1, 1));
   CHECK(read_plane(g, ZB_PLANE_COLOR, 0, 0) == 0xff808080u, "an untouched pixel keeps its colour");
+  zb_golden_destroy(g);
+}
+
+/* A layers pass (mlab-K, K = 2), 16-bit depth, worked by hand from datapath.md "8. Layers":
+ * rgba (255, 0, 0, 128) at z 100 is the layer p = (m(255, 128), 0, 0) = (128, 0, 0), A 128;
+ * (0, 0, 255, 64) at z 50 goes before it as (0, 0, 64), A 64. The resolve: acc = (0, 0, 64, 64),
+ * then t = 191: R 0 + m(128, 191) = 96, A 64 + m(128, 191) = 160; over (64, 64, 64, 255) with
+ * 255 - 160 = 95: m(64, 95) = 24 on R, G, B and m(255, 95) = 95 on A: (120, 24, 88, 255). */
+static void test_layers(void) {
+  zb_golden* g = NULL;
+  uint32_t wrote = 0, rgba = 1;
+  const uint32_t state = 6u << 5 | 15u << 8 | 1u << 13; /* no depth test, layers, K = 2 */
+  CHECK(zb_golden_create(&g, 2, 1, 16, 4, 0xff404040u) == ZB_OK, "create: %s",
+        zb_golden_last_error(NULL));
+  if (g == NULL) return;
+  CHECK(zb_golden_begin_pass(g, state) == ZB_OK, "begin: %s", zb_golden_last_error(g));
+  CHECK(zb_golden_push(g, 0, 0, 100, 0x800000ffu, 0, &wrote, NULL, NULL, &rgba) == ZB_OK &&
+            wrote == ZB_WROTE_LAYERS && rgba == 0,
+        "a layers fragment writes the layers only (wrote %u): %s", wrote, zb_golden_last_error(g));
+  CHECK(zb_golden_push(g, 0, 0, 50, 0x40ff0000u, 0, &wrote, NULL, NULL, NULL) == ZB_OK &&
+            wrote == ZB_WROTE_LAYERS,
+        "push: wrote %u: %s", wrote, zb_golden_last_error(g));
+  CHECK(read_plane(g, ZB_PLANE_COLOR, 0, 0) == 0xff404040u, "the colour waits for the resolve");
+  CHECK(zb_golden_end_pass(g, NULL, NULL, NULL, NULL, NULL, NULL) == ZB_OK &&
+            zb_golden_frame_op(g, ZB_OP_RESOLVE_LAYERS, 0, 0) == ZB_OK,
+        "resolve: %s", zb_golden_last_error(g));
+  CHECK(read_plane(g, ZB_PLANE_COLOR, 0, 0) == 0xff581878u, "resolved %08x, want ff581878",
+        read_plane(g, ZB_PLANE_COLOR, 0, 0));
+  CHECK(read_plane(g, ZB_PLANE_COLOR, 1, 0) == 0xff404040u, "a pixel with no layer keeps its colour");
+  CHECK(zb_golden_frame_op(g, ZB_OP_RESOLVE_LAYERS, 0, 0) == ZB_OK &&
+            read_plane(g, ZB_PLANE_COLOR, 0, 0) == 0xff581878u,
+        "the resolve empties the layers: a second one changes nothing (%08x)",
+        read_plane(g, ZB_PLANE_COLOR, 0, 0));
   zb_golden_destroy(g);
 }
 
@@ -537,7 +569,8 @@ static void test_reader(void) {
         {TINY_LINES, 4, "0400000000000000000000000000001", "line 5: 31 characters"},
         {TINY_LINES, 4, "04000000000000000000000000000001", "line 5: END_PASS has bits set"},
         {TINY_LINES, 4, "05000000000000000000000000000002", "line 5: FRAME_OP inside the pass that line 3"},
-        {TINY_LINES, 5, "05000000000000000000000000000005", "line 6: FRAME_OP: kind 5"},
+        {TINY_LINES, 5, "05000000000000000000000000000006", "line 6: FRAME_OP: kind 6"},
+        {TINY_LINES, 2, "02000000000000000000000000010f73", "line 3: PASS has bits set outside"},
         {TINY_LINES, 5, "07000000000000000000000000000000", "line 6: opcode 0x07"},
         {TINY_LINES, 0, "00000000000000000000000000000005", "line 6: the last word is FRAME_OP, not END"},
         {TINY_LINES, 0, "00000000000000000000000000000001", "line 1: the count line announces 1 word:"},
@@ -609,6 +642,7 @@ int main(int argc, char** argv) {
   }
   test_errors();
   test_accumulate();
+  test_layers();
   test_reader();
   if (argc > 2) {
     for (i = 2; i < argc; ++i, ++tests) {

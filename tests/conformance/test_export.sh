@@ -22,9 +22,9 @@ cat "$tmp/a.log"
 python3 - "$tmp/a/manifest.json" >"$tmp/tests" <<'PY' || bad "manifest unreadable"
 import hashlib, json, os, sys
 m = json.load(open(sys.argv[1]))
-assert m["suite"] == "zblend-conformance" and m["version"] == 6
+assert m["suite"] == "zblend-conformance" and m["version"] == 7
 configs = {c["name"] for c in m["configs"]}
-BLEND = ["replace", "alpha", "additive", "coverage", "under", "accumulate"]
+BLEND = ["replace", "alpha", "additive", "coverage", "under", "accumulate", "layers"]
 FUNC = ["never", "less", "equal", "lequal", "greater", "notequal", "gequal", "always"]
 
 
@@ -43,6 +43,8 @@ def features(stream):
         f.add("blend." + BLEND[blend])
         if blend == 5:
             f.add("accum_plane")
+        if blend == 6:
+            f.add(f"layers.{(w >> 13 & 7) + 1}")
         if w & 1 and blend != 3:
             f.add("depth_func." + FUNC[w >> 1 & 7])
         if w & 1 and w >> 4 & 1:

@@ -17,6 +17,7 @@ module zb_conf_adapter #(
   input  logic            rst_ni,
   input  logic            state_we_i,
   input  logic [12:0]     state_i,
+  input  logic [2:0]      state_layers_i,
   input  logic [15:0]     tile_x0_i,
   input  logic [15:0]     tile_y0_i,
   input  logic            ld_valid_i,
@@ -35,6 +36,7 @@ module zb_conf_adapter #(
   input  logic [7:0]      frag_cov_i,
   output logic            idle_o,
   input  logic            st_start_i,
+  input  logic            st_resolve_i,
   output logic            st_valid_o,
   output logic [31:0]     st_color_o,
   output logic [31:0]     st_depth_o,
@@ -42,6 +44,7 @@ module zb_conf_adapter #(
   output logic [31:0]     st_peel_o,
   output logic [AccW-1:0] st_acc_o,
   output logic [4:0]      planes_o,
+  output logic [3:0]      layers_o,
   output logic            ret_d_valid_o,
   output logic [31:0]     ret_d_pixel_o,
   output logic            ret_dwe_o,
@@ -77,10 +80,11 @@ module zb_conf_adapter #(
   assign ld_ready_o = 1'b1;
   assign idle_o     = left == 0;
   assign planes_o   = 5'b01111;
+  assign layers_o   = 4'd0;
   assign {st_color_o, st_depth_o, st_cov_o, st_peel_o, st_acc_o} = '0;
   assign {ret_d_valid_o, ret_d_pixel_o, ret_dwe_o, ret_wdepth_o, ret_vwe_o, ret_wcov_o} = '0;
   assign {ret_c_valid_o, ret_c_pixel_o, ret_cwe_o, ret_wcolor_o, ret_awe_o, ret_wacc_o} = '0;
-  wire unused = &{1'b0, state_we_i, state_i, tile_x0_i, tile_y0_i, ld_valid_i, ld_color_i,
+  wire unused = &{1'b0, state_we_i, state_i, state_layers_i, st_resolve_i, tile_x0_i, tile_y0_i, ld_valid_i, ld_color_i,
                   ld_depth_i, ld_cov_i, ld_peel_i, ld_acc_i, frag_valid_i, frag_x_i, frag_y_i,
                   frag_z_i, frag_rgba_i, frag_cov_i};
 endmodule
