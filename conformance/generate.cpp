@@ -315,7 +315,7 @@ Trace same_pixel_trace(BlendMode blend, int depth_bits, int samples) {
   // Depth tested and written where the blend allows it, so the depth plane's hazard is in play.
   RopState s = state_of(coverage, coverage ? DepthFunc::kLess : DepthFunc::kAlways, coverage,
                         blend, kMaskRgba, false);
-  if (blend == BlendMode::kLayers) s.layers = kKitLayers;  // runs longer than K merge
+  if (blend == BlendMode::kLayers) s.layers = 2;  // each pixel takes three: every one merges
   TracePass pass{std::string("runs-") + to_string(blend), {}, s, {}};
   TracePass depth{"runs-depth", {},
                   state_of(true, DepthFunc::kLequal, true, BlendMode::kReplace, kMaskRgba, false), {}};
