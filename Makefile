@@ -7,7 +7,7 @@ ZBLEND     := $(BUILD)/zblend
 RUN_SIZE   ?= --width 640 --height 480
 
 .DEFAULT_GOAL := build
-.PHONY: help setup full-tree build run test test-release test-asan test-tsan regress conformance conformance-mutate kit kit-install mutate bench pgo bench-verilator profile-rtl synth formal systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
+.PHONY: help setup full-tree build run test test-release test-asan test-tsan regress conformance conformance-mutate kit kit-install mutate mutate-layers bench pgo bench-verilator profile-rtl synth formal systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
 
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | awk -F'\t' '{printf "%-16s %s\n", $$1, $$2}'
@@ -157,6 +157,17 @@ conformance: build ## The conformance suite on zb_rop under Verilator, Icarus an
 	  --profile conformance/ref/profile_full.json --timing random --seed $(CONF_SEED)
 	@# The defect catalogue, each defect against the whole suite: the tests that catch it.
 	tests/conformance/test_ref_defects.sh $(CONF_DIR)/suite $(CONF_DIR)/defects $(ZBLEND) -j $(JOBS)
+
+# The layers unit's mutation score (docs/mutation.md "The layers unit"): its own netlist (zb_rop
+# with LAYERS, mutations drawn from zb_layers, zb_layers_insert, zb_resolve_layers) in a tree of
+# its own, the smoke group with the layers tests first. MUTATE_LAYERS_ARGS passes options.
+MUT_LAYERS_BUILD ?= build-mut-layers
+MUTATE_LAYERS_ARGS ?=
+mutate-layers: setup ## Mutation score of the layers unit: its own Yosys sample, smoke group: out/mutate-layers/
+	cmake -S . -B $(MUT_LAYERS_BUILD) -DCMAKE_BUILD_TYPE=Release -DZBLEND_LAYERS_MUTANTS=ON >/dev/null
+	cmake --build $(MUT_LAYERS_BUILD) -j $(JOBS) --target zblend_tb_mut_layers
+	python3 scripts/mutate.py --netlist layers --build $(MUT_LAYERS_BUILD) --out out/mutate-layers \
+	  -j $(JOBS) $(MUTATE_LAYERS_ARGS)
 
 # The suite's strength on zb_rop's mutants (docs/conformance.md "The suite's strength"): the
 # mutation tool's 1200 mutants, each against the suite's d24-c16 tests until one kills it (about an

@@ -101,7 +101,7 @@ endif()
 # and the waveform probe, model PREFIX_probe. COVERAGE counts lines, toggles and the RTL's
 # covers; FUNCTIONAL_COVERAGE the covers only, with the coverage plan's module bound in.
 function(zblend_verilate target)
-  cmake_parse_arguments(V "SYSTEMC;BUG;FAST;COVERAGE;FUNCTIONAL_COVERAGE;TRACE" "PREFIX;DIRECTORY;MUTANTS" "" ${ARGN})
+  cmake_parse_arguments(V "SYSTEMC;BUG;FAST;COVERAGE;FUNCTIONAL_COVERAGE;TRACE" "PREFIX;DIRECTORY;MUTANTS" "DEFINES" ${ARGN})
   set(args --assert ${ZBLEND_VERILATOR_OPT} -Wall ${ZBLEND_RTL_PARAMS})
   set(sources ${PROJECT_SOURCE_DIR}/tb/rtlmodel/zb_rop_public.vlt ${ZBLEND_RTL_WAIVERS} ${ZBLEND_RTL_SIM})
   if(V_FAST)
@@ -116,6 +116,9 @@ function(zblend_verilate target)
         ${PROJECT_SOURCE_DIR}/rtl/zb_pkg.sv ${V_MUTANTS}
         ${PROJECT_SOURCE_DIR}/tb/mutation/zb_rop_mutant.sv)
   endif()
+  foreach(d IN LISTS V_DEFINES)
+    list(APPEND args +define+${d})
+  endforeach()
   if(V_BUG)
     list(APPEND args +define+ZB_INJECT_BLEND_BUG +define+ZB_INJECT_WINDOW_BUG
          +define+ZB_INJECT_ACCUM_BUG +define+ZB_INJECT_TILEOP_BUG +define+ZB_INJECT_LAYERS_BUG)

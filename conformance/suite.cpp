@@ -181,6 +181,12 @@ std::vector<TestSpec> suite_tests(bool quick) {
   all.push_back(random_test(kBase, RandomMix::kWboit));  // version 4
   all.push_back(random_test(kBase, RandomMix::kCore));   // version 5
   add_generated(all, kBase);                             // version 6
+  // Version 7: mlab-K's layers (a profile's blend.layers and layers.K).
+  for (const SceneInfo& s : builtin_scenes())
+    for (const PassPlan& p : pass_plans())
+      if (uses_blend(p, BlendMode::kLayers)) all.push_back(scene_test(kBase, s.name, p.name));
+  all.push_back(generated_test(kBase, Family::kLayers));
+  all.push_back(generated_test(kBase, Family::kSamePixel, BlendMode::kLayers));
   all.push_back(hazard_test(kCoverage4));
   all.push_back(random_test(kCoverage4));
   add_generated(all, kCoverage4);
@@ -189,14 +195,8 @@ std::vector<TestSpec> suite_tests(bool quick) {
       for (const char* method : kWidthMethods) all.push_back(scene_test(*c, scene, method));
     all.push_back(random_test(*c, RandomMix::kCore));  // version 5
     add_generated(all, *c);
+    all.push_back(generated_test(*c, Family::kLayers));  // version 7
   }
-  // Version 7: mlab-K's layers (a profile's blend.layers and layers.K).
-  for (const SceneInfo& s : builtin_scenes())
-    for (const PassPlan& p : pass_plans())
-      if (uses_blend(p, BlendMode::kLayers)) all.push_back(scene_test(kBase, s.name, p.name));
-  all.push_back(generated_test(kBase, Family::kLayers));
-  all.push_back(generated_test(kBase, Family::kSamePixel, BlendMode::kLayers));
-  for (const Config* c : {&kDepth16, &kDepth32}) all.push_back(generated_test(*c, Family::kLayers));
   for (TestSpec& t : all)
     t.quick = std::find(std::begin(kQuick), std::end(kQuick), t.name) != std::end(kQuick);
   if (quick)

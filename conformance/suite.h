@@ -27,7 +27,8 @@ constexpr const char* kSuiteName = "zblend-conformance";
 // tests' bytes as in version 5).
 // Version 7: mlab-K's layers (blend 6): PASS carries the 16-bit pass state ([15:13] K - 1),
 // FRAME_OP kind 5 resolves the layers; the scenes with mlab-2 and mlab-4, the layers family, the
-// same-pixel runs of layers, at the end of the suite (the other tests' bytes as in version 6).
+// same-pixel runs of layers, at the end of their configs' groups (the other tests' bytes as in
+// version 6).
 constexpr int kSuiteVersion = 7;
 
 // Bad input to the kit (a malformed suite, a path it cannot use, an unknown test): one line.

@@ -336,9 +336,13 @@ def main():
         "smoke": smoke,
     }
     if kit_rows is not None:
-        got = sum(1 for r in kit_rows if r["hits"])
-        summary["kit"] = {"reachable": len(kit_rows), "hit": got,
-                          "pct": 100.0 * got / max(len(kit_rows), 1),
+        # A kit-reachable bin the plan itself calls unreachable (with its reason) and that no
+        # test hit leaves the reach's count, as it leaves the closure's.
+        planned = [r for r in kit_rows if r["hits"] or not r["why"]]
+        got = sum(1 for r in planned if r["hits"])
+        summary["kit"] = {"reachable": len(planned), "hit": got,
+                          "pct": 100.0 * got / max(len(planned), 1),
+                          "plan_unreachable": len(kit_rows) - len(planned),
                           "out_of_reach": len(table) - len(kit_rows),
                           "cross_checked": bool(a.reach)}
     name = "reach" if a.conformance else "closure"
@@ -363,13 +367,14 @@ def main():
     print(f"coverage: report {os.path.join(out, name + '.html')}; holes in "
           f"{os.path.join(out, 'holes.txt')}")
     if a.conformance and kit_rows is not None:
-        got = sum(1 for r in kit_rows if r["hits"])
-        pct = 100.0 * got / max(len(kit_rows), 1)
-        print(f"coverage: conformance reach on the kit-reachable bins: {got} of {len(kit_rows)} "
-              f"({pct:.2f} %); {len(table) - len(kit_rows)} bins out of the kit's reach, each "
-              f"with its reason ({a.kit_bins})")
+        k = summary["kit"]
+        got, pct = k["hit"], k["pct"]
+        print(f"coverage: conformance reach on the kit-reachable bins: {got} of {k['reachable']} "
+              f"({pct:.2f} %); {k['plan_unreachable']} more the plan calls unreachable; "
+              f"{k['out_of_reach']} bins out of the kit's reach, each with its reason "
+              f"({a.kit_bins})")
         for r in kit_rows:
-            if not r["hits"]:
+            if not r["hits"] and not r["why"]:
                 print(f"coverage: not reached: {r['bin']}")
         if pct < a.min_reach:
             print(f"coverage: the reach {pct:.2f} % is below --min-reach {a.min_reach}")

@@ -12,21 +12,25 @@ set -euo pipefail
 
 usage() {
   cat <<'USAGE'
-usage: scripts/mutants.sh --out DIR [--count N] [--seed S] [-G NAME=VALUE ...]
+usage: scripts/mutants.sh --out DIR [--count N] [--seed S] [--src REGEX] [-G NAME=VALUE ...]
   --out DIR        output directory (mutations.txt, mutants.v, yosys logs)
   --count N        mutants, 1 to 2047 (default 1200)
   --seed S         Yosys's sampling seed (default 1)
+  --src REGEX      only mutations with a source line in a file matching REGEX (an extended
+                   regular expression over Yosys's -src paths, e.g. 'rtl/zb_layers[a-z_]*\.sv'):
+                   eight times the count are listed over the whole design, those kept sampled
   -G NAME=VALUE    a zb_rop parameter (as Verilator's -G), repeatable
 USAGE
 }
 
 root=$(cd "$(dirname "$0")/.." && pwd)
-out="" count=1200 seed=1 params=""
+out="" count=1200 seed=1 params="" src=""
 while [[ $# -gt 0 ]]; do
   case $1 in
     --out) out=${2:?}; shift 2 ;;
     --count) count=${2:?}; shift 2 ;;
     --seed) seed=${2:?}; shift 2 ;;
+    --src) src=${2:?}; shift 2 ;;
     -G) params+=" -set ${2%%=*} ${2#*=}"; shift 2 ;;
     -G*) p=${1#-G}; params+=" -set ${p%%=*} ${p#*=}"; shift ;;
     -h|--help) usage; exit 0 ;;
@@ -48,12 +52,14 @@ rtl="rtl/zb_pkg.sv $(ls rtl/*.sv | grep -v '/zb_pkg.sv$' | tr '\n' ' ')"  # the 
 # Source paths relative to the repository, so the list is the same from any build tree.
 yosys -q -l "$tmp/list.log" -p "read_verilog -sv $rtl; ${params:+chparam$params zb_rop;}
   hierarchy -top zb_rop; rename -top zb_rop; prep -top zb_rop -flatten;
-  write_rtlil $tmp/design.il; mutate -list $((count + 32)) -seed $seed -o $tmp/listed.txt" >/dev/null 2>&1 ||
+  write_rtlil $tmp/design.il; mutate -list $((${src:+8 * }count + 32)) -seed $seed -o $tmp/listed.txt" >/dev/null 2>&1 ||
   { echo "mutants.sh: yosys failed listing mutations (log: $tmp/list.log)" >&2; cp "$tmp/list.log" "$out/"; exit 1; }
 # A memory's read enable is left out: Yosys 0.23's Verilog backend asserts (kernel/mem.cc:459)
 # on a read port whose enable a mutation drives.
 # A few more are listed and as many dropped evenly over the list (it runs in netlist order).
-grep -v -- ' -port RD_EN ' "$tmp/listed.txt" > "$tmp/kept.txt" || true
+grep -v -- ' -port RD_EN ' "$tmp/listed.txt" | { if [[ -n $src ]]; then grep -E -- "-src ($src):" || true; else cat; fi; } > "$tmp/kept.txt"
+[[ $(wc -l < "$tmp/kept.txt") -ge $count ]] ||
+  { echo "mutants.sh: only $(wc -l < "$tmp/kept.txt") mutations listed${src:+ in sources matching '$src'}, fewer than $count" >&2; exit 1; }
 awk -v n="$(wc -l < "$tmp/kept.txt")" -v c="$count" \
   'int(NR * c / n) > int((NR - 1) * c / n)' "$tmp/kept.txt" > "$tmp/mutations.txt"
 [[ $(wc -l < "$tmp/mutations.txt") -eq $count ]] ||
@@ -68,4 +74,4 @@ yosys -q -l "$tmp/apply.log" "$tmp/apply.ys" >/dev/null 2>&1 ||
   { echo "mutants.sh: yosys failed applying mutations (log: $tmp/apply.log)" >&2; cp "$tmp/apply.log" "$out/"; exit 1; }
 
 mv "$tmp/mutations.txt" "$tmp/mutants.v" "$tmp/design.il" "$out/"
-echo "mutants.sh: $count mutants of zb_rop (seed $seed) in $out/mutants.v"
+echo "mutants.sh: $count mutants of zb_rop (seed $seed${src:+, in $src}) in $out/mutants.v"

@@ -52,6 +52,10 @@ def parse_args():
     ap.add_argument("--group", default="smoke", choices=["smoke", "quick"],
                     help="the first group (default smoke: what make test runs; quick: its "
                     "fast part, for the CI-sized sample)")
+    ap.add_argument("--netlist", default="core", choices=["core", "layers"],
+                    help="core (default): the 1200 mutants of zb_rop without the layers unit; "
+                    "layers: the layers unit's sample (make mutate-layers: a build with "
+                    "ZBLEND_LAYERS_MUTANTS), its first group run with the layers tests first")
     ap.add_argument("--no-full", action="store_true", help="the first group only")
     ap.add_argument("--full-all", action="store_true",
                     help="run the full group also on survivors with a written reason (by "
@@ -83,15 +87,28 @@ def parse_args():
 
 # ---- Set-up: the netlist, the written reasons, the mutants to run, the groups ----------------
 
-def read_netlist(build):
+NETLISTS = {  # --netlist: its testbench and its folder under BUILD/tb/mutation
+    "core": ("zblend_tb_mut", ""),
+    "layers": ("zblend_tb_mut_layers", "layers"),
+}
+
+
+def netlist_dir(build, netlist):
+    return os.path.join(build, "tb", "mutation", NETLISTS[netlist][1])
+
+
+def read_netlist(build, netlist):
     """The mutant testbench and the netlist's mutants, one description each (Yosys's mutate
-    command, BUILD/tb/mutation/mutations.txt)."""
-    tb = os.path.join(build, "zblend_tb_mut")
-    listing = os.path.join(build, "tb", "mutation", "mutations.txt")
+    command, BUILD/tb/mutation[/layers]/mutations.txt)."""
+    name = NETLISTS[netlist][0]
+    tb = os.path.join(build, name)
+    listing = os.path.join(netlist_dir(build, netlist), "mutations.txt")
+    how = ("make build, or cmake --build {build} --target zblend_tb_mut" if netlist == "core" else
+           "make mutate-layers, or configure with -DZBLEND_LAYERS_MUTANTS=ON and cmake --build "
+           "{build} --target zblend_tb_mut_layers")
     for f in (tb, listing):
         if not os.path.exists(f):
-            usage_error(f"{f} is missing: build it first (make build, or cmake --build "
-                        f"{build} --target zblend_tb_mut)")
+            usage_error(f"{f} is missing: build it first ({how.format(build=build)})")
     with open(listing) as f:
         return tb, [ln.strip() for ln in f if ln.strip()]
 
@@ -146,7 +163,7 @@ def load_groups(first):
 def own_testbench(tb, out, resume):
     """The run's own copy of the testbench, so that a rebuild meanwhile changes nothing;
     --resume goes on with the copy its journal came from."""
-    own = os.path.join(out, "zblend_tb_mut")
+    own = os.path.join(out, os.path.basename(tb))
     if not (resume and os.path.exists(own)):
         shutil.copy2(tb, own)
     return own
@@ -340,7 +357,7 @@ def run_stages(a, st, runner, chosen, smoke, full, reason_of):
                   if (reason_of[m] or {}).get("kind", "equivalent") != "equivalent"]
         for m in differ:
             st.rows[m]["equiv"] = "not tried"
-        design = os.path.join(a.build, "tb", "mutation", "design.il")
+        design = os.path.join(netlist_dir(a.build, a.netlist), "design.il")
         survivors = st.run("equivalence", lambda m: prove_equivalent(design, a.equiv_limit, m),
                            [m for m in survivors if m not in differ], "equiv") + differ
     if not a.no_full and survivors:
@@ -473,10 +490,14 @@ def conclude(a, s, wrong):
 
 def main():
     a = parse_args()
-    tb, descriptions = read_netlist(a.build)
+    tb, descriptions = read_netlist(a.build, a.netlist)
     reasons = load_reasons(a.reasons, descriptions)
     chosen = choose_mutants(a, len(descriptions))
     smoke, full = load_groups(a.group)
+    if a.netlist == "layers":  # the same tests, those of the unit first: kills come sooner
+        first = [t for t in smoke if "layers" in t["name"]]
+        smoke = first + [t for t in smoke if t not in first]
+        full = smoke + full[len(smoke):]
     reason_of = {m: reasons.explain(descriptions[m - 1]) for m in chosen}  # entry or None
     os.makedirs(a.out, exist_ok=True)
     runner = Runner(own_testbench(tb, a.out, a.resume), {})

@@ -4,7 +4,9 @@
 // position, merges once a pixel holds K, equal depths (a small pool) with equal and different
 // colour words (a small colour pool), alpha 0. Each iteration draws an opaque pass, then layers
 // passes of K = 1 to the model's LAYERS under random depth functions, masks and peel tests,
-// each closed by its resolve on the tile's store (they never leave the tile).
+// each closed by its resolve on the tile's store (they never leave the tile), then a pass of the
+// alpha blend, whose store must not resolve the layers again. Faint fragments (alpha 1 to 8) let
+// the resolve's deeper steps meet a large 255 - A.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -16,6 +18,8 @@
 namespace zb::tb {
 
 namespace {
+
+constexpr int kLayersPasses = 3;  // an iteration's layers passes
 
 RopState layers_state(Rng& r) {
   static const DepthFunc funcs[] = {DepthFunc::kLess, DepthFunc::kLess, DepthFunc::kLequal,
@@ -31,11 +35,14 @@ RopState layers_state(Rng& r) {
   return s;
 }
 
-// Colours from a pool of three now and then, so equal depths meet equal colour words.
+// Colours from a pool of three now and then, so equal depths meet equal colour words; faint
+// ones now and then.
 void pool_colours(Rng& r, std::vector<Fragment>& f) {
   const Rgba8 pool[3] = {{200, 30, 30, 128}, {30, 200, 30, 128}, {30, 30, 200, 90}};
-  for (Fragment& x : f)
+  for (Fragment& x : f) {
     if (r.chance(0.3)) x.color = pool[r.below(3)];
+    else if (r.chance(0.15)) x.color.a = uint8_t(1 + r.below(8));
+  }
 }
 
 }  // namespace
@@ -47,7 +54,7 @@ Tally suite_layers(const Config& c) {
     return t;
   }
   return same_pixel_suite(
-      "layers", "layers", c, 3, 0x1a7e5ull, 4,
+      "layers", "layers", c, kLayersPasses, 0x1a7e5ull, 4,
       [&](Cosim& cs, Rng& r, SamePixelStreams& d, size_t per_pass, int p, uint64_t dist[4]) {
         if (r.chance(0.3)) cs.frame_op({FrameOpKind::kCopyDepthToPeel, {}, 0, false});
         const RopState st = layers_state(r);
@@ -56,6 +63,11 @@ Tally suite_layers(const Config& c) {
         if (st.color_mask != 0) count_distances(f, dist);
         draw_pass(cs, fmt::format("layers-{}-k{}", p + 1, int(st.layers)), st, f);
         cs.frame_op({FrameOpKind::kResolveLayers, {}, 0, false});
+        if (p == kLayersPasses - 1) {  // resolved: this store must not resolve them again
+          RopState alpha;
+          alpha.blend = BlendMode::kAlpha;
+          draw_pass(cs, "layers-after", alpha, d.stream(per_pass / 4));
+        }
       });
 }
 

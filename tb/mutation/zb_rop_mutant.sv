@@ -3,6 +3,8 @@
 // parameters (build/tb/mutation/mutants.v). Mutant N is live when the simulation is started with
 // +zb_mutant=N; without it, or with N = 0, the netlist is zb_rop unchanged. The netlist was
 // elaborated with the build's widths: the parameters here only name them for the driver.
+// With ZB_MUT_LAYERS the netlist has the layers unit (make mutate-layers) and its layers writes
+// reach the driver; without, it has none.
 module zb_rop
 #(
   parameter int unsigned DEPTH_BITS  = 24,
@@ -16,7 +18,7 @@ module zb_rop
   parameter int unsigned REV_BITS    = 8,
   parameter int unsigned WEIGHT_BITS = 4,
   parameter int unsigned DEPTH_GEN   = 2,
-  parameter int unsigned LAYERS      = 0,    // the driver's view; the netlist has no layers unit
+  parameter int unsigned LAYERS      = 0,    // the driver's view (the netlist's with ZB_MUT_LAYERS)
   parameter int unsigned MUT_W       = 11   // mutsel's width: mutants 1 .. 2^MUT_W - 1
 ) (
   input  logic                  clk_i,
@@ -82,8 +84,10 @@ module zb_rop
   output logic [(LAYERS > 0 ? LAYERS * (DEPTH_BITS + 32) : 1)-1:0] mon_wlayers_o
 );
 
+`ifndef ZB_MUT_LAYERS
   assign mon_lwe_o     = 1'b0;
   assign mon_wlayers_o = '0;
+`endif
 
   logic [MUT_W-1:0] mutsel;
   initial begin
@@ -103,6 +107,10 @@ module zb_rop
     .cnt_color_writes_o, .cnt_stall_cycles_o, .cnt_cycles_o, .cnt_tile_loads_o,
     .cnt_tile_stores_o, .mon_x4_valid_o, .mon_x4_addr_o, .mon_dwe_o, .mon_wdepth_o, .mon_vwe_o,
     .mon_wcov_o, .mon_x11_valid_o, .mon_x11_addr_o, .mon_cwe_o, .mon_wcolor_o, .mon_awe_o,
+`ifdef ZB_MUT_LAYERS
+    .mon_wacc_o, .mon_lwe_o, .mon_wlayers_o, .mutsel
+`else
     .mon_wacc_o, .mon_lwe_o(), .mon_wlayers_o(), .mutsel
+`endif
   );
 endmodule

@@ -95,6 +95,19 @@ void put_accum(Writer<Port>& p, const AccumWord& w) {
   p.put(w.reveal, kRev);
 }
 
+// A pixel's layers word, written: kRtlLayers slots {z, A, R, G, B} from bit 0 up (B lowest).
+template <class Port>
+void put_layers(Writer<Port>& w, const PixelLayers& px) {
+  for (int j = 0; j < kRtlLayers; ++j) {
+    const Layer& l = px.layer[size_t(j)];
+    w.put(l.p.b, 8);
+    w.put(l.p.g, 8);
+    w.put(l.p.r, 8);
+    w.put(l.p.a, 8);
+    w.put(l.z, kDepth);
+  }
+}
+
 // A pixel's layers word: kRtlLayers slots {z, A, R, G, B} from bit 0 up (B lowest); n the
 // slots up to the last occupied one (A != 0).
 template <class Port>

@@ -12,6 +12,8 @@
 #include "code_coverage.h"
 #endif
 
+#include "port_lanes.h"
+
 namespace zb {
 
 static_assert(VParams::TILE_W == kRtlTileW, "tb mirror of TILE_W disagrees with the RTL");
@@ -168,6 +170,12 @@ void Sim::begin_dump() {
   p.x11_golden_awe = wave.x11_awe;
   for (unsigned c = 0; c < 4; ++c) p.x11_golden_acc[c] = wave.x11_acc[c];
   p.x11_golden_reveal = wave.x11_reveal;
+  p.x11_golden_lwe = wave.x11_lwe;
+  for (int i = 0; i < 16; ++i) p.x11_golden_layers[i] = 0;  // 512 bits
+  {
+    lanes::Writer layers(p.x11_golden_layers);
+    lanes::put_layers(layers, wave.x11_layers);
+  }
   p.mismatch = wave.mismatch || cycle == view.mismatch;
   p.eval();
 }

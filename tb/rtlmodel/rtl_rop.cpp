@@ -226,7 +226,7 @@ const char* RtlRop::build() {
 }
 
 int RtlRop::model_layers() {
-#ifdef ZB_RTL_MUT
+#if defined(ZB_RTL_MUT) && !defined(ZB_RTL_MUT_LAYERS)
   return 0;  // the mutant netlist is of zb_rop without the layers unit (tb/mutation)
 #else
   return kRtlLayers;

@@ -111,14 +111,17 @@ void WaveProbe::retire(const Retire& r, const PixelWrites* g) {
     x11_awe = g && g->accum;
     x11_acc = g ? g->acc : std::array<uint32_t, 4>{};
     x11_reveal = g ? g->reveal : 0;
+    x11_lwe = g && g->layers;
+    x11_layers = g ? g->lay : PixelLayers{};
   }
 }
 
 void WaveProbe::next_cycle() {
-  x4_retire = x4_dwe = x4_vwe = x11_retire = x11_cwe = x11_awe = mismatch = false;
+  x4_retire = x4_dwe = x4_vwe = x11_retire = x11_cwe = x11_awe = x11_lwe = mismatch = false;
   x4_index = x11_index = kNone;
   x4_depth = x4_cov = x11_color = x11_reveal = 0;
   x11_acc = {};
+  x11_layers = {};
 }
 
 bool ProbeSink::retire(const Retire& r) {

@@ -44,6 +44,8 @@ struct WaveProbe {
   bool x11_retire = false, x11_cwe = false, x11_awe = false;
   uint32_t x11_index = kNone, x11_color = 0, x11_reveal = 0;
   std::array<uint32_t, 4> x11_acc{};
+  bool x11_lwe = false;
+  PixelLayers x11_layers;
   bool mismatch = false;
   void retire(const Retire& r, const PixelWrites* golden);
   void next_cycle();  // after a rising edge: the retires and the flag were that cycle's

@@ -4,7 +4,8 @@
 //     pass; all ones with frag_valid_i low); frag_valid_i && frag_ready_o is its accept
 //   x4_/x11_: the fragment whose writes land at this cycle's rising edge, as the lock-step
 //     monitor names it, and the golden model's writes for it (depth with dwe, coverage with
-//     vwe, colour with cwe, the accumulation word with awe: acc R, G, B, A at [32c +: 32])
+//     vwe, colour with cwe, the accumulation word with awe: acc R, G, B, A at [32c +: 32], the
+//     layers word with lwe: as zb_rop's mon_wlayers_o, slot j at [j (D + 32) +: D + 32])
 //   mismatch: this cycle's rising edge holds the first wrong write
 /* verilator lint_off UNUSEDSIGNAL */
 module zb_wave_probe (
@@ -24,6 +25,8 @@ module zb_wave_probe (
   input logic        x11_golden_awe,
   input logic [127:0] x11_golden_acc,
   input logic [31:0] x11_golden_reveal,
+  input logic        x11_golden_lwe,
+  input logic [511:0] x11_golden_layers,  // 8 slots of at most 64 bits: every LAYERS and width
   input logic        mismatch
 );
 endmodule

@@ -15,8 +15,9 @@
 # random-core = 7 of 13 each. Suite version 6's generated tests add, for this profile, the
 # replace and alpha blends' states (states-replace, states-alpha; the -peel ones need the peel
 # test), depth-bits at the three widths, values-replace and values-alpha, tiles and
-# same-pixel-alpha (its second pass replaces under lequal): 9 of the 28 generated. The suite: 84
-# supported, 96 NOT SUPPORTED; its cad-* tests: 6 + 2 + 2 = 10 of 20, and random-core.
+# same-pixel-alpha (its second pass replaces under lequal): 9 of the 28 generated. Version 7's 24
+# layers tests (blend 6) add none. The suite: 84 supported, 120 NOT SUPPORTED; its cad-* tests:
+# 6 + 2 + 2 = 10 of 22, and random-core.
 if(NOT ZBLEND_SANITIZE)
   set(ref ${CMAKE_CURRENT_SOURCE_DIR}/test_ref_dut.sh)
   set(zb $<TARGET_FILE:zblend>)
@@ -27,14 +28,14 @@ if(NOT ZBLEND_SANITIZE)
   # The whole suite: Verilator builds three configurations (3 to 5 s each) and runs the 84 tests
   # in a few seconds.
   add_test(NAME conformance_ref_verilator
-           COMMAND ${ref} pass verilator ${suite} ${w}/ref-verilator ${zb} "" 84 96)
+           COMMAND ${ref} pass verilator ${suite} ${w}/ref-verilator ${zb} "" 84 120)
   # Icarus: every cad test, at the three depth widths the supported tests come in, and the
   # random stream of every depth function.
   add_test(NAME conformance_ref_icarus
-           COMMAND ${ref} pass icarus ${suite} ${w}/ref-icarus ${zb} "cad-*,random-core" 11 10)
+           COMMAND ${ref} pass icarus ${suite} ${w}/ref-icarus ${zb} "cad-*,random-core" 11 12)
   # Another stall seed, most cycles stalled (160 of 256) and gaps in the fragment stream.
   add_test(NAME conformance_ref_random_stalls
-           COMMAND ${ref} stalls verilator ${suite} ${w}/ref-stalls ${zb} "" 84 96 7 160 25
+           COMMAND ${ref} stalls verilator ${suite} ${w}/ref-stalls ${zb} "" 84 120 7 160 25
                    cad-three-pass)
   add_test(NAME conformance_ref_bug
            COMMAND ${ref} bug verilator ${suite} ${w}/ref-bug ${zb} cad-opaque,cad-three-pass
@@ -42,14 +43,14 @@ if(NOT ZBLEND_SANITIZE)
   add_test(NAME conformance_ref_hang
            COMMAND ${ref} hang icarus ${suite} ${w}/ref-hang ${zb} cad-opaque)
   # The full datapath (ZB_REF_FULL) and the pipelined variant, clean: the quick tier on Icarus
-  # (every test: 30), the whole suite on Verilator for the pipeline (its 97 of 180: replace,
+  # (every test: 33), the whole suite on Verilator for the pipeline (its 97 of 204: replace,
   # alpha, additive, every depth function, depth write, colour mask).
   set(refdir ${PROJECT_SOURCE_DIR}/conformance/ref)
   add_test(NAME conformance_ref_full
-           COMMAND ${ref} pass icarus ${suite} ${w}/ref-full ${zb} "" 30 0 --quick
+           COMMAND ${ref} pass icarus ${suite} ${w}/ref-full ${zb} "" 33 0 --quick
                    --profile ${refdir}/profile_full.json)
   add_test(NAME conformance_ref_pipe
-           COMMAND ${ref} pass verilator ${suite} ${w}/ref-pipe ${zb} "" 97 83
+           COMMAND ${ref} pass verilator ${suite} ${w}/ref-pipe ${zb} "" 97 107
                    --profile ${refdir}/profile_pipe.json)
   # The defect catalogue (conformance/ref/defects.json): each defect against the quick tier on
   # Icarus, stopping at the first failing test, which the line names; the quick tier, chosen by the
