@@ -6,7 +6,9 @@
 // passes of K = 1 to the model's LAYERS under random depth functions, masks and peel tests,
 // each closed by its resolve on the tile's store (they never leave the tile), then a pass of the
 // alpha blend, whose store must not resolve the layers again. Faint fragments (alpha 1 to 8) let
-// the resolve's deeper steps meet a large 255 - A.
+// the resolve's deeper steps meet a large 255 - A. Before that alpha pass, a last layers pass
+// fills the tile: every pixel LAYERS + 1 fragments, so every lane, slot and channel of the resolve
+// multiplies random operands (the rounding's rare cases) and every pixel merges.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -45,6 +47,19 @@ void pool_colours(Rng& r, std::vector<Fragment>& f) {
   }
 }
 
+// Every pixel of the tile `n` times, each round in a shuffled order.
+std::vector<Fragment> fill(SamePixelStreams& d, int n) {
+  std::vector<int> order(static_cast<size_t>(kPixels));
+  for (int i = 0; i < kPixels; ++i) order[size_t(i)] = i;
+  std::vector<Fragment> out;
+  for (int round = 0; round < n; ++round) {
+    for (size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[d.r.below(uint32_t(i))]);
+    for (int px : order) out.push_back(d.at(px));
+  }
+  for (size_t i = 0; i < out.size(); ++i) out[i].prim = uint32_t(i / 16);
+  return out;
+}
+
 }  // namespace
 
 Tally suite_layers(const Config& c) {
@@ -63,8 +78,15 @@ Tally suite_layers(const Config& c) {
         if (st.color_mask != 0) count_distances(f, dist);
         draw_pass(cs, fmt::format("layers-{}-k{}", p + 1, int(st.layers)), st, f);
         cs.frame_op({FrameOpKind::kResolveLayers, {}, 0, false});
-        if (p == kLayersPasses - 1) {  // resolved: this store must not resolve them again
-          RopState alpha;
+        if (p == kLayersPasses - 1) {
+          RopState full = layers_state(r);  // every slot in use: K = LAYERS
+          full.color_mask = kMaskRgba;
+          full.layers = uint8_t(RtlRop::model_layers());
+          std::vector<Fragment> all = fill(d, full.layers + 1);
+          pool_colours(r, all);
+          draw_pass(cs, fmt::format("layers-fill-k{}", int(full.layers)), full, all);
+          cs.frame_op({FrameOpKind::kResolveLayers, {}, 0, false});
+          RopState alpha;  // the layers resolved: this store must not resolve them again
           alpha.blend = BlendMode::kAlpha;
           draw_pass(cs, "layers-after", alpha, d.stream(per_pass / 4));
         }

@@ -60,5 +60,20 @@ chosen, got, spent = coverage_report.choose_smoke(hits, secs, ["a", "b", "c", "d
                                                   keep=["b", "d"])
 check("smoke, filled", (chosen, spent), (["a", "c", "d"], 3.5))
 
+# An entry of one set only, in a run of two: the other set lacks its covers (as LAYERS 0 lacks
+# the layers unit's), which is no error; in its own set a missing cover still is.
+only = {"id": "u", "cover": "u_unit.Hit", "sets": ["default"], "unreachable": []}
+both = {"id": "b", "cover": "u_cov.Both", "sets": ["default", "small"], "unreachable": []}
+runs = [("t1", "default", 1.0, {"u_unit.Hit": 2, "u_cov.Both": 1}),
+        ("t2", "small", 1.0, {"u_cov.Both": 3})]
+table, problems = coverage_report.close([only, both], runs)
+check("a set without an entry's covers", (sorted(table), problems),
+      ([("default", "b[]"), ("default", "u[]"), ("small", "b[]")], []))
+try:
+    coverage_report.close([only, both], [("t1", "default", 1.0, {"u_cov.Both": 1})])
+    check("a missing cover in the entry's own set", "no error", "PlanError")
+except coverage_plan.PlanError:
+    pass
+
 print("coverage_report_unit: " + ("FAILED" if failures else "all passed"))
 sys.exit(1 if failures else 0)
