@@ -32,7 +32,6 @@ constexpr int kRunDistances = 16;  // same-pixel runs under read-modify-write bl
 const BlendMode kRmwBlends[] = {BlendMode::kAlpha, BlendMode::kAdditive, BlendMode::kCoverage,
                                 BlendMode::kUnder, BlendMode::kAccumulate, BlendMode::kLayers};
 
-
 int relation(uint32_t z, uint32_t stored) { return z < stored ? 0 : z == stored ? 1 : 2; }
 
 uint8_t channel(Rgba8 c, int k) { return k == 0 ? c.r : k == 1 ? c.g : k == 2 ? c.b : c.a; }
@@ -209,7 +208,8 @@ BinCounts trace_reach(const Trace& t, const DutShape& shape) {
                                fb.reveal_at(i)};
       const uint32_t peel = fb.peel[i];
       const int rel = relation(f.z, before.depth);
-      const PixelLayers layers = fb.layers_at(i);
+      // The layers before the write, copied only in layers mode.
+      const PixelLayers layers = s.blend == BlendMode::kLayers ? fb.layers_at(i) : PixelLayers{};
       const PixelWrites w = golden.process(f);
       if (w.layers) count_layers(bins, s.layers, layers, fragment_layer(f.z, f.color));
 
