@@ -8,7 +8,9 @@
 // alpha blend, whose store must not resolve the layers again. Faint fragments (alpha 1 to 8) let
 // the resolve's deeper steps meet a large 255 - A. Before that alpha pass, a last layers pass
 // fills the tile: every pixel LAYERS + 1 fragments, so every lane, slot and channel of the resolve
-// multiplies random operands (the rounding's rare cases) and every pixel merges.
+// multiplies random operands (the rounding's rare cases) and every pixel merges. A merge pass
+// then gives every pixel 2K + 2 fragments with the depth test off, alphas uniform or faint, so
+// each of the three merges' multipliers meets thousands of random operand pairs.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -60,6 +62,14 @@ std::vector<Fragment> fill(SamePixelStreams& d, int n) {
   return out;
 }
 
+// Every colour and alpha random, the alpha above 0: half of them uniform, half faint.
+void merge_colours(Rng& r, std::vector<Fragment>& f) {
+  for (Fragment& x : f) {
+    x.color = Rgba8{uint8_t(r.below(256)), uint8_t(r.below(256)), uint8_t(r.below(256)),
+                    uint8_t(r.chance(0.5) ? 1 + r.below(255) : 1 + r.below(16))};
+  }
+}
+
 }  // namespace
 
 Tally suite_layers(const Config& c) {
@@ -85,6 +95,14 @@ Tally suite_layers(const Config& c) {
           std::vector<Fragment> all = fill(d, full.layers + 1);
           pool_colours(r, all);
           draw_pass(cs, fmt::format("layers-fill-k{}", int(full.layers)), full, all);
+          cs.frame_op({FrameOpKind::kResolveLayers, {}, 0, false});
+          RopState merge;  // no depth test: every fragment inserts; K random
+          merge.blend = BlendMode::kLayers;
+          merge.depth_test = false;
+          merge.layers = uint8_t(1 + r.below(uint32_t(RtlRop::model_layers())));
+          std::vector<Fragment> many = fill(d, 2 * merge.layers + 2);
+          merge_colours(r, many);
+          draw_pass(cs, fmt::format("layers-merge-k{}", int(merge.layers)), merge, many);
           cs.frame_op({FrameOpKind::kResolveLayers, {}, 0, false});
           RopState alpha;  // the layers resolved: this store must not resolve them again
           alpha.blend = BlendMode::kAlpha;
