@@ -24,7 +24,6 @@ constexpr uint32_t kOldestVersion = 4;
 constexpr uint32_t kMaxFrameOps = 64;
 constexpr uint32_t kMaxPasses = 1024;
 constexpr uint32_t kMaxNameLength = 256;
-constexpr size_t kFragmentBytes = 20;
 
 void put(std::string& out, const void* p, size_t n) { out.append(static_cast<const char*>(p), n); }
 void put_u8(std::string& out, uint8_t v) { out.push_back(static_cast<char>(v)); }
@@ -38,7 +37,7 @@ class Reader {
   Reader(const std::string& bytes, const std::string& name) : bytes_(bytes), name_(name) {}
 
   [[noreturn]] void fail(size_t at, const std::string& what) const {
-    throw TraceError(fmt::format("trace '{}': byte {}: {}", name_, at, what));
+    throw TraceError(fmt::format("trace '{}': byte {}: {}", name_, at, what), at);
   }
   size_t offset() const { return pos_; }
   size_t remaining() const { return bytes_.size() - pos_; }
@@ -48,6 +47,12 @@ class Reader {
     for (int i = 0; i < n; ++i) v |= uint64_t(uint8_t(bytes_[pos_ + size_t(i)])) << (8 * i);
     pos_ += size_t(n);
     return v;
+  }
+  const uint8_t* take(size_t n, const char* what) {
+    if (remaining() < n) fail(pos_, fmt::format("truncated, expected {}", what));
+    const auto* p = reinterpret_cast<const uint8_t*>(bytes_.data() + pos_);
+    pos_ += n;
+    return p;
   }
   std::string get_string(size_t n, const char* what) {
     if (remaining() < n) fail(pos_, fmt::format("truncated, expected {}", what));
@@ -110,6 +115,44 @@ Trace make_trace(const RasterizedScene& rs, const PassPlan& plan) {
   return t;
 }
 
+void encode_fragment(std::string& out, const Fragment& f) {
+  put_u16(out, f.x);
+  put_u16(out, f.y);
+  put_u32(out, f.z);
+  for (uint8_t c : {f.color.r, f.color.g, f.color.b, f.color.a}) put_u8(out, c);
+  put_u8(out, f.front ? 1 : 0);
+  put_u8(out, f.coverage);  // flags bits 8..15
+  put_u16(out, 0);
+  put_u32(out, f.prim);
+}
+
+std::string decode_fragment(const uint8_t* rec, int width, int height, int depth_bits,
+                            int samples, Fragment& f) {
+  auto get = [rec](int at, int n) {
+    uint64_t v = 0;
+    for (int i = 0; i < n; ++i) v |= uint64_t(rec[at + i]) << (8 * i);
+    return v;
+  };
+  f.x = uint16_t(get(0, 2));
+  f.y = uint16_t(get(2, 2));
+  const uint64_t z = get(4, 4);
+  f.color = {rec[8], rec[9], rec[10], rec[11]};
+  const uint64_t flags = get(12, 4);
+  f.prim = uint32_t(get(16, 4));
+  if (f.x >= width || f.y >= height)
+    return fmt::format("fragment ({}, {}) is outside the {}x{} frame", f.x, f.y, width, height);
+  if (z > depth_max(depth_bits))
+    return fmt::format("fragment depth {} exceeds {} bits", z, depth_bits);
+  if (flags & ~uint64_t{0xff01}) return "fragment flags have reserved bits set";
+  const uint64_t coverage = (flags >> 8) & 0xffu;
+  if (coverage > uint64_t(samples))
+    return fmt::format("fragment coverage {} exceeds the {} samples", coverage, samples);
+  f.z = uint32_t(z);
+  f.front = flags & 1;
+  f.coverage = uint8_t(coverage);
+  return "";
+}
+
 std::string serialize_trace(const Trace& t) {
   std::string out;
   put(out, kMagic, sizeof kMagic);
@@ -127,16 +170,7 @@ std::string serialize_trace(const Trace& t) {
     put_ops(out, p.frame_ops);
     put_u16(out, pack_state(p.state));
     put_u64(out, p.fragments.size());
-    for (const Fragment& f : p.fragments) {
-      put_u16(out, f.x);
-      put_u16(out, f.y);
-      put_u32(out, f.z);
-      for (uint8_t c : {f.color.r, f.color.g, f.color.b, f.color.a}) put_u8(out, c);
-      put_u8(out, f.front ? 1 : 0);
-      put_u8(out, f.coverage);  // flags bits 8..15
-      put_u16(out, 0);
-      put_u32(out, f.prim);
-    }
+    for (const Fragment& f : p.fragments) encode_fragment(out, f);
   }
   put_ops(out, t.final_ops);
   return out;
@@ -208,32 +242,15 @@ Trace parse_trace(const std::string& bytes, const std::string& name) {
       r.fail(at_state, fmt::format("pass {}: invalid pass state", p + 1));
     const size_t at_count = r.offset();
     const uint64_t count = r.get(8, "a fragment count");
-    if (count > r.remaining() / kFragmentBytes)
+    if (count > r.remaining() / kTraceFragmentBytes)
       r.fail(at_count, fmt::format("pass {}: {} fragments announced, {} bytes left", p + 1, count,
                                    r.remaining()));
     pass.fragments.resize(size_t(count));
     for (Fragment& f : pass.fragments) {
       const size_t at = r.offset();
-      f.x = uint16_t(r.get(2, "x"));
-      f.y = uint16_t(r.get(2, "y"));
-      const uint64_t z = r.get(4, "z");
-      f.color = {uint8_t(r.get(1, "r")), uint8_t(r.get(1, "g")), uint8_t(r.get(1, "b")),
-                 uint8_t(r.get(1, "a"))};
-      const uint64_t flags = r.get(4, "flags");
-      f.prim = uint32_t(r.get(4, "prim"));
-      if (f.x >= t.width || f.y >= t.height)
-        r.fail(at, fmt::format("fragment ({}, {}) is outside the {}x{} frame", f.x, f.y, t.width,
-                               t.height));
-      if (z > depth_max(t.depth_bits))
-        r.fail(at, fmt::format("fragment depth {} exceeds {} bits", z, t.depth_bits));
-      if (flags & ~uint64_t{0xff01}) r.fail(at, "fragment flags have reserved bits set");
-      const uint64_t coverage = (flags >> 8) & 0xffu;
-      if (coverage > uint64_t(t.coverage_samples))
-        r.fail(at, fmt::format("fragment coverage {} exceeds the {} samples", coverage,
-                               t.coverage_samples));
-      f.z = uint32_t(z);
-      f.front = flags & 1;
-      f.coverage = uint8_t(coverage);
+      const std::string bad = decode_fragment(r.take(kTraceFragmentBytes, "a fragment"), t.width,
+                                              t.height, t.depth_bits, t.coverage_samples, f);
+      if (!bad.empty()) r.fail(at, bad);
     }
     t.passes.push_back(std::move(pass));
   }

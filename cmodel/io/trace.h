@@ -32,8 +32,18 @@ struct Trace {
 
 // A malformed trace file; what() names the file, the byte offset and what is wrong.
 struct TraceError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  explicit TraceError(const std::string& what, size_t at = 0) : std::runtime_error(what), byte(at) {}
+  size_t byte;  // the byte offset of a malformed field (0 when the file could not be read)
 };
+
+// One fragment record of a trace ("Trace files": 20 bytes), the unit a fragment stream in memory
+// is made of as well (the virtual platform's DRAW command, docs/systemc.md).
+constexpr size_t kTraceFragmentBytes = 20;
+void encode_fragment(std::string& out, const Fragment& f);
+// Decodes `rec` and checks it against the frame (inside width x height, depth within
+// depth_bits, coverage at most `samples`, no reserved flag): an empty string, or what is wrong.
+std::string decode_fragment(const uint8_t* rec, int width, int height, int depth_bits,
+                            int samples, Fragment& f);
 
 // The trace of rendering `rs` with `plan`: every pass's state and fragments.
 Trace make_trace(const RasterizedScene& rs, const PassPlan& plan);

@@ -1,0 +1,238 @@
+#include "zb_vp_host.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <stdexcept>
+
+#include <fmt/core.h>
+
+#include "zb_rop_regs.h"
+
+namespace zb::vp {
+
+using sc_core::sc_time;
+
+namespace {
+
+constexpr uint64_t kAlign = 1u << 20;
+uint64_t align_up(uint64_t n) { return (n + kAlign - 1) / kAlign * kAlign; }
+
+uint64_t stream_bytes(const HostJob& j) {
+  if (j.programming == Programming::kStream) return serialize_trace(*j.trace).size();
+  uint64_t most = 0;
+  for (const TracePass& p : j.trace->passes) most = std::max<uint64_t>(most, p.fragments.size());
+  return most * kTraceFragmentBytes;
+}
+
+}  // namespace
+
+HostLayout layout_for(const std::vector<HostJob>& jobs) {
+  uint64_t pixels = 1, stream = 1;
+  for (const HostJob& j : jobs) {
+    pixels = std::max<uint64_t>(pixels, uint64_t(j.trace->width) * uint64_t(j.trace->height));
+    stream = std::max(stream, stream_bytes(j));
+  }
+  HostLayout l;
+  l.fb = 0;
+  l.depth = align_up(pixels * 4);
+  l.stream = l.depth + align_up(pixels * 4);
+  l.bytes = l.stream + align_up(stream);
+  return l;
+}
+
+ZbVpHost::ZbVpHost(sc_core::sc_module_name name, int rops, std::vector<HostJob>& jobs,
+                   HostLayout layout)
+    : sc_module(name), mem("mem"), jobs_(jobs), layout_(layout) {
+  for (int i = 0; i < rops; ++i) {
+    rop.push_back(std::make_unique<tlm_utils::simple_initiator_socket<ZbVpHost>>(
+        fmt::format("rop{}", i).c_str()));
+    irq.push_back(std::make_unique<sc_core::sc_in<bool>>(fmt::format("irq{}", i).c_str()));
+  }
+  mem.register_invalidate_direct_mem_ptr(this, &ZbVpHost::invalidate);
+  SC_HAS_PROCESS(ZbVpHost);
+  SC_THREAD(run);
+}
+
+void ZbVpHost::invalidate(sc_dt::uint64 start, sc_dt::uint64 end) {
+  if (dmi_valid_ && start <= dmi_.get_end_address() && end >= dmi_.get_start_address())
+    dmi_valid_ = false;
+}
+
+void ZbVpHost::run() {
+  for (HostJob& job : jobs_) run_job(job);
+  qk_.sync();
+  sc_core::sc_stop();
+}
+
+void ZbVpHost::run_job(HostJob& job) {
+  const auto wall = std::chrono::steady_clock::now();
+  qk_.sync();
+  job.start = sc_core::sc_time_stamp();
+  const Trace& t = *job.trace;
+  write_reg(job, reg::kFbAddrLo, uint32_t(layout_.fb));
+  write_reg(job, reg::kFbAddrHi, uint32_t(layout_.fb >> 32));
+  write_reg(job, reg::kFbStride, uint32_t(t.width) * 4);
+  write_reg(job, reg::kDepthAddrLo, uint32_t(layout_.depth));
+  write_reg(job, reg::kDepthAddrHi, uint32_t(layout_.depth >> 32));
+  write_reg(job, reg::kDepthStride, uint32_t(t.width) * 4);
+  if (job.programming == Programming::kStream) {
+    std::string bytes = serialize_trace(t);
+    mem_access(tlm::TLM_WRITE_COMMAND, layout_.stream, reinterpret_cast<uint8_t*>(bytes.data()),
+               bytes.size());
+    write_reg(job, reg::kStreamAddrLo, uint32_t(layout_.stream));
+    write_reg(job, reg::kStreamAddrHi, uint32_t(layout_.stream >> 32));
+    write_reg(job, reg::kStreamBytes, uint32_t(bytes.size()));
+    command(job, uint32_t(Command::kRunStream));
+  } else {
+    program_registers(job);
+  }
+  const size_t n = size_t(t.width) * size_t(t.height);
+  job.passes = read_reg(job, reg::kPasses);
+  job.fragments_in = read_reg64(job, reg::kFragmentsInLo);
+  job.cycles = read_reg64(job, reg::kCyclesLo);
+  job.dma_transactions = read_reg64(job, reg::kDmaTransactionsLo);
+  if (job.error.empty()) {
+    job.frame.resize(n);
+    job.depth.resize(n);
+    mem_access(tlm::TLM_READ_COMMAND, layout_.fb, reinterpret_cast<uint8_t*>(job.frame.data()), n * 4);
+    mem_access(tlm::TLM_READ_COMMAND, layout_.depth, reinterpret_cast<uint8_t*>(job.depth.data()),
+               n * 4);
+  }
+  qk_.sync();
+  job.end = sc_core::sc_time_stamp();
+  job.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall).count();
+}
+
+// The frame command by command: the same steps RUN_STREAM takes from the trace.
+void ZbVpHost::program_registers(HostJob& job) {
+  const Trace& t = *job.trace;
+  const auto op = [&](const FrameOp& o) {
+    write_reg(job, reg::kOpKind, uint32_t(o.kind));
+    write_reg(job, reg::kOpColor, uint32_t(o.value.r) | uint32_t(o.value.g) << 8 |
+                                      uint32_t(o.value.b) << 16 | uint32_t(o.value.a) << 24);
+    write_reg(job, reg::kOpDepth, o.depth);
+    return command(job, uint32_t(Command::kFrameOp));
+  };
+  write_reg(job, reg::kFrameSize, uint32_t(t.width) | uint32_t(t.height) << 16);
+  write_reg(job, reg::kFrameFormat, uint32_t(t.depth_bits) | uint32_t(t.coverage_samples) << 8);
+  write_reg(job, reg::kWboit, uint32_t(t.wboit.acc_bits) | uint32_t(t.wboit.rev_bits) << 8 |
+                                  uint32_t(t.wboit.weight_bits) << 16);
+  const Rgba8 c = t.clear_color;
+  write_reg(job, reg::kClearColor, uint32_t(c.r) | uint32_t(c.g) << 8 | uint32_t(c.b) << 16 |
+                                       uint32_t(c.a) << 24);
+  if (command(job, uint32_t(Command::kBeginFrame)) & status::kError) return;
+  for (const TracePass& p : t.passes) {
+    for (const FrameOp& o : p.frame_ops)
+      if (op(o) & status::kError) return;
+    write_reg(job, reg::kPassState, pack_state(p.state));
+    if (command(job, uint32_t(Command::kBeginPass)) & status::kError) return;
+    std::string bytes;
+    bytes.reserve(p.fragments.size() * kTraceFragmentBytes);
+    for (const Fragment& f : p.fragments) encode_fragment(bytes, f);
+    mem_access(tlm::TLM_WRITE_COMMAND, layout_.stream, reinterpret_cast<uint8_t*>(bytes.data()),
+               bytes.size());
+    write_reg(job, reg::kFragAddrLo, uint32_t(layout_.stream));
+    write_reg(job, reg::kFragAddrHi, uint32_t(layout_.stream >> 32));
+    write_reg(job, reg::kFragCount, uint32_t(p.fragments.size()));
+    if (command(job, uint32_t(Command::kDraw)) & status::kError) return;
+    if (command(job, uint32_t(Command::kEndPass)) & status::kError) return;
+  }
+  for (const FrameOp& o : t.final_ops)
+    if (op(o) & status::kError) return;
+  command(job, uint32_t(Command::kEndFrame));
+}
+
+// Writes COMMAND, waits for the interrupt, writes STATUS back; an error is recorded in the job.
+uint32_t ZbVpHost::command(HostJob& job, uint32_t cmd) {
+  write_reg(job, reg::kCommand, cmd);
+  qk_.sync();  // the ROP runs from the host's time on
+  sc_core::sc_in<bool>& line = *irq[size_t(job.rop)];
+  if (!line.read()) wait(line.posedge_event());
+  const uint32_t s = read_reg(job, reg::kStatus);
+  job.status = s;
+  if (s & status::kError) {
+    job.error = fmt::format("command {}: STATUS 0x{:x} (error code {}), ERROR_INFO {}", cmd, s,
+                            (s >> status::kCodeShift) & 0xff, read_reg(job, reg::kErrorInfo));
+  }
+  write_reg(job, reg::kStatus, status::kDone | status::kError);
+  return s;
+}
+
+void ZbVpHost::write_reg(HostJob& job, uint64_t addr, uint32_t v) {
+  reg_access(job, tlm::TLM_WRITE_COMMAND, addr, v);
+}
+
+uint32_t ZbVpHost::read_reg(HostJob& job, uint64_t addr) {
+  uint32_t v = 0;
+  reg_access(job, tlm::TLM_READ_COMMAND, addr, v);
+  return v;
+}
+
+uint64_t ZbVpHost::read_reg64(HostJob& job, uint64_t lo) {
+  const uint64_t low = read_reg(job, lo);
+  return low | uint64_t(read_reg(job, lo + 4)) << 32;
+}
+
+void ZbVpHost::reg_access(HostJob& job, tlm::tlm_command cmd, uint64_t addr, uint32_t& v) {
+  tlm::tlm_generic_payload tx;
+  tx.set_command(cmd);
+  tx.set_address(addr);
+  tx.set_data_ptr(reinterpret_cast<unsigned char*>(&v));
+  tx.set_data_length(4);
+  tx.set_streaming_width(4);
+  tx.set_byte_enable_ptr(nullptr);
+  tx.set_dmi_allowed(false);
+  tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  sc_time delay = qk_.get_local_time();
+  (*rop[size_t(job.rop)])->b_transport(tx, delay);
+  qk_.set(delay);
+  ++job.rop_transactions;
+  if (tx.is_response_error())
+    throw std::runtime_error(fmt::format("host: register 0x{:x}: {}", addr, tx.get_response_string()));
+  if (qk_.need_sync()) qk_.sync();
+}
+
+void ZbVpHost::mem_access(tlm::tlm_command cmd, uint64_t addr, uint8_t* data, size_t len) {
+  constexpr size_t kBurst = 4096;
+  while (len > 0) {
+    const bool allowed = cmd == tlm::TLM_READ_COMMAND ? dmi_.is_read_allowed() : dmi_.is_write_allowed();
+    if (dmi_valid_ && allowed && addr >= dmi_.get_start_address() &&
+        addr + len - 1 <= dmi_.get_end_address()) {
+      uint8_t* p = dmi_.get_dmi_ptr() + (addr - dmi_.get_start_address());
+      if (cmd == tlm::TLM_READ_COMMAND) std::memcpy(data, p, len);
+      else std::memcpy(p, data, len);
+      qk_.inc((cmd == tlm::TLM_READ_COMMAND ? dmi_.get_read_latency() : dmi_.get_write_latency()) *
+              double((len + 7) / 8));
+      if (qk_.need_sync()) qk_.sync();
+      return;
+    }
+    const size_t n = std::min(len, kBurst);
+    tlm::tlm_generic_payload tx;
+    tx.set_command(cmd);
+    tx.set_address(addr);
+    tx.set_data_ptr(data);
+    tx.set_data_length(unsigned(n));
+    tx.set_streaming_width(unsigned(n));
+    tx.set_byte_enable_ptr(nullptr);
+    tx.set_dmi_allowed(false);
+    tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+    sc_time delay = qk_.get_local_time();
+    mem->b_transport(tx, delay);
+    qk_.set(delay);
+    if (tx.is_response_error())
+      throw std::runtime_error(fmt::format("host: memory at 0x{:x}: {}", addr, tx.get_response_string()));
+    if (tx.is_dmi_allowed() && !dmi_valid_) {
+      tlm::tlm_generic_payload req;
+      req.set_command(cmd);
+      req.set_address(addr);
+      dmi_valid_ = mem->get_direct_mem_ptr(req, dmi_);
+    }
+    if (qk_.need_sync()) qk_.sync();
+    addr += n;
+    data += n;
+    len -= n;
+  }
+}
+
+}  // namespace zb::vp
