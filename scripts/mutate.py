@@ -72,14 +72,18 @@ def parse_args():
     ap.add_argument("--resume", action="store_true",
                     help="keep the verdicts in OUT/journal.jsonl from an interrupted run with "
                     "the same netlist and run only the rest")
-    ap.add_argument("--reasons", default=os.path.join(ROOT, "tb", "mutation", "reasons.json"),
+    ap.add_argument("--reasons", default=None,
                     help="written reasons for survivors no test can kill (default "
-                    "tb/mutation/reasons.json); the report names each survivor's")
+                    "tb/mutation/reasons.json, with --netlist layers reasons_layers.json); the "
+                    "report names each survivor's")
     ap.add_argument("--min-smoke", type=float, default=0.0,
                     help="exit 1 below this smoke score, percent (default 0)")
     ap.add_argument("--min-full", type=float, default=0.0,
                     help="exit 1 below this full score, percent (default 0)")
     a = ap.parse_args()
+    if a.reasons is None:
+        a.reasons = os.path.join(ROOT, "tb", "mutation",
+                                 "reasons_layers.json" if a.netlist == "layers" else "reasons.json")
     if a.jobs < 1:
         usage_error(f"-j {a.jobs}: 1 or more")
     return a

@@ -28,7 +28,7 @@ class GoldenInside final : public RopInside {
 
  private:
   GoldenRop rop_;
-  CostCounter counter_{rop_};
+  CostCounter counter_{rop_, kRtlBeat, CostScope::kPassSchedule};
 };
 
 class RtlInside final : public RopInside {

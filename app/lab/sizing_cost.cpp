@@ -83,7 +83,9 @@ void CostCounter::begin_frame(int width, int height, int depth_bits, Rgba8 clear
   group_steps_.clear();
   group_passes_ = 0;
   grids_.clear();
-  for (const int size : cost_tile_sizes()) {
+  const std::vector<int> sizes =
+      scope_ == CostScope::kLab ? cost_tile_sizes() : std::vector<int>{kRtlTileW};
+  for (const int size : sizes) {
     Grid g;
     g.size = size;
     g.columns = (width + size - 1) / size;
@@ -153,11 +155,13 @@ PassStats CostCounter::end_pass() {
                                       kRtlTileSetup + (io.load ? beats : 0),
                                       io.store ? beats : 0});
     }
-    const OverlapCycles two = schedule_.run_two_buffers(overlapped);
-    c.two_buffer_stream += two.stream;
-    c.two_buffer_cycles += two.total;
-    for (TileStream& t : overlapped) t.load_cycles = t.store_cycles = 0;
-    c.two_buffer_pipe += schedule_.run_two_buffers(overlapped).stream;
+    if (scope_ == CostScope::kLab) {
+      const OverlapCycles two = schedule_.run_two_buffers(overlapped);
+      c.two_buffer_stream += two.stream;
+      c.two_buffer_cycles += two.total;
+      for (TileStream& t : overlapped) t.load_cycles = t.store_cycles = 0;
+      c.two_buffer_pipe += schedule_.run_two_buffers(overlapped).stream;
+    }
     for (const uint32_t t : g.touched) g.stream[t].clear();
     c.tiles_loaded += g.touched.size();
     g.group.push_back(std::move(g.touched));
@@ -172,7 +176,7 @@ PassStats CostCounter::end_pass() {
 // at the group's start): a copy or sweep before a pass, its setup cycle and loads, one store.
 void CostCounter::end_group() {
   if (group_passes_ == 0) return;
-  for (size_t k = 0; k < grids_.size(); ++k) {
+  for (size_t k = 0; k < grids_.size() && scope_ == CostScope::kLab; ++k) {
     Grid& g = grids_[k];
     ResidentTraffic& r = cost_.tiles[k].resident;
     const uint64_t beats = tile_beats(g.size, g.size, beat_);
@@ -244,6 +248,10 @@ void CostCounter::end_group() {
     r.two_buffer_cycles += two_buffer_group(runs);
     for (size_t v = 0; v < kBankVariants.size(); ++v)
       r.two_buffer_variant_cycles[v] += two_buffer_group(variants[v]);
+    g.group.clear();
+    g.group_stream.clear();
+  }
+  for (Grid& g : grids_) {
     g.group.clear();
     g.group_stream.clear();
   }

@@ -107,11 +107,17 @@ std::vector<int> cost_tile_sizes();
 // coverage_bits(samples), the accumulation word (zb_rop's five planes).
 uint64_t tile_pixel_bits(int depth_bits, int coverage_samples, const WboitFormat& wboit = {});
 
+// What a CostCounter counts: everything the lab compares (every tile size of cost_tile_sizes,
+// both schedules, two buffers, the bank variants), or only zb_rop's tile under the pass
+// schedule (streaming and tile port cycles, traffic): what a model timed like the RTL needs.
+enum class CostScope { kLab, kPassSchedule };
+
 // Wraps a backend, forwarding every call, and counts the method's cost.
 class CostCounter final : public Backend {
  public:
   // `beat`: the tile port's pixels per clock (zb_rop's BEAT; other widths for the sweep).
-  explicit CostCounter(Backend& inner, int beat = kRtlBeat) : inner_(inner), beat_(beat) {}
+  explicit CostCounter(Backend& inner, int beat = kRtlBeat, CostScope scope = CostScope::kLab)
+      : inner_(inner), beat_(beat), scope_(scope) {}
   ~CostCounter() override = default;
   const char* name() const override { return inner_.name(); }
   using Backend::begin_frame;
@@ -147,6 +153,7 @@ class CostCounter final : public Backend {
   size_t group_passes_ = 0;
   Backend& inner_;
   int beat_;
+  CostScope scope_;
   RopState state_;
   int width_ = 0, height_ = 0;
   std::vector<Grid> grids_;

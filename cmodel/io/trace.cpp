@@ -116,14 +116,18 @@ Trace make_trace(const RasterizedScene& rs, const PassPlan& plan) {
 }
 
 void encode_fragment(std::string& out, const Fragment& f) {
-  put_u16(out, f.x);
-  put_u16(out, f.y);
-  put_u32(out, f.z);
-  for (uint8_t c : {f.color.r, f.color.g, f.color.b, f.color.a}) put_u8(out, c);
-  put_u8(out, f.front ? 1 : 0);
-  put_u8(out, f.coverage);  // flags bits 8..15
-  put_u16(out, 0);
-  put_u32(out, f.prim);
+  uint8_t rec[kTraceFragmentBytes] = {};
+  const auto set = [&rec](int at, uint64_t v, int n) {
+    for (int i = 0; i < n; ++i) rec[at + i] = uint8_t(v >> (8 * i));
+  };
+  set(0, f.x, 2);
+  set(2, f.y, 2);
+  set(4, f.z, 4);
+  rec[8] = f.color.r, rec[9] = f.color.g, rec[10] = f.color.b, rec[11] = f.color.a;
+  rec[12] = f.front ? 1 : 0;
+  rec[13] = f.coverage;  // flags bits 8..15
+  set(16, f.prim, 4);
+  out.append(reinterpret_cast<const char*>(rec), sizeof rec);
 }
 
 std::string decode_fragment(const uint8_t* rec, int width, int height, int depth_bits,
@@ -155,6 +159,9 @@ std::string decode_fragment(const uint8_t* rec, int width, int height, int depth
 
 std::string serialize_trace(const Trace& t) {
   std::string out;
+  size_t fragments = 0;
+  for (const TracePass& p : t.passes) fragments += p.fragments.size();
+  out.reserve(64 + t.passes.size() * 1024 + fragments * kTraceFragmentBytes);
   put(out, kMagic, sizeof kMagic);
   put_u32(out, kVersion);
   put_u32(out, uint32_t(t.width));
