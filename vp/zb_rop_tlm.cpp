@@ -25,6 +25,8 @@ struct ZbRopTlm::CommandError {
 namespace {
 
 constexpr uint32_t kBusBytes = 8;  // DMA beats: a DMI access is timed as a burst of them
+// The most a command buffers (a stream, a DRAW's fragments): the model fetches before it runs.
+constexpr uint64_t kMaxBuffer = uint64_t{256} << 20;
 
 uint32_t word_of(Rgba8 c) { return uint32_t(c.r) | uint32_t(c.g) << 8 | uint32_t(c.b) << 16 | uint32_t(c.a) << 24; }
 Rgba8 rgba_of(uint32_t w) { return {uint8_t(w), uint8_t(w >> 8), uint8_t(w >> 16), uint8_t(w >> 24)}; }
@@ -101,7 +103,9 @@ ZbRopTlm::Write ZbRopTlm::write_reg(uint64_t a, uint32_t v, const sc_time& delay
   switch (a) {
     case reg::kStatus:
       if (debug) return Write::kSideEffect;
-      set_status(status_ & ~(v & (status::kDone | status::kError)));
+      // Writing back the error bit clears its code too.
+      set_status(status_ & ~(v & (status::kDone | status::kError)) &
+                 ~((v & status::kError) ? 0xffu << status::kCodeShift : 0u));
       return Write::kOk;
     case reg::kCommand:
       if (debug) return Write::kSideEffect;
@@ -215,7 +219,10 @@ void ZbRopTlm::run() {
       error_info_ = e.info;
     }
     qk_.sync();  // the command's time passes before its status shows
-    set_status(code ? (status::kError | code << status::kCodeShift) : status::kDone);
+    // A command dropped while this one ran (busy) stays reported until written back.
+    const uint32_t dropped =
+        status_ & status::kError ? status::kError | uint32_t(ErrorCode::kBusy) << status::kCodeShift : 0;
+    set_status(code ? (status::kError | code << status::kCodeShift) : (status::kDone | dropped));
   }
 }
 
@@ -382,6 +389,10 @@ void ZbRopTlm::store_tile(int tx, int ty) {
 // A whole frame from the trace in memory, through the same steps as the registers' commands.
 void ZbRopTlm::run_stream() {
   if (in_pass_) throw CommandError{ErrorCode::kOrder, "RUN_STREAM inside a pass"};
+  if (stream_bytes_ > kMaxBuffer)
+    throw CommandError{ErrorCode::kBadSetup,
+                       fmt::format("STREAM_BYTES {} is above the model's {} MiB", stream_bytes_,
+                                   kMaxBuffer >> 20)};
   std::string bytes(stream_bytes_, '\0');
   dma_access(tlm::TLM_READ_COMMAND, stream_addr_, reinterpret_cast<uint8_t*>(bytes.data()),
              bytes.size());
@@ -404,6 +415,10 @@ void ZbRopTlm::run_stream() {
 }
 
 std::vector<Fragment> ZbRopTlm::fetch_fragments(uint64_t addr, uint64_t count) {
+  if (count * kTraceFragmentBytes > kMaxBuffer)
+    throw CommandError{ErrorCode::kBadSetup,
+                       fmt::format("FRAG_COUNT {} is above the model's {} MiB of fragments",
+                                   count, kMaxBuffer >> 20)};
   std::vector<uint8_t> bytes(count * kTraceFragmentBytes);
   dma_access(tlm::TLM_READ_COMMAND, addr, bytes.data(), bytes.size());
   std::vector<Fragment> out(count);
