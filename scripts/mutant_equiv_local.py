@@ -8,10 +8,10 @@ not flattened into it, equal to its mutant on every output in every cycle for AN
 module equal in every context is equal in zb_rop's, so "proven" here is sound for zb_rop; a
 mutant equal only in zb_rop's context (the port contract) is not proven.
 
-The flattened netlist names its cells per elaboration, so the mutated cell is found again in
-the module by its path (the instances in the flattened name), its type and its source location.
-When several cells there share them (a loop or a function's cells), each is proven in turn:
-proven only if all are. The proof itself is scripts/mutant_equiv.sh on the module.
+The mutated cell is found again in the module by its path (the instances in the flattened
+name), then by its own name where the module still has it at the same type and source location,
+else by type and source location alone: when several cells share them (a loop's or a
+function's), each is proven in turn, proven only if all are. The proof itself is scripts/mutant_equiv.sh on the module.
 Exit: 0 proven; 1 not proven; 2 usage; 3 no verdict (time limit, Yosys failed, cell not found).
 """
 import argparse
@@ -68,11 +68,19 @@ def flat_cell_info(design, cell):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("hier", help="zb_rop elaborated with its parameters, not flattened (RTLIL)")
-    ap.add_argument("design", help="the flattened netlist the mutations name (design.il)")
+    ap.add_argument("design", help="the flattened netlist the mutations name (design.il; "
+                    "scripts/mutants.sh writes hier.il, the same not flattened, beside it)")
     ap.add_argument("mutant", type=int, help="line N of mutations.txt beside DESIGN")
     ap.add_argument("--time-limit", type=int, default=300, help="seconds a candidate cell")
+    ap.add_argument("--up", type=int, default=0,
+                    help="prove on the module this many levels above the cell's (its constant "
+                         "inputs there join the proof; default 0: the cell's own module)")
     a = ap.parse_args()
+    a.hier = os.path.join(os.path.dirname(a.design), "hier.il")
+    if not os.path.exists(a.hier):
+        print(f"mutant_equiv_local: {a.hier} is missing (scripts/mutants.sh of this build)",
+              file=sys.stderr)
+        return 2
     listing = os.path.join(os.path.dirname(a.design), "mutations.txt")
     with open(listing) as f:
         lines = f.read().splitlines()
@@ -89,35 +97,51 @@ def main():
     if ctype is None:
         print(f"no verdict: {flat} is not in {a.design}")
         return 3
-    levels, _ = split_flat_name(flat)
+    levels, own_name = split_flat_name(flat)
     mods = rtlil_modules(a.hier)
-    mod = "\\zb_rop"
+    path = ["\\zb_rop"]
     for inst in levels:
-        cells = mods.get(mod, {})
+        cells = mods.get(path[-1], {})
         key = "\\" + inst
         if key not in cells:
-            print(f"no verdict: no instance {inst} in {mod}")
+            print(f"no verdict: no instance {inst} in {path[-1]}")
             return 3
-        mod = cells[key][0]
+        path.append(cells[key][0])
+    if not 0 <= a.up < len(path):
+        print(f"mutant_equiv_local: --up {a.up}: the cell is {len(path) - 1} levels down", file=sys.stderr)
+        return 2
+    mod = path[-1]
+    top = path[-1 - a.up]
+    prefix = "".join("\\" + inst + "." for inst in levels[len(levels) - a.up:])
     # The cell's own source location is the one in the module's file (the others are the
     # instances'); its type must match.
     own = set(src.split("|"))
-    candidates = [n for n, (t, s) in mods[mod].items()
-                  if t == ctype and s and set(s.split("|")) <= own]
+    def same_place(t, s):
+        return t == ctype and s and set(s.split("|")) <= own
+    # Both netlists come from one elaboration up to the flattening, which keeps a cell's own name
+    # (its global index included): the cell of that name, when the module still has it at the
+    # same place, is the one. Else every cell at the place.
+    here = mods[mod].get(own_name)
+    if here and same_place(*here):
+        candidates = [own_name]
+    else:
+        candidates = [n for n, (t, s) in mods[mod].items() if same_place(t, s)]
     if not candidates:
         print(f"no verdict: no {ctype} cell at {src} in {mod}")
         return 3
     verdicts = []
     with tempfile.TemporaryDirectory() as tmp:
         design = os.path.join(tmp, "module.il")
-        r = subprocess.run(["yosys", "-q", "-p", f"read_rtlil {a.hier}; hierarchy -top {mod}; "
+        r = subprocess.run(["yosys", "-q", "-p", f"read_rtlil {a.hier}; hierarchy -top {top}; "
                             f"flatten; rename -top zb_rop; write_rtlil {design}"],
                            capture_output=True, text=True)
         if r.returncode != 0:
             print(f"no verdict: yosys failed on {mod}: {r.stderr.strip()[-300:]}")
             return 3
         for c in candidates:
-            mutation = re.sub(r"-cell \S+", lambda _: f"-cell {c}", desc)
+            # Flattened into `top`, the cell's name carries the instances below it.
+            cell = ("$flatten" + prefix + c) if a.up else c
+            mutation = re.sub(r"-cell \S+", lambda _: f"-cell {cell}", desc)
             mutation = re.sub(r" -(wire|wirebit|src) \S+", "", mutation)
             p = subprocess.run([os.path.join(ROOT, "scripts", "mutant_equiv.sh"), "--time-limit",
                                 str(a.time_limit), design, mutation], capture_output=True,
@@ -125,7 +149,7 @@ def main():
             verdicts.append((c, p.returncode, p.stdout.strip()))
             if p.returncode != 0:
                 break
-    name = mod.split("\\")[-1]
+    name = top.split("\\")[-1]
     if all(rc == 0 for _, rc, _ in verdicts):
         print(f"proven equivalent on {name} alone ({len(verdicts)} cell(s) at its source)")
         return 0

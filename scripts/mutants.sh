@@ -6,8 +6,9 @@
 #  2. Each is applied with `mutate -ctrl mutsel W i`: live only when mutsel == i (0: none), so
 #     one netlist, Verilated once, holds all N; the wrapper tb/mutation/zb_rop_mutant.sv sets mutsel
 #     from the plusarg +zb_mutant=i.
-# Writes OUT/mutations.txt (line i: mutant i, Yosys's own description), OUT/mutants.v and
-# OUT/design.il (zb_rop unmutated, for scripts/mutant_equiv.sh).
+# Writes OUT/mutations.txt (line i: mutant i, Yosys's own description), OUT/mutants.v,
+# OUT/design.il (zb_rop unmutated, for scripts/mutant_equiv.sh) and OUT/hier.il (the same, not
+# flattened, for scripts/mutant_equiv_local.py).
 set -euo pipefail
 
 usage() {
@@ -73,5 +74,11 @@ awk -v n="$(wc -l < "$tmp/kept.txt")" -v c="$count" \
 yosys -q -l "$tmp/apply.log" "$tmp/apply.ys" >/dev/null 2>&1 ||
   { echo "mutants.sh: yosys failed applying mutations (log: $tmp/apply.log)" >&2; cp "$tmp/apply.log" "$out/"; exit 1; }
 
-mv "$tmp/mutations.txt" "$tmp/mutants.v" "$tmp/design.il" "$out/"
+# zb_rop at the same widths but not flattened: scripts/mutant_equiv_local.py proves a mutant on
+# the module that holds its cell.
+yosys -q -l "$tmp/hier.log" -p "read_verilog -sv $rtl; ${params:+chparam$params zb_rop;}
+  hierarchy -top zb_rop; rename -top zb_rop; prep -top zb_rop; write_rtlil $tmp/hier.il" >/dev/null 2>&1 ||
+  { echo "mutants.sh: yosys failed elaborating the hierarchy (log: $tmp/hier.log)" >&2; cp "$tmp/hier.log" "$out/"; exit 1; }
+
+mv "$tmp/mutations.txt" "$tmp/mutants.v" "$tmp/design.il" "$tmp/hier.il" "$out/"
 echo "mutants.sh: $count mutants of zb_rop (seed $seed${src:+, in $src}) in $out/mutants.v"

@@ -10,9 +10,10 @@ Runs zblend_tb_mut (zb_rop as Yosys's mutant netlist, build/tb/mutation/) agains
      netlist that is not zb_rop scores nothing; its times set each test's time limit;
   2. each mutant runs the smoke group (tb/regressions.json: what make test runs) in order, and
      is killed at the first test that fails: a mismatch, an error, a crash or the time limit;
-  3. each smoke survivor goes to Yosys's equivalence flow (scripts/mutant_equiv.sh): one proven
-     equivalent to zb_rop can be killed by no test and leaves the score (but for those whose
-     written reason, --reasons, says they differ);
+  3. each smoke survivor goes to Yosys's equivalence flow (--equiv-scope: on its cell's module
+     and that module's parent, scripts/mutant_equiv_local.py; on the whole zb_rop,
+     scripts/mutant_equiv.sh): one proven equivalent to zb_rop can be killed by no test and
+     leaves the score (but for those whose written reason, --reasons, says they differ);
   4. each survivor not proven equivalent runs the full group (smoke's tests, then full's); one
      with a written reason counts as a survivor without the run, unless --full-all.
 Score = killed / (mutants - proven equivalent), for smoke and for full. Writes OUT/mutants.csv
@@ -65,6 +66,11 @@ def parse_args():
                     "(scripts/mutant_equiv.sh); they then count as survivors")
     ap.add_argument("--equiv-limit", type=int, default=900,
                     help="seconds per equivalence proof (default 900)")
+    ap.add_argument("--equiv-scope", choices=["local", "whole", "both"], default=None,
+                    help="the proofs: on the mutated cell's module and its parent "
+                    "(scripts/mutant_equiv_local.py), on the whole flattened zb_rop "
+                    "(scripts/mutant_equiv.sh), or both (default: both; local for --netlist "
+                    "layers, where the whole netlist gives no verdict)")
     ap.add_argument("--time-limit", type=float, default=0,
                     help="seconds: mutants not started by then are left out and the scores "
                     "cover those run (default: no limit); mutants run in an order spread over "
@@ -252,15 +258,27 @@ class Runner:
         return ("killed" if by else "survived"), by, sec, line
 
 
-def prove_equivalent(design, limit, mutant):
-    """The equivalence stage's work on one mutant (scripts/mutant_equiv.sh): (verdict, '',
-    seconds, the prover's last line)."""
+def prove_equivalent(design, limit, mutant, scope):
+    """The equivalence stage's work on one mutant: (verdict, '', seconds, the prover's last line).
+    `scope` local: scripts/mutant_equiv_local.py on the cell's own module, then on its parent
+    (sound: equal there for any inputs is equal in zb_rop); whole: scripts/mutant_equiv.sh on the
+    flattened zb_rop; both: local, then whole."""
     t0 = time.monotonic()
-    p = subprocess.run([os.path.join(ROOT, "scripts", "mutant_equiv.sh"), "--time-limit",
-                        str(limit), design, str(mutant)],
-                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    verdict = {0: "equivalent", 1: "not proven"}.get(p.returncode, "no proof")
-    last = (p.stdout.strip().splitlines() or [""])[-1]
+    tries = []
+    if scope in ("local", "both"):
+        tries += [[sys.executable, os.path.join(ROOT, "scripts", "mutant_equiv_local.py"), design,
+                   str(mutant), "--up", str(up), "--time-limit", str(limit)] for up in (0, 1)]
+    if scope in ("whole", "both"):
+        tries.append([os.path.join(ROOT, "scripts", "mutant_equiv.sh"), "--time-limit", str(limit),
+                      design, str(mutant)])
+    verdict, last = "no proof", ""
+    for cmd in tries:
+        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        last = (p.stdout.strip().splitlines() or [""])[-1]
+        if p.returncode == 0:
+            return "equivalent", "", time.monotonic() - t0, last
+        if p.returncode == 1:
+            verdict = "not proven"
     return verdict, "", time.monotonic() - t0, last
 
 
@@ -362,7 +380,9 @@ def run_stages(a, st, runner, chosen, smoke, full, reason_of):
         for m in differ:
             st.rows[m]["equiv"] = "not tried"
         design = os.path.join(netlist_dir(a.build, a.netlist), "design.il")
-        survivors = st.run("equivalence", lambda m: prove_equivalent(design, a.equiv_limit, m),
+        scope = a.equiv_scope or ("local" if a.netlist == "layers" else "both")
+        survivors = st.run("equivalence",
+                           lambda m: prove_equivalent(design, a.equiv_limit, m, scope),
                            [m for m in survivors if m not in differ], "equiv") + differ
     if not a.no_full and survivors:
         # A survivor with a written reason is one no test can kill: it counts as a full-group
