@@ -91,3 +91,14 @@ expect_mutant() {
   [[ -n $now ]] && now="(it is mutant $now now)" || now="(no mutant of the sample is: pick another)"
   fail "mutant $1 is not $3 this test expects: $(sed -n "$1p" "$mutations") $now"
 }
+
+# ---- Scenes ------------------------------------------------------------------------------------
+
+# odd_alpha_scene DIR: DIR/odd.obj (with DIR/m.mtl), two overlapping transparent triangles of
+# alphas 77 and 179 (d 0.3, 0.7): odd alphas, which the built-in scenes lack, for the injected
+# blend defect (odd source alpha).
+odd_alpha_scene() {
+  printf 'mtllib m.mtl\nv -1 -1 0\nv 1 -1 0\nv 0 1 0\nv -1 1 -0.5\nv 1 1 -0.5\nv 0 -1 -0.5\n' >"$1/odd.obj"
+  printf 'usemtl a\nf 1 2 3\nusemtl b\nf 4 6 5\n' >>"$1/odd.obj"
+  printf 'newmtl a\nKd 0.9 0.2 0.1\nd 0.3\nnewmtl b\nKd 0.1 0.3 0.9\nd 0.7\n' >"$1/m.mtl"
+}

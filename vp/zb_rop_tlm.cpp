@@ -9,6 +9,7 @@
 #include "geometry/geometry.h"
 #include "io/trace.h"
 #include "rtl_params.h"
+#include "zb_tlm_payload.h"
 
 namespace zb::vp {
 
@@ -466,15 +467,8 @@ void ZbRopTlm::dma_access(tlm::tlm_command cmd, uint64_t addr, uint8_t* data, si
       return;
     }
     const size_t n = std::min<size_t>(len, options_.burst);
-    tlm_generic_payload tx;
-    tx.set_command(cmd);
-    tx.set_address(addr);
-    tx.set_data_ptr(data);
-    tx.set_data_length(unsigned(n));
-    tx.set_streaming_width(unsigned(n));
-    tx.set_byte_enable_ptr(nullptr);
-    tx.set_dmi_allowed(false);
-    tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+    tlm::tlm_generic_payload tx;
+    set_payload(tx, cmd, addr, data, n);
     sc_time delay = qk_.get_local_time();
     dma->b_transport(tx, delay);
     qk_.set(delay);

@@ -8,6 +8,7 @@
 #include <fmt/core.h>
 
 #include "zb_rop_regs.h"
+#include "zb_tlm_payload.h"
 
 namespace zb::vp {
 
@@ -176,14 +177,7 @@ uint64_t ZbVpHost::read_reg64(HostJob& job, uint64_t lo) {
 
 void ZbVpHost::reg_access(HostJob& job, tlm::tlm_command cmd, uint64_t addr, uint32_t& v) {
   tlm::tlm_generic_payload tx;
-  tx.set_command(cmd);
-  tx.set_address(addr);
-  tx.set_data_ptr(reinterpret_cast<unsigned char*>(&v));
-  tx.set_data_length(4);
-  tx.set_streaming_width(4);
-  tx.set_byte_enable_ptr(nullptr);
-  tx.set_dmi_allowed(false);
-  tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  set_payload(tx, cmd, addr, &v, 4);
   sc_time delay = qk_.get_local_time();
   (*rop[size_t(job.rop)])->b_transport(tx, delay);
   qk_.set(delay);
@@ -209,14 +203,7 @@ void ZbVpHost::mem_access(tlm::tlm_command cmd, uint64_t addr, uint8_t* data, si
     }
     const size_t n = std::min(len, kBurst);
     tlm::tlm_generic_payload tx;
-    tx.set_command(cmd);
-    tx.set_address(addr);
-    tx.set_data_ptr(data);
-    tx.set_data_length(unsigned(n));
-    tx.set_streaming_width(unsigned(n));
-    tx.set_byte_enable_ptr(nullptr);
-    tx.set_dmi_allowed(false);
-    tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+    set_payload(tx, cmd, addr, data, n);
     sc_time delay = qk_.get_local_time();
     mem->b_transport(tx, delay);
     qk_.set(delay);

@@ -7,14 +7,9 @@ set -u
 zblend=${1:?usage: test_systemc_bug.sh PATH/TO/zblend PATH/TO/zblend_systemc PATH/TO/zblend_systemc_bug}
 good=${2:?usage: test_systemc_bug.sh PATH/TO/zblend PATH/TO/zblend_systemc PATH/TO/zblend_systemc_bug}
 bug=${3:?usage: test_systemc_bug.sh PATH/TO/zblend PATH/TO/zblend_systemc PATH/TO/zblend_systemc_bug}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; echo "--- output:"; cat "$tmp/out.txt"; exit 1; }
+source "$(dirname "$0")/../lib.sh"
 
-# Two overlapping transparent triangles, alphas 77 and 179 (d 0.3, 0.7).
-printf 'mtllib m.mtl\nv -1 -1 0\nv 1 -1 0\nv 0 1 0\nv -1 1 -0.5\nv 1 1 -0.5\nv 0 -1 -0.5\n' >"$tmp/odd.obj"
-printf 'usemtl a\nf 1 2 3\nusemtl b\nf 4 6 5\n' >>"$tmp/odd.obj"
-printf 'newmtl a\nKd 0.9 0.2 0.1\nd 0.3\nnewmtl b\nKd 0.1 0.3 0.9\nd 0.7\n' >"$tmp/m.mtl"
+odd_alpha_scene "$tmp"
 "$zblend" trace --scene "$tmp/odd.obj" --method unsorted -W 64 -H 48 --out "$tmp/t.zbt" \
   >"$tmp/out.txt" 2>&1 || fail "zblend trace"
 

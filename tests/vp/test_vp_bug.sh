@@ -5,13 +5,8 @@
 set -u
 zblend=${1:?usage: test_vp_bug.sh ZBLEND ZBLEND_VP ZBLEND_VP_BUG}
 good=${2:?} bug=${3:?}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; echo "--- output:"; cat "$tmp/out.txt"; exit 1; }
-# Two overlapping transparent triangles, alphas 77 and 179.
-printf 'mtllib m.mtl\nv -1 -1 0\nv 1 -1 0\nv 0 1 0\nv -1 1 -0.5\nv 1 1 -0.5\nv 0 -1 -0.5\n' >"$tmp/odd.obj"
-printf 'usemtl a\nf 1 2 3\nusemtl b\nf 4 6 5\n' >>"$tmp/odd.obj"
-printf 'newmtl a\nKd 0.9 0.2 0.1\nd 0.3\nnewmtl b\nKd 0.1 0.3 0.9\nd 0.7\n' >"$tmp/m.mtl"
+source "$(dirname "$0")/../lib.sh"
+odd_alpha_scene "$tmp"
 "$zblend" trace --scene "$tmp/odd.obj" --method unsorted -W 64 -H 48 --out "$tmp/t.zbt" \
   >"$tmp/out.txt" 2>&1 || fail "zblend trace"
 "$good" --trace "$tmp/t.zbt" --inside both >"$tmp/out.txt" 2>&1 || fail "the good RTL failed"
