@@ -394,9 +394,18 @@ void ZbRopTlm::run_stream() {
     throw CommandError{ErrorCode::kBadSetup,
                        fmt::format("STREAM_BYTES {} is above the model's {} MiB", stream_bytes_,
                                    kMaxBuffer >> 20)};
-  std::string bytes(stream_bytes_, '\0');
-  dma_access(tlm::TLM_READ_COMMAND, stream_addr_, reinterpret_cast<uint8_t*>(bytes.data()),
-             bytes.size());
+  // Under DMI the stream is read where it lies (timed as the DMA's read); else fetched.
+  std::string fetched;
+  std::string_view bytes;
+  if (options_.dmi && stream_bytes_ > 0 && dma_dmi_ptr(stream_addr_, stream_bytes_) != nullptr) {
+    bytes = {reinterpret_cast<const char*>(dma_dmi_ptr(stream_addr_, stream_bytes_)), stream_bytes_};
+    dma_access(tlm::TLM_READ_COMMAND, stream_addr_, nullptr, stream_bytes_);
+  } else {
+    fetched.assign(stream_bytes_, '\0');
+    dma_access(tlm::TLM_READ_COMMAND, stream_addr_, reinterpret_cast<uint8_t*>(fetched.data()),
+               fetched.size());
+    bytes = fetched;
+  }
   Trace t;
   try {
     t = parse_trace(bytes, fmt::format("at 0x{:x}", stream_addr_));
@@ -456,8 +465,12 @@ void ZbRopTlm::dma_access(tlm::tlm_command cmd, uint64_t addr, uint8_t* data, si
   while (len > 0) {
     if (options_.dmi && dmi_covers(cmd, addr, len)) {
       uint8_t* p = dmi_.get_dmi_ptr() + (addr - dmi_.get_start_address());
-      if (read) std::memcpy(data, p, len);
-      else std::memcpy(p, data, len);
+      if (data == nullptr) {  // the caller reads in place (dma_dmi_ptr): the access's time only
+      } else if (read) {
+        std::memcpy(data, p, len);
+      } else {
+        std::memcpy(p, data, len);
+      }
       const uint64_t beats = (len + kBusBytes - 1) / kBusBytes;
       qk_.inc((read ? dmi_.get_read_latency() : dmi_.get_write_latency()) * double(beats));
       ++totals_.dmi_accesses;
@@ -497,6 +510,17 @@ void ZbRopTlm::dma_access(tlm::tlm_command cmd, uint64_t addr, uint8_t* data, si
     data += n;
     len -= n;
   }
+}
+
+// The DMI pointer to [addr, addr + len) for reading, asking the memory for one first (a read
+// of the first byte); null when none covers it.
+const uint8_t* ZbRopTlm::dma_dmi_ptr(uint64_t addr, size_t len) {
+  if (!dmi_covers(tlm::TLM_READ_COMMAND, addr, len)) {
+    uint8_t first = 0;
+    dma_access(tlm::TLM_READ_COMMAND, addr, &first, 1);
+  }
+  if (!dmi_covers(tlm::TLM_READ_COMMAND, addr, len)) return nullptr;
+  return dmi_.get_dmi_ptr() + (addr - dmi_.get_start_address());
 }
 
 void ZbRopTlm::invalidate_dmi(sc_dt::uint64 start, sc_dt::uint64 end) {

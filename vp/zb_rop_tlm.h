@@ -75,6 +75,7 @@ class ZbRopTlm : public sc_core::sc_module {
   void count_cycles();  // the inside's cycles since the last call, into local time
   void dma_access(tlm::tlm_command cmd, uint64_t addr, uint8_t* data, size_t len);
   bool dmi_covers(tlm::tlm_command cmd, uint64_t addr, size_t len) const;
+  const uint8_t* dma_dmi_ptr(uint64_t addr, size_t len);
 
   RopTlmOptions options_;
   std::unique_ptr<RopInside> inside_;

@@ -34,7 +34,7 @@ void put_u64(std::string& out, uint64_t v) { for (int i = 0; i < 8; ++i) put_u8(
 // Reads little-endian fields, with the offset of each for error messages.
 class Reader {
  public:
-  Reader(const std::string& bytes, const std::string& name) : bytes_(bytes), name_(name) {}
+  Reader(std::string_view bytes, const std::string& name) : bytes_(bytes), name_(name) {}
 
   [[noreturn]] void fail(size_t at, const std::string& what) const {
     throw TraceError(fmt::format("trace '{}': byte {}: {}", name_, at, what), at);
@@ -56,13 +56,13 @@ class Reader {
   }
   std::string get_string(size_t n, const char* what) {
     if (remaining() < n) fail(pos_, fmt::format("truncated, expected {}", what));
-    std::string s = bytes_.substr(pos_, n);
+    std::string s(bytes_.substr(pos_, n));
     pos_ += n;
     return s;
   }
 
  private:
-  const std::string& bytes_;
+  std::string_view bytes_;
   const std::string& name_;
   size_t pos_ = 0;
 };
@@ -187,7 +187,7 @@ std::string write_trace(const std::string& path, const Trace& trace) {
   return write_file_atomic(path, serialize_trace(trace));
 }
 
-Trace parse_trace(const std::string& bytes, const std::string& name) {
+Trace parse_trace(std::string_view bytes, const std::string& name) {
   Reader r(bytes, name);
   if (r.get_string(sizeof kMagic, "the magic 'ZBTRACE'") != std::string(kMagic, sizeof kMagic))
     r.fail(0, "not a zblend trace (bad magic)");

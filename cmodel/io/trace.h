@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "rop/backend.h"
@@ -54,7 +55,7 @@ std::string serialize_trace(const Trace& trace);
 
 // Reads and validates a trace; throws TraceError.
 Trace read_trace(const std::string& path);
-Trace parse_trace(const std::string& bytes, const std::string& name);
+Trace parse_trace(std::string_view bytes, const std::string& name);
 
 // Runs every pass of the trace on `backend`; returns the stats of each pass.
 std::vector<PassStats> replay_trace(const Trace& trace, Backend& backend);
