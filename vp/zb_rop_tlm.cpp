@@ -394,33 +394,37 @@ void ZbRopTlm::run_stream() {
     throw CommandError{ErrorCode::kBadSetup,
                        fmt::format("STREAM_BYTES {} is above the model's {} MiB", stream_bytes_,
                                    kMaxBuffer >> 20)};
-  // Under DMI the stream is read where it lies (timed as the DMA's read); else fetched.
-  std::string fetched;
-  std::string_view bytes;
-  if (options_.dmi && stream_bytes_ > 0 && dma_dmi_ptr(stream_addr_, stream_bytes_) != nullptr) {
-    bytes = {reinterpret_cast<const char*>(dma_dmi_ptr(stream_addr_, stream_bytes_)), stream_bytes_};
-    dma_access(tlm::TLM_READ_COMMAND, stream_addr_, nullptr, stream_bytes_);
-  } else {
-    fetched.assign(stream_bytes_, '\0');
-    dma_access(tlm::TLM_READ_COMMAND, stream_addr_, reinterpret_cast<uint8_t*>(fetched.data()),
-               fetched.size());
-    bytes = fetched;
+  // Fetched whole into a buffer kept from frame to frame: a DMI pointer may be taken back
+  // while the frame runs, so the stream is never read in place.
+  if (stream_cap_ < stream_bytes_) {
+    stream_buf_.reset(new uint8_t[stream_bytes_]);  // not zeroed: the fetch fills it
+    stream_cap_ = stream_bytes_;
   }
-  Trace t;
+  dma_access(tlm::TLM_READ_COMMAND, stream_addr_, stream_buf_.get(), stream_bytes_);
+  const std::string_view bytes(reinterpret_cast<const char*>(stream_buf_.get()), stream_bytes_);
+  // The whole stream is checked first (a malformed one runs nothing), then run pass by pass:
+  // the model holds one pass's fragments at a time.
+  const std::string name = fmt::format("at 0x{:x}", stream_addr_);
   try {
-    t = parse_trace(bytes, fmt::format("at 0x{:x}", stream_addr_));
+    scan_trace(bytes, name, {}, {}, {});
   } catch (const TraceError& e) {
     throw CommandError{ErrorCode::kBadStream, e.what(), uint32_t(e.byte)};
   }
-  begin_frame(t.width, t.height, t.depth_bits, t.coverage_samples, t.wboit, t.clear_color);
-  for (const TracePass& p : t.passes) {
-    for (const FrameOp& op : p.frame_ops) frame_op(op);
-    inside_->backend().label_pass(p.name);
-    begin_pass(pack_state(p.state));
-    draw(p.fragments);
-    end_pass();
-  }
-  for (const FrameOp& op : t.final_ops) frame_op(op);
+  scan_trace(
+      bytes, name,
+      [this](const Trace& t) {
+        begin_frame(t.width, t.height, t.depth_bits, t.coverage_samples, t.wboit, t.clear_color);
+      },
+      [this](TracePass& p) {
+        for (const FrameOp& op : p.frame_ops) frame_op(op);
+        inside_->backend().label_pass(p.name);
+        begin_pass(pack_state(p.state));
+        draw(p.fragments);
+        end_pass();
+      },
+      [this](const std::vector<FrameOp>& ops) {
+        for (const FrameOp& op : ops) frame_op(op);
+      });
   end_frame();
 }
 
@@ -433,10 +437,10 @@ std::vector<Fragment> ZbRopTlm::fetch_fragments(uint64_t addr, uint64_t count) {
   dma_access(tlm::TLM_READ_COMMAND, addr, bytes.data(), bytes.size());
   std::vector<Fragment> out(count);
   for (uint64_t i = 0; i < count; ++i) {
-    const std::string bad = decode_fragment(&bytes[i * kTraceFragmentBytes], width_, height_,
-                                            depth_bits_, samples_, out[i]);
-    if (!bad.empty())
-      throw CommandError{ErrorCode::kBadFragment, fmt::format("fragment {}: {}", i, bad),
+    std::string why;
+    if (!decode_fragment(&bytes[i * kTraceFragmentBytes], width_, height_, depth_bits_, samples_,
+                         out[i], &why))
+      throw CommandError{ErrorCode::kBadFragment, fmt::format("fragment {}: {}", i, why),
                          uint32_t(i)};
   }
   return out;
@@ -465,12 +469,8 @@ void ZbRopTlm::dma_access(tlm::tlm_command cmd, uint64_t addr, uint8_t* data, si
   while (len > 0) {
     if (options_.dmi && dmi_covers(cmd, addr, len)) {
       uint8_t* p = dmi_.get_dmi_ptr() + (addr - dmi_.get_start_address());
-      if (data == nullptr) {  // the caller reads in place (dma_dmi_ptr): the access's time only
-      } else if (read) {
-        std::memcpy(data, p, len);
-      } else {
-        std::memcpy(p, data, len);
-      }
+      if (read) std::memcpy(data, p, len);
+      else std::memcpy(p, data, len);
       const uint64_t beats = (len + kBusBytes - 1) / kBusBytes;
       qk_.inc((read ? dmi_.get_read_latency() : dmi_.get_write_latency()) * double(beats));
       ++totals_.dmi_accesses;
@@ -510,17 +510,6 @@ void ZbRopTlm::dma_access(tlm::tlm_command cmd, uint64_t addr, uint8_t* data, si
     data += n;
     len -= n;
   }
-}
-
-// The DMI pointer to [addr, addr + len) for reading, asking the memory for one first (a read
-// of the first byte); null when none covers it.
-const uint8_t* ZbRopTlm::dma_dmi_ptr(uint64_t addr, size_t len) {
-  if (!dmi_covers(tlm::TLM_READ_COMMAND, addr, len)) {
-    uint8_t first = 0;
-    dma_access(tlm::TLM_READ_COMMAND, addr, &first, 1);
-  }
-  if (!dmi_covers(tlm::TLM_READ_COMMAND, addr, len)) return nullptr;
-  return dmi_.get_dmi_ptr() + (addr - dmi_.get_start_address());
 }
 
 void ZbRopTlm::invalidate_dmi(sc_dt::uint64 start, sc_dt::uint64 end) {
