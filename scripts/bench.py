@@ -2,7 +2,7 @@
 """zblend's benchmarks in one run (docs/bench.md): `make bench`.
 
 Usage: bench.py [--build DIR] [--out DIR] [--baseline BUILD_DIR] [--pgo BUILD_DIR] [--quick]
-                [--only maps]
+                [--only maps|vp]
 
 Runs, on this machine, one after another:
   1. the golden datapath alone, fragments per second per blend mode (Google Benchmark);
@@ -12,7 +12,8 @@ Runs, on this machine, one after another:
   4. the RTL simulation: both builds' cycles per second beside Verilator's ceiling, fragments per
      clock, CPU time against the golden model's, each beside a baseline commit's build
      (--baseline, scripts/bench_baseline.sh) and the speed build with PGO (--pgo,
-     scripts/pgo.sh) run in the same bench;
+     scripts/pgo.sh) run in the same bench; the virtual platform, zblend_vp against zblend
+     render (bench_vp.py);
   5. cost growth: render time against resolution, against triangle count, and with the frame
      growing around an object of fixed size on screen;
   6. the error maps' cost: `zblend render` with and without them, alternated (bench_maps.py);
@@ -34,6 +35,7 @@ import sys
 import time
 
 import bench_maps
+import bench_vp
 import bench_rtl
 import bench_scenes
 
@@ -359,7 +361,9 @@ def main():
     ap.add_argument("--pgo", help="a build directory of scripts/pgo.sh (the speed build with "
                     "PGO), measured beside this one")
     ap.add_argument("--quick", action="store_true", help="fewer repetitions and sizes")
-    ap.add_argument("--only", choices=["maps"], help="one step alone: maps (6, the error maps' cost)")
+    ap.add_argument("--only", choices=["maps", "vp"],
+                    help="one step alone: maps (6, the error maps' cost), vp (the virtual "
+                    "platform's speed, in 4)")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     b = Bench(a.build, a.out)
@@ -370,6 +374,11 @@ def main():
     if a.only == "maps":
         step(6, "error maps: render with and without them")
         bench_maps.maps(b, 5 if a.quick else 15)
+        write_table(b, started)
+        return
+    if a.only == "vp":
+        step(4, "the virtual platform against zblend render")
+        bench_vp.vp(b, 3 if a.quick else 7)
         write_table(b, started)
         return
     scene = bench_scenes.bunny_glass(b.scene_dir)
@@ -384,6 +393,7 @@ def main():
     rtl(b, reps)
     render_rtl(b, reps)
     cosim(b)
+    bench_vp.vp(b, 3 if a.quick else 7)
     step(5, "cost growth")
     growth(b, scene, reps, a.quick)
     step(6, "error maps: render with and without them")

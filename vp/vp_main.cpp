@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <malloc.h>
 #include <memory>
 #include <string>
 #include <vector>
@@ -238,6 +239,10 @@ int run(const Options& o) {
 // SystemC prints its banner before sc_main unless told otherwise: main() is ours, then.
 int main(int argc, char** argv) {
   setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);
+  // A frame's stream, its parse and the trace are tens of MB each, allocated and freed once a
+  // frame: kept by the heap for the next (not mapped afresh, page by page, each time).
+  mallopt(M_MMAP_THRESHOLD, 1 << 30);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
   return sc_core::sc_elab_and_sim(argc, argv);
 }
 

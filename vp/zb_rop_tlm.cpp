@@ -394,24 +394,37 @@ void ZbRopTlm::run_stream() {
     throw CommandError{ErrorCode::kBadSetup,
                        fmt::format("STREAM_BYTES {} is above the model's {} MiB", stream_bytes_,
                                    kMaxBuffer >> 20)};
-  std::string bytes(stream_bytes_, '\0');
-  dma_access(tlm::TLM_READ_COMMAND, stream_addr_, reinterpret_cast<uint8_t*>(bytes.data()),
-             bytes.size());
-  Trace t;
+  // Fetched whole into a buffer kept from frame to frame: a DMI pointer may be taken back
+  // while the frame runs, so the stream is never read in place.
+  if (stream_cap_ < stream_bytes_) {
+    stream_buf_.reset(new uint8_t[stream_bytes_]);  // not zeroed: the fetch fills it
+    stream_cap_ = stream_bytes_;
+  }
+  dma_access(tlm::TLM_READ_COMMAND, stream_addr_, stream_buf_.get(), stream_bytes_);
+  const std::string_view bytes(reinterpret_cast<const char*>(stream_buf_.get()), stream_bytes_);
+  // The whole stream is checked first (a malformed one runs nothing), then run pass by pass:
+  // the model holds one pass's fragments at a time.
+  const std::string name = fmt::format("at 0x{:x}", stream_addr_);
   try {
-    t = parse_trace(bytes, fmt::format("at 0x{:x}", stream_addr_));
+    scan_trace(bytes, name, {}, {}, {});
   } catch (const TraceError& e) {
     throw CommandError{ErrorCode::kBadStream, e.what(), uint32_t(e.byte)};
   }
-  begin_frame(t.width, t.height, t.depth_bits, t.coverage_samples, t.wboit, t.clear_color);
-  for (const TracePass& p : t.passes) {
-    for (const FrameOp& op : p.frame_ops) frame_op(op);
-    inside_->backend().label_pass(p.name);
-    begin_pass(pack_state(p.state));
-    draw(p.fragments);
-    end_pass();
-  }
-  for (const FrameOp& op : t.final_ops) frame_op(op);
+  scan_trace(
+      bytes, name,
+      [this](const Trace& t) {
+        begin_frame(t.width, t.height, t.depth_bits, t.coverage_samples, t.wboit, t.clear_color);
+      },
+      [this](TracePass& p) {
+        for (const FrameOp& op : p.frame_ops) frame_op(op);
+        inside_->backend().label_pass(p.name);
+        begin_pass(pack_state(p.state));
+        draw(p.fragments);
+        end_pass();
+      },
+      [this](const std::vector<FrameOp>& ops) {
+        for (const FrameOp& op : ops) frame_op(op);
+      });
   end_frame();
 }
 
@@ -424,10 +437,10 @@ std::vector<Fragment> ZbRopTlm::fetch_fragments(uint64_t addr, uint64_t count) {
   dma_access(tlm::TLM_READ_COMMAND, addr, bytes.data(), bytes.size());
   std::vector<Fragment> out(count);
   for (uint64_t i = 0; i < count; ++i) {
-    const std::string bad = decode_fragment(&bytes[i * kTraceFragmentBytes], width_, height_,
-                                            depth_bits_, samples_, out[i]);
-    if (!bad.empty())
-      throw CommandError{ErrorCode::kBadFragment, fmt::format("fragment {}: {}", i, bad),
+    std::string why;
+    if (!decode_fragment(&bytes[i * kTraceFragmentBytes], width_, height_, depth_bits_, samples_,
+                         out[i], &why))
+      throw CommandError{ErrorCode::kBadFragment, fmt::format("fragment {}: {}", i, why),
                          uint32_t(i)};
   }
   return out;

@@ -88,7 +88,9 @@ class ZbRopTlm : public sc_core::sc_module {
            error_info_ = 0;
   uint64_t frag_addr_ = 0, fb_addr_ = 0, depth_addr_ = 0, stream_addr_ = 0;
   PassStats frame_stats_;
-  std::vector<PassStats> pass_stats_;  // the frame's, end_pass's (finish_frame may fill them in)
+  std::vector<PassStats> pass_stats_;
+  std::unique_ptr<uint8_t[]> stream_buf_;  // RUN_STREAM's stream, fetched; kept for the next
+  uint64_t stream_cap_ = 0;  // the frame's, end_pass's (finish_frame may fill them in)
   int width_ = 0, height_ = 0, depth_bits_ = 0, samples_ = 0;  // the open frame's
   uint64_t frame_passes_ = 0, frame_cycles_ = 0, frame_dma_bytes_ = 0, frame_dma_tx_ = 0;
 

@@ -20,7 +20,7 @@ constexpr uint64_t kAlign = 1u << 20;
 uint64_t align_up(uint64_t n) { return (n + kAlign - 1) / kAlign * kAlign; }
 
 uint64_t stream_bytes(const HostJob& j) {
-  if (j.programming == Programming::kStream) return serialize_trace(*j.trace).size();
+  if (j.programming == Programming::kStream) return serialized_size(*j.trace);
   uint64_t most = 0;
   for (const TracePass& p : j.trace->passes) most = std::max<uint64_t>(most, p.fragments.size());
   return most * kTraceFragmentBytes;
@@ -78,9 +78,9 @@ void ZbVpHost::run_job(HostJob& job) {
   write_reg(job, reg::kDepthAddrHi, uint32_t(layout_.depth >> 32));
   write_reg(job, reg::kDepthStride, uint32_t(t.width) * 4);
   if (job.programming == Programming::kStream) {
-    std::string bytes = serialize_trace(t);
-    mem_access(tlm::TLM_WRITE_COMMAND, layout_.stream, reinterpret_cast<uint8_t*>(bytes.data()),
-               bytes.size());
+    const std::string bytes = serialize_trace(t);
+    mem_access(tlm::TLM_WRITE_COMMAND, layout_.stream,
+               reinterpret_cast<uint8_t*>(const_cast<char*>(bytes.data())), bytes.size());
     write_reg(job, reg::kStreamAddrLo, uint32_t(layout_.stream));
     write_reg(job, reg::kStreamAddrHi, uint32_t(layout_.stream >> 32));
     write_reg(job, reg::kStreamBytes, uint32_t(bytes.size()));

@@ -1,11 +1,15 @@
 #include "zb_vp_memory.h"
 
+#include <cstdlib>
 #include <cstring>
+#include <new>
 
 namespace zb::vp {
 
 ZbVpMemory::ZbVpMemory(sc_core::sc_module_name name, const MemoryOptions& options)
-    : sc_module(name), socket("socket"), options_(options), mem_(options.bytes, 0) {
+    : sc_module(name), socket("socket"), options_(options),
+      mem_(static_cast<uint8_t*>(std::calloc(options.bytes, 1)), std::free), bytes_(options.bytes) {
+  if (!mem_) throw std::bad_alloc();
   socket.register_b_transport(this, &ZbVpMemory::b_transport);
   socket.register_transport_dbg(this, &ZbVpMemory::transport_dbg);
   socket.register_get_direct_mem_ptr(this, &ZbVpMemory::get_direct_mem_ptr);
@@ -19,7 +23,7 @@ void ZbVpMemory::invalidate_dmi() {
 void ZbVpMemory::b_transport(int, tlm::tlm_generic_payload& tx, sc_core::sc_time& delay) {
   ++transactions_;
   const uint64_t a = tx.get_address(), n = tx.get_data_length();
-  if (a >= mem_.size() || n > mem_.size() - a) {
+  if (a >= bytes_ || n > bytes_ - a) {
     tx.set_response_status(tlm::TLM_ADDRESS_ERROR_RESPONSE);
     return;
   }
@@ -27,7 +31,7 @@ void ZbVpMemory::b_transport(int, tlm::tlm_generic_payload& tx, sc_core::sc_time
     tx.set_response_status(tlm::TLM_BURST_ERROR_RESPONSE);
     return;
   }
-  uint8_t* m = &mem_[a];
+  uint8_t* m = mem_.get() + a;
   const uint8_t* be = tx.get_byte_enable_ptr();
   const unsigned be_len = tx.get_byte_enable_length();
   if (tx.is_read() || tx.is_write()) {
@@ -44,18 +48,18 @@ void ZbVpMemory::b_transport(int, tlm::tlm_generic_payload& tx, sc_core::sc_time
 
 unsigned ZbVpMemory::transport_dbg(int, tlm::tlm_generic_payload& tx) {
   const uint64_t a = tx.get_address();
-  if (a >= mem_.size()) return 0;
-  const uint64_t n = std::min<uint64_t>(tx.get_data_length(), mem_.size() - a);
-  if (tx.is_read()) std::memcpy(tx.get_data_ptr(), &mem_[a], n);
-  else if (tx.is_write()) std::memcpy(&mem_[a], tx.get_data_ptr(), n);
+  if (a >= bytes_) return 0;
+  const uint64_t n = std::min<uint64_t>(tx.get_data_length(), bytes_ - a);
+  if (tx.is_read()) std::memcpy(tx.get_data_ptr(), mem_.get() + a, n);
+  else if (tx.is_write()) std::memcpy(mem_.get() + a, tx.get_data_ptr(), n);
   return unsigned(n);
 }
 
 bool ZbVpMemory::get_direct_mem_ptr(int, tlm::tlm_generic_payload& tx, tlm::tlm_dmi& dmi) {
-  if (!options_.dmi || tx.get_address() >= mem_.size()) return false;
-  dmi.set_dmi_ptr(mem_.data());
+  if (!options_.dmi || tx.get_address() >= bytes_) return false;
+  dmi.set_dmi_ptr(mem_.get());
   dmi.set_start_address(0);
-  dmi.set_end_address(mem_.size() - 1);
+  dmi.set_end_address(bytes_ - 1);
   dmi.allow_read_write();
   dmi.set_read_latency(options_.beat);
   dmi.set_write_latency(options_.beat);

@@ -3,7 +3,7 @@
 #pragma once
 
 #include <cstdint>
-#include <vector>
+#include <memory>
 
 #include <systemc>
 #include <tlm>
@@ -27,8 +27,8 @@ class ZbVpMemory : public sc_core::sc_module {
 
   // Takes back every DMI pointer granted (as a memory remapped would); counts the calls.
   void invalidate_dmi();
-  uint8_t* data() { return mem_.data(); }  // a backdoor for tests; not for platform traffic
-  uint64_t size() const { return mem_.size(); }
+  uint8_t* data() { return mem_.get(); }  // a backdoor for tests; not for platform traffic
+  uint64_t size() const { return bytes_; }
   uint64_t transactions() const { return transactions_; }
 
  private:
@@ -37,7 +37,9 @@ class ZbVpMemory : public sc_core::sc_module {
   bool get_direct_mem_ptr(int port, tlm::tlm_generic_payload& tx, tlm::tlm_dmi& dmi);
 
   MemoryOptions options_;
-  std::vector<uint8_t> mem_;
+  // Zeroed by calloc: the system's zero pages, touched only where written.
+  std::unique_ptr<uint8_t, void (*)(void*)> mem_;
+  uint64_t bytes_;
   uint64_t transactions_ = 0;
 };
 

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <sstream>
 
@@ -34,7 +35,7 @@ void put_u64(std::string& out, uint64_t v) { for (int i = 0; i < 8; ++i) put_u8(
 // Reads little-endian fields, with the offset of each for error messages.
 class Reader {
  public:
-  Reader(const std::string& bytes, const std::string& name) : bytes_(bytes), name_(name) {}
+  Reader(std::string_view bytes, const std::string& name) : bytes_(bytes), name_(name) {}
 
   [[noreturn]] void fail(size_t at, const std::string& what) const {
     throw TraceError(fmt::format("trace '{}': byte {}: {}", name_, at, what), at);
@@ -56,13 +57,13 @@ class Reader {
   }
   std::string get_string(size_t n, const char* what) {
     if (remaining() < n) fail(pos_, fmt::format("truncated, expected {}", what));
-    std::string s = bytes_.substr(pos_, n);
+    std::string s(bytes_.substr(pos_, n));
     pos_ += n;
     return s;
   }
 
  private:
-  const std::string& bytes_;
+  std::string_view bytes_;
   const std::string& name_;
   size_t pos_ = 0;
 };
@@ -130,8 +131,12 @@ void encode_fragment(std::string& out, const Fragment& f) {
   out.append(reinterpret_cast<const char*>(rec), sizeof rec);
 }
 
-std::string decode_fragment(const uint8_t* rec, int width, int height, int depth_bits,
-                            int samples, Fragment& f) {
+bool decode_fragment(const uint8_t* rec, int width, int height, int depth_bits, int samples,
+                     Fragment& f, std::string* why) {
+  const auto bad = [why](std::string text) {
+    if (why) *why = std::move(text);
+    return false;
+  };
   auto get = [rec](int at, int n) {
     uint64_t v = 0;
     for (int i = 0; i < n; ++i) v |= uint64_t(rec[at + i]) << (8 * i);
@@ -144,24 +149,22 @@ std::string decode_fragment(const uint8_t* rec, int width, int height, int depth
   const uint64_t flags = get(12, 4);
   f.prim = uint32_t(get(16, 4));
   if (f.x >= width || f.y >= height)
-    return fmt::format("fragment ({}, {}) is outside the {}x{} frame", f.x, f.y, width, height);
+    return bad(fmt::format("fragment ({}, {}) is outside the {}x{} frame", f.x, f.y, width, height));
   if (z > depth_max(depth_bits))
-    return fmt::format("fragment depth {} exceeds {} bits", z, depth_bits);
-  if (flags & ~uint64_t{0xff01}) return "fragment flags have reserved bits set";
+    return bad(fmt::format("fragment depth {} exceeds {} bits", z, depth_bits));
+  if (flags & ~uint64_t{0xff01}) return bad("fragment flags have reserved bits set");
   const uint64_t coverage = (flags >> 8) & 0xffu;
   if (coverage > uint64_t(samples))
-    return fmt::format("fragment coverage {} exceeds the {} samples", coverage, samples);
+    return bad(fmt::format("fragment coverage {} exceeds the {} samples", coverage, samples));
   f.z = uint32_t(z);
   f.front = flags & 1;
   f.coverage = uint8_t(coverage);
-  return "";
+  return true;
 }
 
 std::string serialize_trace(const Trace& t) {
   std::string out;
-  size_t fragments = 0;
-  for (const TracePass& p : t.passes) fragments += p.fragments.size();
-  out.reserve(64 + t.passes.size() * 1024 + fragments * kTraceFragmentBytes);
+  out.reserve(serialized_size(t));
   put(out, kMagic, sizeof kMagic);
   put_u32(out, kVersion);
   put_u32(out, uint32_t(t.width));
@@ -183,11 +186,22 @@ std::string serialize_trace(const Trace& t) {
   return out;
 }
 
+size_t serialized_size(const Trace& t) {
+  const auto ops = [](const std::vector<FrameOp>& v) { return 4 + 9 * v.size(); };
+  size_t n = sizeof kMagic + 4 * 5 + 3 + 4 + 4 + ops(t.final_ops);
+  for (const TracePass& p : t.passes)
+    n += 4 + p.name.size() + ops(p.frame_ops) + 2 + 8 + p.fragments.size() * kTraceFragmentBytes;
+  return n;
+}
+
 std::string write_trace(const std::string& path, const Trace& trace) {
   return write_file_atomic(path, serialize_trace(trace));
 }
 
-Trace parse_trace(const std::string& bytes, const std::string& name) {
+void scan_trace(std::string_view bytes, const std::string& name,
+                const std::function<void(const Trace&)>& on_header,
+                const std::function<void(TracePass&)>& on_pass,
+                const std::function<void(const std::vector<FrameOp>&)>& on_final) {
   Reader r(bytes, name);
   if (r.get_string(sizeof kMagic, "the magic 'ZBTRACE'") != std::string(kMagic, sizeof kMagic))
     r.fail(0, "not a zblend trace (bad magic)");
@@ -235,8 +249,9 @@ Trace parse_trace(const std::string& bytes, const std::string& name) {
   const uint64_t passes = r.get(4, "the pass count");
   if (passes > kMaxPasses)
     r.fail(at_passes, fmt::format("{} passes is more than {}", passes, kMaxPasses));
+  if (on_header) on_header(t);
+  TracePass pass;  // one pass at a time, its buffers kept for the next
   for (uint64_t p = 0; p < passes; ++p) {
-    TracePass pass;
     const size_t at_name = r.offset();
     const uint64_t len = r.get(4, "a pass name length");
     if (len > kMaxNameLength) r.fail(at_name, fmt::format("pass name of {} bytes", len));
@@ -252,17 +267,30 @@ Trace parse_trace(const std::string& bytes, const std::string& name) {
     if (count > r.remaining() / kTraceFragmentBytes)
       r.fail(at_count, fmt::format("pass {}: {} fragments announced, {} bytes left", p + 1, count,
                                    r.remaining()));
-    pass.fragments.resize(size_t(count));
-    for (Fragment& f : pass.fragments) {
+    // Without on_pass the fragments are only checked: nothing is kept.
+    Fragment scratch;
+    pass.fragments.resize(on_pass ? size_t(count) : 0);
+    for (uint64_t i = 0; i < count; ++i) {
       const size_t at = r.offset();
-      const std::string bad = decode_fragment(r.take(kTraceFragmentBytes, "a fragment"), t.width,
-                                              t.height, t.depth_bits, t.coverage_samples, f);
-      if (!bad.empty()) r.fail(at, bad);
+      std::string why;
+      if (!decode_fragment(r.take(kTraceFragmentBytes, "a fragment"), t.width, t.height,
+                           t.depth_bits, t.coverage_samples, on_pass ? pass.fragments[i] : scratch,
+                           &why))
+        r.fail(at, why);
     }
-    t.passes.push_back(std::move(pass));
+    if (on_pass) on_pass(pass);
   }
-  t.final_ops = get_ops(r, "after the last pass", op_kinds);
+  const std::vector<FrameOp> final_ops = get_ops(r, "after the last pass", op_kinds);
   if (r.remaining() != 0) r.fail(r.offset(), fmt::format("{} bytes after the last pass", r.remaining()));
+  if (on_final) on_final(final_ops);
+}
+
+Trace parse_trace(std::string_view bytes, const std::string& name) {
+  Trace t;
+  scan_trace(
+      bytes, name, [&t](const Trace& header) { t = header; },
+      [&t](TracePass& p) { t.passes.push_back(std::move(p)); },
+      [&t](const std::vector<FrameOp>& ops) { t.final_ops = ops; });
   return t;
 }
 

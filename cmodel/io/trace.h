@@ -2,8 +2,10 @@
 // reproduced from the file alone. Format in docs/datapath.md, "Trace files".
 #pragma once
 
+#include <functional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "rop/backend.h"
@@ -41,9 +43,10 @@ struct TraceError : std::runtime_error {
 constexpr size_t kTraceFragmentBytes = 20;
 void encode_fragment(std::string& out, const Fragment& f);
 // Decodes `rec` and checks it against the frame (inside width x height, depth within
-// depth_bits, coverage at most `samples`, no reserved flag): an empty string, or what is wrong.
-std::string decode_fragment(const uint8_t* rec, int width, int height, int depth_bits,
-                            int samples, Fragment& f);
+// depth_bits, coverage at most `samples`, no reserved flag); false, with what is wrong in `why`
+// when given, for a fragment that fails.
+bool decode_fragment(const uint8_t* rec, int width, int height, int depth_bits, int samples,
+                     Fragment& f, std::string* why = nullptr);
 
 // The trace of rendering `rs` with `plan`: every pass's state and fragments.
 Trace make_trace(const RasterizedScene& rs, const PassPlan& plan);
@@ -51,10 +54,21 @@ Trace make_trace(const RasterizedScene& rs, const PassPlan& plan);
 // Serialises `trace`. Returns an empty string, or what went wrong (no partial file is left).
 std::string write_trace(const std::string& path, const Trace& trace);
 std::string serialize_trace(const Trace& trace);
+// serialize_trace(trace).size(), without making it.
+size_t serialized_size(const Trace& trace);
+
+// Reads and validates a trace pass by pass, as it goes: the header (a Trace without passes),
+// each pass (valid until the next call, which reuses its buffers unless it was moved from), the
+// final operations. Throws
+// TraceError at the first fault, after the calls for what came before it.
+void scan_trace(std::string_view bytes, const std::string& name,
+                const std::function<void(const Trace&)>& on_header,
+                const std::function<void(TracePass&)>& on_pass,
+                const std::function<void(const std::vector<FrameOp>&)>& on_final);
 
 // Reads and validates a trace; throws TraceError.
 Trace read_trace(const std::string& path);
-Trace parse_trace(const std::string& bytes, const std::string& name);
+Trace parse_trace(std::string_view bytes, const std::string& name);
 
 // Runs every pass of the trace on `backend`; returns the stats of each pass.
 std::vector<PassStats> replay_trace(const Trace& trace, Backend& backend);

@@ -53,6 +53,7 @@ TEST(Trace, RoundTripAndReplayMatchRender) {
   zb::Trace t = small_trace();
   ASSERT_EQ(t.passes.size(), 3u);
   t.wboit = {20, 12, 5};
+  EXPECT_EQ(zb::serialized_size(t), zb::serialize_trace(t).size());
   const zb::Trace back = zb::parse_trace(zb::serialize_trace(t), "mem");
   EXPECT_EQ(back.wboit, t.wboit);
   ASSERT_EQ(back.passes.size(), t.passes.size());
