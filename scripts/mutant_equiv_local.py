@@ -25,8 +25,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def rtlil_modules(path):
-    """{module: {cell name: (type, src, {param...})}}, with each cell's connections' instance
-    types for descending the hierarchy."""
+    """{module: {cell name: (type, its src attribute)}}: a cell's type is the module of an
+    instance, which descends the hierarchy."""
     mods, mod, attrs = {}, None, {}
     with open(path) as f:
         for line in f:

@@ -44,7 +44,16 @@ constexpr uint64_t kCyclesLo = 0x90;        // the inside's clock cycles
 constexpr uint64_t kDmaBytesLo = 0x98;      // bytes read and written on the initiator socket
 constexpr uint64_t kDmaTransactionsLo = 0xa0;  // b_transport calls (DMI accesses not counted)
 constexpr uint64_t kSize = 0xa8;            // the map's extent: addresses at or above are unmapped
+// Unmapped words within it: 0x3c, 0x74.
+
+// The read-write registers: the words from FRAME_SIZE to STREAM_BYTES but the hole and
+// TILE_SIZE. The model keeps them as words and reads its fields out of them.
+constexpr bool read_write(uint64_t a) {
+  return a % 4 == 0 && a >= kFrameSize && a <= kStreamBytes && a != 0x3c && a != kTileSize;
+}
 }  // namespace reg
+
+// A colour register's word (CLEAR_COLOR, OP_COLOR) is zb_rop's port word: pack_rgba (tile_io.h).
 
 constexpr uint32_t kIdValue = 0x5a424c44;  // "ZBLD"
 constexpr uint32_t kVersionValue = 1;

@@ -9,7 +9,7 @@
 #include "geometry/geometry.h"
 #include "io/trace.h"
 #include "rtl_params.h"
-#include "zb_tlm_payload.h"
+#include "tile_io.h"
 
 namespace zb::vp {
 
@@ -25,18 +25,15 @@ struct ZbRopTlm::CommandError {
 
 namespace {
 
-constexpr uint32_t kBusBytes = 8;  // DMA beats: a DMI access is timed as a burst of them
 // The most a command buffers (a stream, a DRAW's fragments): the model fetches before it runs.
 constexpr uint64_t kMaxBuffer = uint64_t{256} << 20;
 
-uint32_t word_of(Rgba8 c) { return uint32_t(c.r) | uint32_t(c.g) << 8 | uint32_t(c.b) << 16 | uint32_t(c.a) << 24; }
-Rgba8 rgba_of(uint32_t w) { return {uint8_t(w), uint8_t(w >> 8), uint8_t(w >> 16), uint8_t(w >> 24)}; }
 
 }  // namespace
 
 ZbRopTlm::ZbRopTlm(sc_core::sc_module_name name, const RopTlmOptions& options)
     : sc_module(name), regs("regs"), dma("dma"), irq_o("irq_o"), options_(options),
-      inside_(make_inside(options.inside)) {
+      inside_(make_inside(options.inside)), port_(options.burst, options.dmi) {
   if (options_.burst == 0) throw std::invalid_argument("ZbRopTlm: burst of 0 bytes");
   regs.register_b_transport(this, &ZbRopTlm::b_transport);
   regs.register_transport_dbg(this, &ZbRopTlm::transport_dbg);
@@ -52,95 +49,59 @@ ZbRopTlm::~ZbRopTlm() = default;
 // ---- The target socket: the register map ------------------------------------------------------
 
 bool ZbRopTlm::read_reg(uint64_t a, uint32_t& v) const {
-  const auto lo = [](uint64_t x) { return uint32_t(x); };
-  const auto hi = [](uint64_t x) { return uint32_t(x >> 32); };
+  if (reg::read_write(a)) {
+    v = rw(a);
+    return true;
+  }
   switch (a) {
     case reg::kId: v = kIdValue; return true;
     case reg::kVersion: v = kVersionValue; return true;
     case reg::kStatus: v = status_; return true;
     case reg::kCommand: v = 0; return true;
-    case reg::kFrameSize: v = frame_size_; return true;
-    case reg::kFrameFormat: v = frame_format_; return true;
-    case reg::kWboit: v = wboit_; return true;
-    case reg::kClearColor: v = clear_color_; return true;
-    case reg::kPassState: v = pass_state_; return true;
-    case reg::kFragAddrLo: v = lo(frag_addr_); return true;
-    case reg::kFragAddrHi: v = hi(frag_addr_); return true;
-    case reg::kFragCount: v = frag_count_; return true;
-    case reg::kOpKind: v = op_kind_; return true;
-    case reg::kOpColor: v = op_color_; return true;
-    case reg::kOpDepth: v = op_depth_; return true;
-    case reg::kFbAddrLo: v = lo(fb_addr_); return true;
-    case reg::kFbAddrHi: v = hi(fb_addr_); return true;
-    case reg::kFbStride: v = fb_stride_; return true;
-    case reg::kDepthAddrLo: v = lo(depth_addr_); return true;
-    case reg::kDepthAddrHi: v = hi(depth_addr_); return true;
-    case reg::kDepthStride: v = depth_stride_; return true;
-    case reg::kTileOrigin: v = tile_origin_; return true;
     case reg::kTileSize: v = uint32_t(kRtlTileW); return true;
-    case reg::kStreamAddrLo: v = lo(stream_addr_); return true;
-    case reg::kStreamAddrHi: v = hi(stream_addr_); return true;
-    case reg::kStreamBytes: v = stream_bytes_; return true;
     case reg::kErrorInfo: v = error_info_; return true;
-    case reg::kPasses: v = uint32_t(frame_passes_); return true;
+    case reg::kPasses: v = uint32_t(pass_stats_.size()); return true;
   }
+  PassStats frame;  // the frame's counters: its passes' so far
+  for (const PassStats& p : pass_stats_) frame += p;
   const struct { uint64_t at, value; } wide[] = {
-      {reg::kFragmentsInLo, frame_stats_.fragments_in},
-      {reg::kFragmentsPassedLo, frame_stats_.fragments_passed},
-      {reg::kColorWritesLo, frame_stats_.color_writes},
+      {reg::kFragmentsInLo, frame.fragments_in},
+      {reg::kFragmentsPassedLo, frame.fragments_passed},
+      {reg::kColorWritesLo, frame.color_writes},
       {reg::kCyclesLo, frame_cycles_},
-      {reg::kDmaBytesLo, frame_dma_bytes_},
-      {reg::kDmaTransactionsLo, frame_dma_tx_}};
+      {reg::kDmaBytesLo, port_.counts().bytes - frame_dma_.bytes},
+      {reg::kDmaTransactionsLo, port_.counts().transactions - frame_dma_.transactions}};
   for (const auto& w : wide) {
-    if (a == w.at) { v = lo(w.value); return true; }
-    if (a == w.at + 4) { v = hi(w.value); return true; }
+    if (a == w.at) { v = uint32_t(w.value); return true; }
+    if (a == w.at + 4) { v = uint32_t(w.value >> 32); return true; }
   }
   return false;  // a hole in the map
 }
 
 ZbRopTlm::Write ZbRopTlm::write_reg(uint64_t a, uint32_t v, const sc_time& delay, bool debug) {
-  const auto set_lo = [v](uint64_t& x) { x = (x & ~uint64_t{0xffffffff}) | v; };
-  const auto set_hi = [v](uint64_t& x) { x = (x & 0xffffffffu) | uint64_t(v) << 32; };
-  switch (a) {
-    case reg::kStatus:
-      if (debug) return Write::kSideEffect;
-      // Writing back the error bit clears its code too.
-      set_status(status_ & ~(v & (status::kDone | status::kError)) &
-                 ~((v & status::kError) ? 0xffu << status::kCodeShift : 0u));
+  if (reg::read_write(a)) {
+    rw_[a / 4] = v;
+    return Write::kOk;
+  }
+  if (a == reg::kStatus) {
+    if (debug) return Write::kSideEffect;
+    // Writing back the error bit clears its code too.
+    set_status(status_ & ~(v & (status::kDone | status::kError)) &
+               ~((v & status::kError) ? 0xffu << status::kCodeShift : 0u));
+    return Write::kOk;
+  }
+  if (a == reg::kCommand) {
+    if (debug) return Write::kSideEffect;
+    if (status_ & status::kBusy) {  // dropped; the running command goes on
+      error_text_ = fmt::format("command {} written while command {} runs", v, command_);
+      error_info_ = v;
+      set_status(status_ | status::kError | uint32_t(ErrorCode::kBusy) << status::kCodeShift);
       return Write::kOk;
-    case reg::kCommand:
-      if (debug) return Write::kSideEffect;
-      if (status_ & status::kBusy) {  // dropped; the running command goes on
-        error_text_ = fmt::format("command {} written while command {} runs", v, command_);
-        error_info_ = v;
-        set_status(status_ | status::kError | uint32_t(ErrorCode::kBusy) << status::kCodeShift);
-        return Write::kOk;
-      }
-      command_ = v;
-      set_status(status::kBusy);
-      kick_.notify(delay);  // the command starts at the writer's local time
-      return Write::kOk;
-    case reg::kFrameSize: frame_size_ = v; return Write::kOk;
-    case reg::kFrameFormat: frame_format_ = v; return Write::kOk;
-    case reg::kWboit: wboit_ = v; return Write::kOk;
-    case reg::kClearColor: clear_color_ = v; return Write::kOk;
-    case reg::kPassState: pass_state_ = v; return Write::kOk;
-    case reg::kFragAddrLo: set_lo(frag_addr_); return Write::kOk;
-    case reg::kFragAddrHi: set_hi(frag_addr_); return Write::kOk;
-    case reg::kFragCount: frag_count_ = v; return Write::kOk;
-    case reg::kOpKind: op_kind_ = v; return Write::kOk;
-    case reg::kOpColor: op_color_ = v; return Write::kOk;
-    case reg::kOpDepth: op_depth_ = v; return Write::kOk;
-    case reg::kFbAddrLo: set_lo(fb_addr_); return Write::kOk;
-    case reg::kFbAddrHi: set_hi(fb_addr_); return Write::kOk;
-    case reg::kFbStride: fb_stride_ = v; return Write::kOk;
-    case reg::kDepthAddrLo: set_lo(depth_addr_); return Write::kOk;
-    case reg::kDepthAddrHi: set_hi(depth_addr_); return Write::kOk;
-    case reg::kDepthStride: depth_stride_ = v; return Write::kOk;
-    case reg::kTileOrigin: tile_origin_ = v; return Write::kOk;
-    case reg::kStreamAddrLo: set_lo(stream_addr_); return Write::kOk;
-    case reg::kStreamAddrHi: set_hi(stream_addr_); return Write::kOk;
-    case reg::kStreamBytes: stream_bytes_ = v; return Write::kOk;
+    }
+    command_ = v;
+    set_status(status::kBusy);
+    kick_.notify(delay);  // the command starts at the writer's local time
+    return Write::kOk;
   }
   return Write::kReadOnly;
 }
@@ -234,32 +195,32 @@ void ZbRopTlm::execute(Command c) {
   switch (c) {
     case Command::kBeginFrame: {
       order(!in_pass_, "BEGIN_FRAME inside a pass (END_PASS first)");
-      const WboitFormat wb{int(wboit_ & 0xff), int(wboit_ >> 8 & 0xff), int(wboit_ >> 16 & 0xff)};
-      begin_frame(int(frame_size_ & 0xffff), int(frame_size_ >> 16), int(frame_format_ & 0xff),
-                  int(frame_format_ >> 8 & 0xff), wb, rgba_of(clear_color_));
+      const WboitFormat wb{int(rw(reg::kWboit) & 0xff), int(rw(reg::kWboit) >> 8 & 0xff), int(rw(reg::kWboit) >> 16 & 0xff)};
+      begin_frame(int(rw(reg::kFrameSize) & 0xffff), int(rw(reg::kFrameSize) >> 16), int(rw(reg::kFrameFormat) & 0xff),
+                  int(rw(reg::kFrameFormat) >> 8 & 0xff), wb, unpack_rgba(rw(reg::kClearColor)));
       return;
     }
     case Command::kBeginPass:
-      if (pass_state_ > 0xffff) throw CommandError{ErrorCode::kBadSetup, "PASS_STATE above 16 bits"};
-      begin_pass(uint16_t(pass_state_));
+      if (rw(reg::kPassState) > 0xffff) throw CommandError{ErrorCode::kBadSetup, "PASS_STATE above 16 bits"};
+      begin_pass(uint16_t(rw(reg::kPassState)));
       return;
     case Command::kDraw:
       order(in_pass_, "DRAW outside a pass (BEGIN_PASS first)");
-      draw(fetch_fragments(frag_addr_, frag_count_));
+      draw(fetch_fragments(rw64(reg::kFragAddrLo), rw(reg::kFragCount)));
       return;
     case Command::kEndPass: end_pass(); return;
     case Command::kFrameOp: {
-      if (op_kind_ >= kFrameOpKinds)
+      if (rw(reg::kOpKind) >= kFrameOpKinds)
         throw CommandError{ErrorCode::kBadSetup,
-                           fmt::format("OP_KIND {} is not a frame operation (0 to {})", op_kind_,
+                           fmt::format("OP_KIND {} is not a frame operation (0 to {})", rw(reg::kOpKind),
                                        kFrameOpKinds - 1)};
-      frame_op(FrameOp{FrameOpKind(op_kind_), rgba_of(op_color_), op_depth_, false});
+      frame_op(FrameOp{FrameOpKind(rw(reg::kOpKind)), unpack_rgba(rw(reg::kOpColor)), rw(reg::kOpDepth), false});
       return;
     }
     case Command::kEndFrame: end_frame(); return;
     case Command::kTileStore: {
       order(frame_open_ && !in_pass_, "TILE_STORE outside a frame or inside a pass");
-      const int x = int(tile_origin_ & 0xffff), y = int(tile_origin_ >> 16);
+      const int x = int(rw(reg::kTileOrigin) & 0xffff), y = int(rw(reg::kTileOrigin) >> 16);
       if (x % kRtlTileW || y % kRtlTileW || x >= width_ || y >= height_)
         throw CommandError{ErrorCode::kBadSetup,
                            fmt::format("TILE_ORIGIN ({}, {}) is not a tile's corner in the {}x{} "
@@ -298,9 +259,9 @@ void ZbRopTlm::begin_frame(int width, int height, int depth_bits, int samples,
   }
   frame_open_ = true;
   width_ = width, height_ = height, depth_bits_ = depth_bits, samples_ = samples;
-  frame_stats_ = {};
   pass_stats_.clear();
-  frame_passes_ = frame_cycles_ = frame_dma_bytes_ = frame_dma_tx_ = 0;
+  frame_cycles_ = 0;
+  frame_dma_ = port_.counts();
   cycles_seen_ = inside_->cycles();
 }
 
@@ -326,9 +287,7 @@ void ZbRopTlm::draw(const std::vector<Fragment>& fragments) {
 void ZbRopTlm::end_pass() {
   if (!in_pass_) throw CommandError{ErrorCode::kOrder, "END_PASS outside a pass"};
   pass_stats_.push_back(inside_->backend().end_pass());
-  frame_stats_ += pass_stats_.back();
   in_pass_ = false;
-  ++frame_passes_;
   ++totals_.passes;
   count_cycles();
 }
@@ -345,8 +304,6 @@ void ZbRopTlm::end_frame() {
     throw CommandError{ErrorCode::kOrder, "END_FRAME outside a frame or inside a pass"};
   // A backend that runs passes later (the RTL's layers groups) counts them here.
   inside_->backend().finish_frame(pass_stats_);
-  frame_stats_ = {};
-  for (const PassStats& p : pass_stats_) frame_stats_ += p;
   count_cycles();
   const Framebuffer& fb = framebuffer();
   for (int ty = 0; ty * kRtlTileW < fb.height; ++ty)
@@ -359,30 +316,30 @@ void ZbRopTlm::store_tile(int tx, int ty) {
   const Framebuffer& fb = framebuffer();
   const int x0 = tx * kRtlTileW, y0 = ty * kRtlTileW;
   const int w = std::min(kRtlTileW, fb.width - x0), h = std::min(kRtlTileW, fb.height - y0);
-  if (fb_stride_ < uint32_t(fb.width) * 4)
+  if (rw(reg::kFbStride) < uint32_t(fb.width) * 4)
     throw CommandError{ErrorCode::kBadSetup,
-                       fmt::format("FB_STRIDE {} is less than a row of {} pixels", fb_stride_,
+                       fmt::format("FB_STRIDE {} is less than a row of {} pixels", rw(reg::kFbStride),
                                    fb.width)};
-  if (depth_addr_ != 0 && depth_stride_ < uint32_t(fb.width) * 4)
+  if (rw64(reg::kDepthAddrLo) != 0 && rw(reg::kDepthStride) < uint32_t(fb.width) * 4)
     throw CommandError{ErrorCode::kBadSetup,
                        fmt::format("DEPTH_STRIDE {} is less than a row of {} pixels",
-                                   depth_stride_, fb.width)};
+                                   rw(reg::kDepthStride), fb.width)};
   std::vector<uint8_t> row(size_t(w) * 4);
   for (int y = y0; y < y0 + h; ++y) {
     for (int x = 0; x < w; ++x) {
-      const uint32_t c = word_of(fb.color_at(x0 + x, y));
+      const uint32_t c = pack_rgba(fb.color_at(x0 + x, y));
       std::memcpy(&row[size_t(x) * 4], &c, 4);
     }
-    dma_access(tlm::TLM_WRITE_COMMAND, fb_addr_ + uint64_t(y) * fb_stride_ + uint64_t(x0) * 4,
+    dma_access(tlm::TLM_WRITE_COMMAND, rw64(reg::kFbAddrLo) + uint64_t(y) * rw(reg::kFbStride) + uint64_t(x0) * 4,
                row.data(), row.size());
   }
-  if (depth_addr_ == 0) return;
+  if (rw64(reg::kDepthAddrLo) == 0) return;
   for (int y = y0; y < y0 + h; ++y) {
     for (int x = 0; x < w; ++x) {
       const uint32_t d = fb.depth_at(x0 + x, y);
       std::memcpy(&row[size_t(x) * 4], &d, 4);
     }
-    dma_access(tlm::TLM_WRITE_COMMAND, depth_addr_ + uint64_t(y) * depth_stride_ + uint64_t(x0) * 4,
+    dma_access(tlm::TLM_WRITE_COMMAND, rw64(reg::kDepthAddrLo) + uint64_t(y) * rw(reg::kDepthStride) + uint64_t(x0) * 4,
                row.data(), row.size());
   }
 }
@@ -390,21 +347,21 @@ void ZbRopTlm::store_tile(int tx, int ty) {
 // A whole frame from the trace in memory, through the same steps as the registers' commands.
 void ZbRopTlm::run_stream() {
   if (in_pass_) throw CommandError{ErrorCode::kOrder, "RUN_STREAM inside a pass"};
-  if (stream_bytes_ > kMaxBuffer)
+  if (rw(reg::kStreamBytes) > kMaxBuffer)
     throw CommandError{ErrorCode::kBadSetup,
-                       fmt::format("STREAM_BYTES {} is above the model's {} MiB", stream_bytes_,
+                       fmt::format("STREAM_BYTES {} is above the model's {} MiB", rw(reg::kStreamBytes),
                                    kMaxBuffer >> 20)};
   // Fetched whole into a buffer kept from frame to frame: a DMI pointer may be taken back
   // while the frame runs, so the stream is never read in place.
-  if (stream_cap_ < stream_bytes_) {
-    stream_buf_.reset(new uint8_t[stream_bytes_]);  // not zeroed: the fetch fills it
-    stream_cap_ = stream_bytes_;
+  if (stream_cap_ < rw(reg::kStreamBytes)) {
+    stream_buf_.reset(new uint8_t[rw(reg::kStreamBytes)]);  // not zeroed: the fetch fills it
+    stream_cap_ = rw(reg::kStreamBytes);
   }
-  dma_access(tlm::TLM_READ_COMMAND, stream_addr_, stream_buf_.get(), stream_bytes_);
-  const std::string_view bytes(reinterpret_cast<const char*>(stream_buf_.get()), stream_bytes_);
+  dma_access(tlm::TLM_READ_COMMAND, rw64(reg::kStreamAddrLo), stream_buf_.get(), rw(reg::kStreamBytes));
+  const std::string_view bytes(reinterpret_cast<const char*>(stream_buf_.get()), rw(reg::kStreamBytes));
   // The whole stream is checked first (a malformed one runs nothing), then run pass by pass:
   // the model holds one pass's fragments at a time.
-  const std::string name = fmt::format("at 0x{:x}", stream_addr_);
+  const std::string name = fmt::format("at 0x{:x}", rw64(reg::kStreamAddrLo));
   try {
     scan_trace(bytes, name, {}, {}, {});
   } catch (const TraceError& e) {
@@ -437,11 +394,12 @@ std::vector<Fragment> ZbRopTlm::fetch_fragments(uint64_t addr, uint64_t count) {
   dma_access(tlm::TLM_READ_COMMAND, addr, bytes.data(), bytes.size());
   std::vector<Fragment> out(count);
   for (uint64_t i = 0; i < count; ++i) {
-    std::string why;
-    if (!decode_fragment(&bytes[i * kTraceFragmentBytes], width_, height_, depth_bits_, samples_,
-                         out[i], &why))
-      throw CommandError{ErrorCode::kBadFragment, fmt::format("fragment {}: {}", i, why),
-                         uint32_t(i)};
+    const uint8_t* rec = &bytes[i * kTraceFragmentBytes];
+    if (decode_fragment(rec, width_, height_, depth_bits_, samples_, out[i])) continue;
+    std::string why;  // again, for the message
+    decode_fragment(rec, width_, height_, depth_bits_, samples_, out[i], &why);
+    throw CommandError{ErrorCode::kBadFragment, fmt::format("fragment {}: {}", i, why),
+                       uint32_t(i)};
   }
   return out;
 }
@@ -458,65 +416,30 @@ void ZbRopTlm::count_cycles() {
 
 // ---- The initiator socket: DMA ---------------------------------------------------------------
 
-bool ZbRopTlm::dmi_covers(tlm::tlm_command cmd, uint64_t addr, size_t len) const {
-  if (!dmi_valid_ || addr < dmi_.get_start_address() || addr + len - 1 > dmi_.get_end_address())
-    return false;
-  return cmd == tlm::TLM_READ_COMMAND ? dmi_.is_read_allowed() : dmi_.is_write_allowed();
-}
-
 void ZbRopTlm::dma_access(tlm::tlm_command cmd, uint64_t addr, uint8_t* data, size_t len) {
-  const bool read = cmd == tlm::TLM_READ_COMMAND;
-  while (len > 0) {
-    if (options_.dmi && dmi_covers(cmd, addr, len)) {
-      uint8_t* p = dmi_.get_dmi_ptr() + (addr - dmi_.get_start_address());
-      if (read) std::memcpy(data, p, len);
-      else std::memcpy(p, data, len);
-      const uint64_t beats = (len + kBusBytes - 1) / kBusBytes;
-      qk_.inc((read ? dmi_.get_read_latency() : dmi_.get_write_latency()) * double(beats));
-      ++totals_.dmi_accesses;
-      totals_.dma_bytes += len;
-      frame_dma_bytes_ += len;
-      if (qk_.need_sync()) qk_.sync();
-      return;
-    }
-    const size_t n = std::min<size_t>(len, options_.burst);
-    tlm::tlm_generic_payload tx;
-    set_payload(tx, cmd, addr, data, n);
-    sc_time delay = qk_.get_local_time();
-    dma->b_transport(tx, delay);
-    qk_.set(delay);
-    ++totals_.dma_transactions;
-    ++frame_dma_tx_;
-    if (tx.is_response_error())
-      throw CommandError{ErrorCode::kDma,
-                         fmt::format("DMA {} of {} bytes at 0x{:x}: {}", read ? "read" : "write",
-                                     n, addr, tx.get_response_string()),
-                         uint32_t(addr)};
-    totals_.dma_bytes += n;
-    frame_dma_bytes_ += n;
-    if (options_.dmi && tx.is_dmi_allowed() && !dmi_covers(cmd, addr, 1)) {
-      tlm::tlm_dmi d;
-      tlm_generic_payload req;
-      req.set_command(cmd);
-      req.set_address(addr);
-      if (dma->get_direct_mem_ptr(req, d)) {
-        dmi_ = d;
-        dmi_valid_ = true;
-        ++totals_.dmi_grants;
-      }
-    }
-    if (qk_.need_sync()) qk_.sync();
-    addr += n;
-    data += n;
-    len -= n;
-  }
+  uint64_t failed = 0;
+  const tlm::tlm_response_status r = port_.access(*dma.operator->(), qk_, cmd, addr, data, len, failed);
+  if (r != tlm::TLM_OK_RESPONSE)
+    throw CommandError{ErrorCode::kDma,
+                       fmt::format("DMA {} at 0x{:x}: {}",
+                                   cmd == tlm::TLM_READ_COMMAND ? "read" : "write", failed,
+                                   response_text(r)),
+                       uint32_t(failed)};
 }
 
 void ZbRopTlm::invalidate_dmi(sc_dt::uint64 start, sc_dt::uint64 end) {
-  if (dmi_valid_ && start <= dmi_.get_end_address() && end >= dmi_.get_start_address()) {
-    dmi_valid_ = false;
-    ++totals_.dmi_invalidations;
-  }
+  port_.invalidate(start, end);
+}
+
+RopTlmTotals ZbRopTlm::totals() const {
+  RopTlmTotals t = totals_;
+  const DmaCounts& c = port_.counts();
+  t.dma_bytes = c.bytes;
+  t.dma_transactions = c.transactions;
+  t.dmi_accesses = c.dmi_accesses;
+  t.dmi_grants = c.dmi_grants;
+  t.dmi_invalidations = c.dmi_invalidations;
+  return t;
 }
 
 }  // namespace zb::vp

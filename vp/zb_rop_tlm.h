@@ -4,6 +4,7 @@
 // keeper. Inside, the golden model timed by the cost model or the Verilated zb_rop.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -18,6 +19,7 @@
 #include "rop/backend.h"
 #include "zb_rop_inside.h"
 #include "zb_rop_regs.h"
+#include "zb_tlm_dma.h"
 
 namespace zb::vp {
 
@@ -46,7 +48,7 @@ class ZbRopTlm : public sc_core::sc_module {
   ~ZbRopTlm() override;
 
   const Framebuffer& framebuffer() const { return inside_->backend().framebuffer(); }
-  const RopTlmTotals& totals() const { return totals_; }
+  RopTlmTotals totals() const;
   const std::string& last_error() const { return error_text_; }  // the last error's detail
 
  private:
@@ -74,35 +76,31 @@ class ZbRopTlm : public sc_core::sc_module {
   std::vector<Fragment> fetch_fragments(uint64_t addr, uint64_t count);
   void count_cycles();  // the inside's cycles since the last call, into local time
   void dma_access(tlm::tlm_command cmd, uint64_t addr, uint8_t* data, size_t len);
-  bool dmi_covers(tlm::tlm_command cmd, uint64_t addr, size_t len) const;
 
   RopTlmOptions options_;
   std::unique_ptr<RopInside> inside_;
   tlm_utils::tlm_quantumkeeper qk_;
   sc_core::sc_event kick_, irq_changed_;
 
-  // Registers.
-  uint32_t status_ = 0, command_ = 0, frame_size_ = 0, frame_format_ = 0, wboit_ = 0,
-           clear_color_ = 0, pass_state_ = 0, frag_count_ = 0, op_kind_ = 0, op_color_ = 0,
-           op_depth_ = 0, fb_stride_ = 0, depth_stride_ = 0, tile_origin_ = 0, stream_bytes_ = 0,
-           error_info_ = 0;
-  uint64_t frag_addr_ = 0, fb_addr_ = 0, depth_addr_ = 0, stream_addr_ = 0;
-  PassStats frame_stats_;
+  // Registers: the read-write ones as words, by offset / 4 (reg::read_write); the rest.
+  std::array<uint32_t, reg::kSize / 4> rw_{};
+  uint32_t rw(uint64_t at) const { return rw_[at / 4]; }
+  uint64_t rw64(uint64_t lo) const { return rw(lo) | uint64_t(rw(lo + 4)) << 32; }
+  uint32_t status_ = 0, command_ = 0, error_info_ = 0;
+  // The open frame's passes' counters (finish_frame may fill them in: the RTL's layers groups).
   std::vector<PassStats> pass_stats_;
-  std::unique_ptr<uint8_t[]> stream_buf_;  // RUN_STREAM's stream, fetched; kept for the next
-  uint64_t stream_cap_ = 0;  // the frame's, end_pass's (finish_frame may fill them in)
+  uint64_t frame_cycles_ = 0;
+  DmaCounts frame_dma_;  // the port's counts when the frame began
   int width_ = 0, height_ = 0, depth_bits_ = 0, samples_ = 0;  // the open frame's
-  uint64_t frame_passes_ = 0, frame_cycles_ = 0, frame_dma_bytes_ = 0, frame_dma_tx_ = 0;
+  std::unique_ptr<uint8_t[]> stream_buf_;  // RUN_STREAM's stream, fetched; kept for the next
+  uint64_t stream_cap_ = 0;                // its size
 
   // The command sequence's state.
   bool frame_open_ = false, in_pass_ = false;
   uint64_t cycles_seen_ = 0;
   std::string error_text_;
-  RopTlmTotals totals_;
-
-  // The DMI region granted last (one at a time), valid until invalidated.
-  tlm::tlm_dmi dmi_;
-  bool dmi_valid_ = false;
+  RopTlmTotals totals_;  // but the DMA's, which are port_'s
+  DmaPort port_;
 };
 
 }  // namespace zb::vp

@@ -7,8 +7,9 @@
 
 #include <fmt/core.h>
 
+#include "tile_io.h"
 #include "zb_rop_regs.h"
-#include "zb_tlm_payload.h"
+#include "zb_tlm_dma.h"
 
 namespace zb::vp {
 
@@ -55,10 +56,7 @@ ZbVpHost::ZbVpHost(sc_core::sc_module_name name, int rops, std::vector<HostJob>&
   SC_THREAD(run);
 }
 
-void ZbVpHost::invalidate(sc_dt::uint64 start, sc_dt::uint64 end) {
-  if (dmi_valid_ && start <= dmi_.get_end_address() && end >= dmi_.get_start_address())
-    dmi_valid_ = false;
-}
+void ZbVpHost::invalidate(sc_dt::uint64 start, sc_dt::uint64 end) { mem_dma_.invalidate(start, end); }
 
 void ZbVpHost::run() {
   for (HostJob& job : jobs_) run_job(job);
@@ -78,9 +76,9 @@ void ZbVpHost::run_job(HostJob& job) {
   write_reg(job, reg::kDepthAddrHi, uint32_t(layout_.depth >> 32));
   write_reg(job, reg::kDepthStride, uint32_t(t.width) * 4);
   if (job.programming == Programming::kStream) {
-    const std::string bytes = serialize_trace(t);
-    mem_access(tlm::TLM_WRITE_COMMAND, layout_.stream,
-               reinterpret_cast<uint8_t*>(const_cast<char*>(bytes.data())), bytes.size());
+    std::string bytes = serialize_trace(t);
+    mem_access(tlm::TLM_WRITE_COMMAND, layout_.stream, reinterpret_cast<uint8_t*>(bytes.data()),
+               bytes.size());
     write_reg(job, reg::kStreamAddrLo, uint32_t(layout_.stream));
     write_reg(job, reg::kStreamAddrHi, uint32_t(layout_.stream >> 32));
     write_reg(job, reg::kStreamBytes, uint32_t(bytes.size()));
@@ -110,8 +108,7 @@ void ZbVpHost::program_registers(HostJob& job) {
   const Trace& t = *job.trace;
   const auto op = [&](const FrameOp& o) {
     write_reg(job, reg::kOpKind, uint32_t(o.kind));
-    write_reg(job, reg::kOpColor, uint32_t(o.value.r) | uint32_t(o.value.g) << 8 |
-                                      uint32_t(o.value.b) << 16 | uint32_t(o.value.a) << 24);
+    write_reg(job, reg::kOpColor, pack_rgba(o.value));
     write_reg(job, reg::kOpDepth, o.depth);
     return command(job, uint32_t(Command::kFrameOp));
   };
@@ -119,9 +116,7 @@ void ZbVpHost::program_registers(HostJob& job) {
   write_reg(job, reg::kFrameFormat, uint32_t(t.depth_bits) | uint32_t(t.coverage_samples) << 8);
   write_reg(job, reg::kWboit, uint32_t(t.wboit.acc_bits) | uint32_t(t.wboit.rev_bits) << 8 |
                                   uint32_t(t.wboit.weight_bits) << 16);
-  const Rgba8 c = t.clear_color;
-  write_reg(job, reg::kClearColor, uint32_t(c.r) | uint32_t(c.g) << 8 | uint32_t(c.b) << 16 |
-                                       uint32_t(c.a) << 24);
+  write_reg(job, reg::kClearColor, pack_rgba(t.clear_color));
   if (command(job, uint32_t(Command::kBeginFrame)) & status::kError) return;
   for (const TracePass& p : t.passes) {
     for (const FrameOp& o : p.frame_ops)
@@ -188,38 +183,10 @@ void ZbVpHost::reg_access(HostJob& job, tlm::tlm_command cmd, uint64_t addr, uin
 }
 
 void ZbVpHost::mem_access(tlm::tlm_command cmd, uint64_t addr, uint8_t* data, size_t len) {
-  constexpr size_t kBurst = 4096;
-  while (len > 0) {
-    const bool allowed = cmd == tlm::TLM_READ_COMMAND ? dmi_.is_read_allowed() : dmi_.is_write_allowed();
-    if (dmi_valid_ && allowed && addr >= dmi_.get_start_address() &&
-        addr + len - 1 <= dmi_.get_end_address()) {
-      uint8_t* p = dmi_.get_dmi_ptr() + (addr - dmi_.get_start_address());
-      if (cmd == tlm::TLM_READ_COMMAND) std::memcpy(data, p, len);
-      else std::memcpy(p, data, len);
-      qk_.inc((cmd == tlm::TLM_READ_COMMAND ? dmi_.get_read_latency() : dmi_.get_write_latency()) *
-              double((len + 7) / 8));
-      if (qk_.need_sync()) qk_.sync();
-      return;
-    }
-    const size_t n = std::min(len, kBurst);
-    tlm::tlm_generic_payload tx;
-    set_payload(tx, cmd, addr, data, n);
-    sc_time delay = qk_.get_local_time();
-    mem->b_transport(tx, delay);
-    qk_.set(delay);
-    if (tx.is_response_error())
-      throw std::runtime_error(fmt::format("host: memory at 0x{:x}: {}", addr, tx.get_response_string()));
-    if (tx.is_dmi_allowed() && !dmi_valid_) {
-      tlm::tlm_generic_payload req;
-      req.set_command(cmd);
-      req.set_address(addr);
-      dmi_valid_ = mem->get_direct_mem_ptr(req, dmi_);
-    }
-    if (qk_.need_sync()) qk_.sync();
-    addr += n;
-    data += n;
-    len -= n;
-  }
+  uint64_t failed = 0;
+  const tlm::tlm_response_status r = mem_dma_.access(*mem.operator->(), qk_, cmd, addr, data, len, failed);
+  if (r != tlm::TLM_OK_RESPONSE)
+    throw std::runtime_error(fmt::format("host: memory at 0x{:x}: {}", failed, response_text(r)));
 }
 
 }  // namespace zb::vp

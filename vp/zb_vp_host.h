@@ -15,6 +15,7 @@
 
 #include "io/trace.h"
 #include "rop/fixed.h"
+#include "zb_tlm_dma.h"
 
 namespace zb::vp {
 
@@ -68,8 +69,7 @@ class ZbVpHost : public sc_core::sc_module {
   std::vector<HostJob>& jobs_;
   HostLayout layout_;
   tlm_utils::tlm_quantumkeeper qk_;
-  tlm::tlm_dmi dmi_;
-  bool dmi_valid_ = false;
+  DmaPort mem_dma_{4096, true};  // its memory traffic: DMI where granted
 };
 
 }  // namespace zb::vp

@@ -176,6 +176,7 @@ PassStats CostCounter::end_pass() {
 // at the group's start): a copy or sweep before a pass, its setup cycle and loads, one store.
 void CostCounter::end_group() {
   if (group_passes_ == 0) return;
+  // The tile schedule's traffic: the lab's alone (the pass-schedule scope keeps none).
   for (size_t k = 0; k < grids_.size() && scope_ == CostScope::kLab; ++k) {
     Grid& g = grids_[k];
     ResidentTraffic& r = cost_.tiles[k].resident;
@@ -248,8 +249,6 @@ void CostCounter::end_group() {
     r.two_buffer_cycles += two_buffer_group(runs);
     for (size_t v = 0; v < kBankVariants.size(); ++v)
       r.two_buffer_variant_cycles[v] += two_buffer_group(variants[v]);
-    g.group.clear();
-    g.group_stream.clear();
   }
   for (Grid& g : grids_) {
     g.group.clear();

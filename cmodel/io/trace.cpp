@@ -272,11 +272,13 @@ void scan_trace(std::string_view bytes, const std::string& name,
     pass.fragments.resize(on_pass ? size_t(count) : 0);
     for (uint64_t i = 0; i < count; ++i) {
       const size_t at = r.offset();
-      std::string why;
-      if (!decode_fragment(r.take(kTraceFragmentBytes, "a fragment"), t.width, t.height,
-                           t.depth_bits, t.coverage_samples, on_pass ? pass.fragments[i] : scratch,
-                           &why))
+      const uint8_t* rec = r.take(kTraceFragmentBytes, "a fragment");
+      Fragment& f = on_pass ? pass.fragments[i] : scratch;
+      if (!decode_fragment(rec, t.width, t.height, t.depth_bits, t.coverage_samples, f)) {
+        std::string why;  // again, for the message (off the per-fragment path)
+        decode_fragment(rec, t.width, t.height, t.depth_bits, t.coverage_samples, f, &why);
         r.fail(at, why);
+      }
     }
     if (on_pass) on_pass(pass);
   }
