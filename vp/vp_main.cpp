@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <malloc.h>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,7 +49,10 @@ struct Options {
 
 struct Frame {
   std::string name;  // the method, or the trace's file name
-  Trace trace;
+  // A trace file's trace, or a method's plan over the scene (its trace made too for register
+  // programming: the host then sends it pass by pass).
+  const PassPlan* plan = nullptr;
+  std::optional<Trace> trace;
   Framebuffer reference;  // the golden model's, by the plan executor or the trace's replay
 };
 
@@ -75,7 +79,9 @@ sc_core::sc_time parse_quantum(const std::string& text, sc_core::sc_time clock) 
   return clock * double(cycles);
 }
 
-std::vector<Frame> make_frames(const Options& o) {
+// The frames to run; `rs` keeps the scene's fragments the plans' frames are made from.
+std::vector<Frame> make_frames(const Options& o, Programming programming,
+                               std::optional<RasterizedScene>& rs) {
   std::vector<Frame> out;
   if (!o.trace.empty()) {
     Frame f;
@@ -87,7 +93,7 @@ std::vector<Frame> make_frames(const Options& o) {
     f.name = o.trace;
     if (!o.no_check) {
       GoldenRop golden;
-      replay_trace(f.trace, golden);
+      replay_trace(*f.trace, golden);
       f.reference = golden.framebuffer();
     }
     out.push_back(std::move(f));
@@ -97,7 +103,7 @@ std::vector<Frame> make_frames(const Options& o) {
   const Viewport vp = cli::check_viewport(o.frame.width, o.frame.height, o.frame.depth_bits);
   const Scene scene = cli::resolve_scene(o.frame.scene, o.frame.camera);
   cli::print_warnings("zblend_vp", scene);
-  const RasterizedScene rs = rasterize_scene(scene, vp);
+  rs = rasterize_scene(scene, vp, /*exact_depth=*/false);  // no exact reference here
   for (const std::string& name : names) {
     const PassPlan* plan = find_plan(name);
     if (!plan) {
@@ -106,10 +112,11 @@ std::vector<Frame> make_frames(const Options& o) {
     }
     Frame f;
     f.name = name;
-    f.trace = make_trace(rs, *plan);
+    f.plan = plan;
+    if (programming == Programming::kRegisters) f.trace = make_trace(*rs, *plan);
     if (!o.no_check) {
       GoldenRop golden;
-      render(rs, *plan, golden);
+      render(*rs, *plan, golden);
       f.reference = golden.framebuffer();
     }
     out.push_back(std::move(f));
@@ -146,7 +153,8 @@ int run(const Options& o) {
   cli::create_output_dirs(outputs);
   if (!o.out_dir.empty()) std::filesystem::create_directories(o.out_dir);
 
-  const std::vector<Frame> frames = make_frames(o);
+  std::optional<RasterizedScene> rs;
+  const std::vector<Frame> frames = make_frames(o, programming, rs);
   if (!o.out.empty() && frames.size() * insides.size() != 1)
     throw UsageError("--out: one frame only (one method, one inside); give --out-dir for more");
   std::vector<HostJob> jobs;
@@ -154,7 +162,8 @@ int run(const Options& o) {
     for (size_t r = 0; r < insides.size(); ++r) {
       HostJob j;
       j.rop = int(r);
-      j.trace = &f.trace;
+      if (f.trace) j.trace = &*f.trace;
+      else j.scene = &*rs, j.plan = f.plan;
       j.programming = programming;
       jobs.push_back(std::move(j));
     }
@@ -198,14 +207,12 @@ int run(const Options& o) {
     const HostJob& j = jobs[i];
     const Frame& f = frames[i / insides.size()];
     const ZbRopTlm& rop = *rops[size_t(j.rop)];
-    uint64_t fragments = 0;
-    for (const TracePass& p : f.trace.passes) fragments += p.fragments.size();
     std::string check = o.no_check ? "not checked" : "match";
     if (!j.error.empty()) {
       check = "ROP error: " + j.error + ": " + rop.last_error();
-    } else if (j.passes != f.trace.passes.size() || j.fragments_in != fragments) {
-      check = fmt::format("COUNTERS: PASSES {} and FRAGMENTS_IN {}, the frame has {} and {}",
-                          j.passes, j.fragments_in, f.trace.passes.size(), fragments);
+    } else if (j.passes != j.sent_passes || j.fragments_in != j.sent_fragments) {
+      check = fmt::format("COUNTERS: PASSES {} and FRAGMENTS_IN {}, the host sent {} and {}",
+                          j.passes, j.fragments_in, j.sent_passes, j.sent_fragments);
     } else if (!o.no_check) {
       const std::string diff = first_difference(j, f.reference);
       if (!diff.empty()) check = "MISMATCH at " + diff;
@@ -217,7 +224,8 @@ int run(const Options& o) {
                  (j.end - j.start).to_seconds() * 1e6, j.cycles, j.dma_transactions,
                  j.rop_transactions, j.wall_ms, check);
     if (!o.out.empty() || !o.out_dir.empty()) {
-      Framebuffer fb(f.trace.width, f.trace.height, f.trace.depth_bits, Rgba8{});
+      Framebuffer fb(j.width(), j.height(), f.trace ? f.trace->depth_bits : rs->viewport.depth_bits,
+                     Rgba8{});
       if (!j.frame.empty()) fb.color = j.frame;
       const std::string path =
           !o.out.empty() ? o.out

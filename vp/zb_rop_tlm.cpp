@@ -25,7 +25,7 @@ struct ZbRopTlm::CommandError {
 
 namespace {
 
-// The most a command buffers (a stream, a DRAW's fragments): the model fetches before it runs.
+// The most a DRAW buffers: the model fetches its fragments before it draws them.
 constexpr uint64_t kMaxBuffer = uint64_t{256} << 20;
 
 
@@ -204,10 +204,12 @@ void ZbRopTlm::execute(Command c) {
       if (rw(reg::kPassState) > 0xffff) throw CommandError{ErrorCode::kBadSetup, "PASS_STATE above 16 bits"};
       begin_pass(uint16_t(rw(reg::kPassState)));
       return;
-    case Command::kDraw:
+    case Command::kDraw: {
       order(in_pass_, "DRAW outside a pass (BEGIN_PASS first)");
-      draw(fetch_fragments(rw64(reg::kFragAddrLo), rw(reg::kFragCount)));
+      const std::vector<Fragment> f = fetch_fragments(rw64(reg::kFragAddrLo), rw(reg::kFragCount));
+      inside_->backend().draw(f.data(), f.size());
       return;
+    }
     case Command::kEndPass: end_pass(); return;
     case Command::kFrameOp: {
       if (rw(reg::kOpKind) >= kFrameOpKinds)
@@ -280,10 +282,6 @@ void ZbRopTlm::begin_pass(uint16_t bits) {
   in_pass_ = true;
 }
 
-void ZbRopTlm::draw(const std::vector<Fragment>& fragments) {
-  inside_->backend().draw(fragments.data(), fragments.size());
-}
-
 void ZbRopTlm::end_pass() {
   if (!in_pass_) throw CommandError{ErrorCode::kOrder, "END_PASS outside a pass"};
   pass_stats_.push_back(inside_->backend().end_pass());
@@ -345,44 +343,67 @@ void ZbRopTlm::store_tile(int tx, int ty) {
 }
 
 // A whole frame from the trace in memory, through the same steps as the registers' commands.
+// RUN_STREAM's stream, read as the parse goes through the DMA port: in place where DMI covers
+// a read, else fetched into a buffer kept from read to read.
+class ZbRopTlm::StreamBytes final : public TraceBytes {
+ public:
+  StreamBytes(ZbRopTlm& rop, uint64_t addr, size_t size) : rop_(rop), addr_(addr), size_(size) {}
+  size_t size() const override { return size_; }
+  const uint8_t* read(size_t at, size_t n) override { return rop_.dma_read(addr_ + at, n); }
+
+ private:
+  ZbRopTlm& rop_;
+  uint64_t addr_;
+  size_t size_;
+};
+
+// The stream is run as it is read, a block of fragments at a time. A fault stops it and
+// abandons the frame: what came before it ran on the inside, but no tile reaches the
+// framebuffer in memory.
 void ZbRopTlm::run_stream() {
   if (in_pass_) throw CommandError{ErrorCode::kOrder, "RUN_STREAM inside a pass"};
-  if (rw(reg::kStreamBytes) > kMaxBuffer)
-    throw CommandError{ErrorCode::kBadSetup,
-                       fmt::format("STREAM_BYTES {} is above the model's {} MiB", rw(reg::kStreamBytes),
-                                   kMaxBuffer >> 20)};
-  // Fetched whole into a buffer kept from frame to frame: a DMI pointer may be taken back
-  // while the frame runs, so the stream is never read in place.
-  if (stream_cap_ < rw(reg::kStreamBytes)) {
-    stream_buf_.reset(new uint8_t[rw(reg::kStreamBytes)]);  // not zeroed: the fetch fills it
-    stream_cap_ = rw(reg::kStreamBytes);
-  }
-  dma_access(tlm::TLM_READ_COMMAND, rw64(reg::kStreamAddrLo), stream_buf_.get(), rw(reg::kStreamBytes));
-  const std::string_view bytes(reinterpret_cast<const char*>(stream_buf_.get()), rw(reg::kStreamBytes));
-  // The whole stream is checked first (a malformed one runs nothing), then run pass by pass:
-  // the model holds one pass's fragments at a time.
-  const std::string name = fmt::format("at 0x{:x}", rw64(reg::kStreamAddrLo));
+  StreamBytes bytes(*this, rw64(reg::kStreamAddrLo), rw(reg::kStreamBytes));
+  TraceScan scan;
+  scan.header = [this](const Trace& t) {
+    begin_frame(t.width, t.height, t.depth_bits, t.coverage_samples, t.wboit, t.clear_color);
+  };
+  scan.pass = [this](TracePass& p) {
+    for (const FrameOp& op : p.frame_ops) frame_op(op);
+    inside_->backend().label_pass(p.name);
+    begin_pass(pack_state(p.state));
+  };
+  scan.fragments = [this](const Fragment* f, size_t n) { inside_->backend().draw(f, n); };
+  scan.pass_end = [this] { end_pass(); };
+  scan.final_ops = [this](const std::vector<FrameOp>& ops) {
+    for (const FrameOp& op : ops) frame_op(op);
+  };
   try {
-    scan_trace(bytes, name, {}, {}, {});
+    scan_trace(bytes, fmt::format("at 0x{:x}", rw64(reg::kStreamAddrLo)), scan);
   } catch (const TraceError& e) {
+    abandon_frame();
     throw CommandError{ErrorCode::kBadStream, e.what(), uint32_t(e.byte)};
+  } catch (const CommandError&) {
+    abandon_frame();
+    throw;
   }
-  scan_trace(
-      bytes, name,
-      [this](const Trace& t) {
-        begin_frame(t.width, t.height, t.depth_bits, t.coverage_samples, t.wboit, t.clear_color);
-      },
-      [this](TracePass& p) {
-        for (const FrameOp& op : p.frame_ops) frame_op(op);
-        inside_->backend().label_pass(p.name);
-        begin_pass(pack_state(p.state));
-        draw(p.fragments);
-        end_pass();
-      },
-      [this](const std::vector<FrameOp>& ops) {
-        for (const FrameOp& op : ops) frame_op(op);
-      });
   end_frame();
+}
+
+// A pass broken off is ended on the inside (its counters dropped); no tile is stored.
+void ZbRopTlm::abandon_frame() {
+  if (in_pass_) inside_->backend().end_pass();
+  in_pass_ = false;
+  frame_open_ = false;
+}
+
+const uint8_t* ZbRopTlm::dma_read(uint64_t addr, size_t len) {
+  if (const uint8_t* p = port_.view(*dma.operator->(), qk_, tlm::TLM_READ_COMMAND, addr, len)) {
+    port_.charge(qk_, tlm::TLM_READ_COMMAND, len);
+    return p;
+  }
+  if (read_buf_.size() < len) read_buf_.resize(len);
+  dma_access(tlm::TLM_READ_COMMAND, addr, read_buf_.data(), len);
+  return read_buf_.data();
 }
 
 std::vector<Fragment> ZbRopTlm::fetch_fragments(uint64_t addr, uint64_t count) {

@@ -53,6 +53,7 @@ class ZbRopTlm : public sc_core::sc_module {
 
  private:
   struct CommandError;
+  class StreamBytes;
   void b_transport(tlm::tlm_generic_payload& tx, sc_core::sc_time& delay);
   unsigned transport_dbg(tlm::tlm_generic_payload& tx);
   void invalidate_dmi(sc_dt::uint64 start, sc_dt::uint64 end);
@@ -67,15 +68,18 @@ class ZbRopTlm : public sc_core::sc_module {
   void begin_frame(int width, int height, int depth_bits, int samples, const WboitFormat& wboit,
                    Rgba8 clear);
   void begin_pass(uint16_t state);
-  void draw(const std::vector<Fragment>& fragments);
   void end_pass();
   void frame_op(const FrameOp& op);
   void end_frame();
   void store_tile(int tx, int ty);
   void run_stream();
+  void abandon_frame();
   std::vector<Fragment> fetch_fragments(uint64_t addr, uint64_t count);
   void count_cycles();  // the inside's cycles since the last call, into local time
   void dma_access(tlm::tlm_command cmd, uint64_t addr, uint8_t* data, size_t len);
+  // Memory [addr, addr + len): in place where DMI covers it, else read into read_buf_; good
+  // until the next wait or read.
+  const uint8_t* dma_read(uint64_t addr, size_t len);
 
   RopTlmOptions options_;
   std::unique_ptr<RopInside> inside_;
@@ -92,8 +96,7 @@ class ZbRopTlm : public sc_core::sc_module {
   uint64_t frame_cycles_ = 0;
   DmaCounts frame_dma_;  // the port's counts when the frame began
   int width_ = 0, height_ = 0, depth_bits_ = 0, samples_ = 0;  // the open frame's
-  std::unique_ptr<uint8_t[]> stream_buf_;  // RUN_STREAM's stream, fetched; kept for the next
-  uint64_t stream_cap_ = 0;                // its size
+  std::vector<uint8_t> read_buf_;  // dma_read's without DMI, kept for the next
 
   // The command sequence's state.
   bool frame_open_ = false, in_pass_ = false;

@@ -15,6 +15,35 @@ bool DmaPort::dmi_covers(tlm::tlm_command cmd, uint64_t addr, size_t len) const 
   return cmd == tlm::TLM_READ_COMMAND ? dmi_.is_read_allowed() : dmi_.is_write_allowed();
 }
 
+void DmaPort::ask_dmi(tlm::tlm_fw_transport_if<>& fw, tlm::tlm_command cmd, uint64_t addr) {
+  tlm::tlm_generic_payload req;
+  req.set_command(cmd);
+  req.set_address(addr);
+  tlm::tlm_dmi d;
+  if (fw.get_direct_mem_ptr(req, d)) {
+    dmi_ = d;
+    dmi_valid_ = true;
+    ++counts_.dmi_grants;
+  }
+}
+
+void DmaPort::charge(tlm_utils::tlm_quantumkeeper& qk, tlm::tlm_command cmd, size_t len) {
+  const uint64_t beats = (len + kBusBytes - 1) / kBusBytes;
+  qk.inc((cmd == tlm::TLM_READ_COMMAND ? dmi_.get_read_latency() : dmi_.get_write_latency()) *
+         double(beats));
+  ++counts_.dmi_accesses;
+  counts_.bytes += len;
+}
+
+uint8_t* DmaPort::view(tlm::tlm_fw_transport_if<>& fw, tlm_utils::tlm_quantumkeeper& qk,
+                       tlm::tlm_command cmd, uint64_t addr, size_t len) {
+  if (!use_dmi_ || len == 0) return nullptr;
+  if (qk.need_sync()) qk.sync();
+  if (!dmi_covers(cmd, addr, len)) ask_dmi(fw, cmd, addr);
+  if (!dmi_covers(cmd, addr, len)) return nullptr;
+  return dmi_.get_dmi_ptr() + (addr - dmi_.get_start_address());
+}
+
 tlm::tlm_response_status DmaPort::access(tlm::tlm_fw_transport_if<>& fw,
                                          tlm_utils::tlm_quantumkeeper& qk, tlm::tlm_command cmd,
                                          uint64_t addr, uint8_t* data, size_t len,
@@ -23,12 +52,9 @@ tlm::tlm_response_status DmaPort::access(tlm::tlm_fw_transport_if<>& fw,
   while (len > 0) {
     if (use_dmi_ && dmi_covers(cmd, addr, len)) {
       uint8_t* p = dmi_.get_dmi_ptr() + (addr - dmi_.get_start_address());
+      charge(qk, cmd, len);
       if (read) std::memcpy(data, p, len);
       else std::memcpy(p, data, len);
-      const uint64_t beats = (len + kBusBytes - 1) / kBusBytes;
-      qk.inc((read ? dmi_.get_read_latency() : dmi_.get_write_latency()) * double(beats));
-      ++counts_.dmi_accesses;
-      counts_.bytes += len;
       if (qk.need_sync()) qk.sync();
       return tlm::TLM_OK_RESPONSE;
     }
@@ -44,17 +70,7 @@ tlm::tlm_response_status DmaPort::access(tlm::tlm_fw_transport_if<>& fw,
       return tx.get_response_status();
     }
     counts_.bytes += n;
-    if (use_dmi_ && tx.is_dmi_allowed() && !dmi_covers(cmd, addr, 1)) {
-      tlm::tlm_generic_payload req;
-      req.set_command(cmd);
-      req.set_address(addr);
-      tlm::tlm_dmi d;
-      if (fw.get_direct_mem_ptr(req, d)) {
-        dmi_ = d;
-        dmi_valid_ = true;
-        ++counts_.dmi_grants;
-      }
-    }
+    if (use_dmi_ && tx.is_dmi_allowed() && !dmi_covers(cmd, addr, 1)) ask_dmi(fw, cmd, addr);
     if (qk.need_sync()) qk.sync();
     addr += n;
     data += n;

@@ -49,12 +49,21 @@ class DmaPort {
   tlm::tlm_response_status access(tlm::tlm_fw_transport_if<>& fw, tlm_utils::tlm_quantumkeeper& qk,
                                   tlm::tlm_command cmd, uint64_t addr, uint8_t* data, size_t len,
                                   uint64_t& failed);
+  // Memory [addr, addr + len) in place, for `cmd`, through a DMI pointer held or asked for now;
+  // null where DMI is off or not granted over the whole range. The pointer is good until the
+  // initiator next waits (an invalidation may come then): it syncs first, if the quantum asks,
+  // never after. The caller charges the bytes it moves through it.
+  uint8_t* view(tlm::tlm_fw_transport_if<>& fw, tlm_utils::tlm_quantumkeeper& qk,
+                tlm::tlm_command cmd, uint64_t addr, size_t len);
+  // `len` bytes moved through a view: timed and counted as access() times a DMI access.
+  void charge(tlm_utils::tlm_quantumkeeper& qk, tlm::tlm_command cmd, size_t len);
   // The target's backward call: a pointer overlapping [start, end] is dropped.
   void invalidate(uint64_t start, uint64_t end);
   const DmaCounts& counts() const { return counts_; }
 
  private:
   bool dmi_covers(tlm::tlm_command cmd, uint64_t addr, size_t len) const;
+  void ask_dmi(tlm::tlm_fw_transport_if<>& fw, tlm::tlm_command cmd, uint64_t addr);
 
   uint32_t burst_;
   bool use_dmi_;

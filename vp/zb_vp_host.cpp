@@ -20,7 +20,9 @@ namespace {
 constexpr uint64_t kAlign = 1u << 20;
 uint64_t align_up(uint64_t n) { return (n + kAlign - 1) / kAlign * kAlign; }
 
+// The memory the job's stream or a pass's fragments take at most.
 uint64_t stream_bytes(const HostJob& j) {
+  if (!j.trace) return trace_bound(*j.scene, *j.plan);
   if (j.programming == Programming::kStream) return serialized_size(*j.trace);
   uint64_t most = 0;
   for (const TracePass& p : j.trace->passes) most = std::max<uint64_t>(most, p.fragments.size());
@@ -32,7 +34,7 @@ uint64_t stream_bytes(const HostJob& j) {
 HostLayout layout_for(const std::vector<HostJob>& jobs) {
   uint64_t pixels = 1, stream = 1;
   for (const HostJob& j : jobs) {
-    pixels = std::max<uint64_t>(pixels, uint64_t(j.trace->width) * uint64_t(j.trace->height));
+    pixels = std::max<uint64_t>(pixels, uint64_t(j.width()) * uint64_t(j.height()));
     stream = std::max(stream, stream_bytes(j));
   }
   HostLayout l;
@@ -68,25 +70,17 @@ void ZbVpHost::run_job(HostJob& job) {
   const auto wall = std::chrono::steady_clock::now();
   qk_.sync();
   job.start = sc_core::sc_time_stamp();
-  const Trace& t = *job.trace;
   write_reg(job, reg::kFbAddrLo, uint32_t(layout_.fb));
   write_reg(job, reg::kFbAddrHi, uint32_t(layout_.fb >> 32));
-  write_reg(job, reg::kFbStride, uint32_t(t.width) * 4);
+  write_reg(job, reg::kFbStride, uint32_t(job.width()) * 4);
   write_reg(job, reg::kDepthAddrLo, uint32_t(layout_.depth));
   write_reg(job, reg::kDepthAddrHi, uint32_t(layout_.depth >> 32));
-  write_reg(job, reg::kDepthStride, uint32_t(t.width) * 4);
-  if (job.programming == Programming::kStream) {
-    std::string bytes = serialize_trace(t);
-    mem_access(tlm::TLM_WRITE_COMMAND, layout_.stream, reinterpret_cast<uint8_t*>(bytes.data()),
-               bytes.size());
-    write_reg(job, reg::kStreamAddrLo, uint32_t(layout_.stream));
-    write_reg(job, reg::kStreamAddrHi, uint32_t(layout_.stream >> 32));
-    write_reg(job, reg::kStreamBytes, uint32_t(bytes.size()));
-    command(job, uint32_t(Command::kRunStream));
-  } else {
+  write_reg(job, reg::kDepthStride, uint32_t(job.width()) * 4);
+  if (job.programming == Programming::kStream)
+    write_stream(job);
+  else
     program_registers(job);
-  }
-  const size_t n = size_t(t.width) * size_t(t.height);
+  const size_t n = size_t(job.width()) * size_t(job.height());
   job.passes = read_reg(job, reg::kPasses);
   job.fragments_in = read_reg64(job, reg::kFragmentsInLo);
   job.cycles = read_reg64(job, reg::kCyclesLo);
@@ -103,9 +97,40 @@ void ZbVpHost::run_job(HostJob& job) {
   job.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall).count();
 }
 
+// The trace into memory, in place where the memory grants DMI (else made here and written in
+// bursts), then RUN_STREAM.
+void ZbVpHost::write_stream(HostJob& job) {
+  const size_t room = stream_bytes(job);
+  uint8_t* at = mem_dma_.view(*mem.operator->(), qk_, tlm::TLM_WRITE_COMMAND, layout_.stream, room);
+  std::unique_ptr<uint8_t[]> own;  // not zeroed: only what is written is touched
+  if (!at) {
+    own.reset(new uint8_t[room]);
+    at = own.get();
+  }
+  TraceCounts c;
+  if (job.trace) {
+    serialize_trace(*job.trace, at);
+    c.bytes = room;
+    c.passes = job.trace->passes.size();
+    for (const TracePass& p : job.trace->passes) c.fragments += p.fragments.size();
+  } else {
+    c = serialize_trace(*job.scene, *job.plan, at, room);
+  }
+  if (own) mem_access(tlm::TLM_WRITE_COMMAND, layout_.stream, at, c.bytes);
+  else mem_dma_.charge(qk_, tlm::TLM_WRITE_COMMAND, c.bytes);
+  job.sent_passes = c.passes;
+  job.sent_fragments = c.fragments;
+  write_reg(job, reg::kStreamAddrLo, uint32_t(layout_.stream));
+  write_reg(job, reg::kStreamAddrHi, uint32_t(layout_.stream >> 32));
+  write_reg(job, reg::kStreamBytes, uint32_t(c.bytes));
+  command(job, uint32_t(Command::kRunStream));
+}
+
 // The frame command by command: the same steps RUN_STREAM takes from the trace.
 void ZbVpHost::program_registers(HostJob& job) {
   const Trace& t = *job.trace;
+  job.sent_passes = t.passes.size();
+  for (const TracePass& p : t.passes) job.sent_fragments += p.fragments.size();
   const auto op = [&](const FrameOp& o) {
     write_reg(job, reg::kOpKind, uint32_t(o.kind));
     write_reg(job, reg::kOpColor, pack_rgba(o.value));

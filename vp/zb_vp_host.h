@@ -25,8 +25,14 @@ enum class Programming { kStream, kRegisters };
 
 struct HostJob {
   int rop = 0;                 // which ROP (its socket and interrupt)
+  // The frame: a trace, or (stream programming only) a scene's fragments and a plan, whose
+  // trace the host writes straight into memory as the feeder makes it.
   const Trace* trace = nullptr;
+  const RasterizedScene* scene = nullptr;
+  const PassPlan* plan = nullptr;
   Programming programming = Programming::kStream;
+  int width() const { return trace ? trace->width : scene->viewport.width; }
+  int height() const { return trace ? trace->height : scene->viewport.height; }
   // Filled in by the run:
   std::vector<Rgba8> frame;    // read back from the framebuffer in memory
   std::vector<uint32_t> depth;
@@ -36,6 +42,7 @@ struct HostJob {
   uint64_t rop_transactions = 0;  // register accesses
   // The ROP's counters, read from its registers after the frame.
   uint64_t passes = 0, fragments_in = 0, cycles = 0, dma_transactions = 0;
+  uint64_t sent_passes = 0, sent_fragments = 0;  // what the host gave it
   double wall_ms = 0;
 };
 
@@ -57,6 +64,7 @@ class ZbVpHost : public sc_core::sc_module {
  private:
   void run();
   void run_job(HostJob& job);
+  void write_stream(HostJob& job);
   void program_registers(HostJob& job);
   uint32_t command(HostJob& job, uint32_t cmd);  // writes COMMAND, waits, returns STATUS
   void write_reg(HostJob& job, uint64_t addr, uint32_t v);

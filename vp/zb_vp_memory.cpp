@@ -1,15 +1,31 @@
 #include "zb_vp_memory.h"
 
+#include <algorithm>
 #include <cstdlib>
+#include <sys/mman.h>
 #include <cstring>
 #include <new>
 
 namespace zb::vp {
 
+namespace {
+
+uint8_t* map_zeroed(uint64_t bytes) {
+  void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE,
+                 -1, 0);
+  if (p == MAP_FAILED) throw std::bad_alloc();
+  madvise(p, bytes, MADV_HUGEPAGE);  // advice only: refused where the system has none
+  return static_cast<uint8_t*>(p);
+}
+
+}  // namespace
+
+void ZbVpMemory::Unmap::operator()(uint8_t* p) const { munmap(p, bytes); }
+
 ZbVpMemory::ZbVpMemory(sc_core::sc_module_name name, const MemoryOptions& options)
     : sc_module(name), socket("socket"), options_(options),
-      mem_(static_cast<uint8_t*>(std::calloc(options.bytes, 1)), std::free), bytes_(options.bytes) {
-  if (!mem_) throw std::bad_alloc();
+      mem_(map_zeroed(std::max<uint64_t>(options.bytes, 1)), Unmap{std::max<uint64_t>(options.bytes, 1)}),
+      bytes_(options.bytes) {
   socket.register_b_transport(this, &ZbVpMemory::b_transport);
   socket.register_transport_dbg(this, &ZbVpMemory::transport_dbg);
   socket.register_get_direct_mem_ptr(this, &ZbVpMemory::get_direct_mem_ptr);

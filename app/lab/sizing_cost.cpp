@@ -112,12 +112,17 @@ void CostCounter::begin_pass(const RopState& state) {
 // The driver streams each tile's fragments in pass order (a stable binning).
 void CostCounter::draw(const Fragment* fragments, size_t count) {
   inner_.draw(fragments, count);
+  // The issue schedule tells pixels apart by key. The lab's two-buffer schedule runs tiles
+  // together and needs frame-wide keys; the pass schedule runs a tile at a time, and the
+  // tile's own keys keep its tables small.
+  const bool frame_keys = scope_ == CostScope::kLab;
   for (Grid& g : grids_)
     for (size_t i = 0; i < count; ++i) {
       const Fragment& f = fragments[i];
       const size_t t = size_t(f.y / g.size) * size_t(g.columns) + size_t(f.x / g.size);
       if (g.stream[t].empty()) g.touched.push_back(uint32_t(t));
-      g.stream[t].push_back(uint32_t(size_t(f.y) * size_t(width_) + size_t(f.x)));
+      g.stream[t].push_back(frame_keys ? uint32_t(size_t(f.y) * size_t(width_) + size_t(f.x))
+                                       : uint32_t(f.y % g.size * g.size + f.x % g.size));
     }
 }
 

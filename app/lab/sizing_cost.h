@@ -138,7 +138,7 @@ class CostCounter final : public Backend {
   // One tile size's binning of the current pass: each tile's stream, as frame pixel indices.
   struct Grid {
     int size = 0, columns = 0;
-    std::vector<std::vector<uint32_t>> stream;  // per tile
+    std::vector<std::vector<uint32_t>> stream;  // per tile: its fragments' pixel keys (draw)
     std::vector<uint32_t> touched;  // tiles with a fragment, in first-touch order
     TileStates states;
     // The tile schedule's: the frame's planes per tile, and the group's passes with the tiles

@@ -1,6 +1,8 @@
 #include "trace.h"
 
+#include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <cstring>
 #include <filesystem>
 #include <functional>
@@ -10,6 +12,7 @@
 #include <fmt/core.h>
 
 #include "geometry/geometry.h"
+#include "raster/internal/edge_functions.h"
 #include "atomic_file.h"
 
 namespace zb {
@@ -26,55 +29,119 @@ constexpr uint32_t kMaxFrameOps = 64;
 constexpr uint32_t kMaxPasses = 1024;
 constexpr uint32_t kMaxNameLength = 256;
 
-void put(std::string& out, const void* p, size_t n) { out.append(static_cast<const char*>(p), n); }
-void put_u8(std::string& out, uint8_t v) { out.push_back(static_cast<char>(v)); }
-void put_u16(std::string& out, uint16_t v) { for (int i = 0; i < 2; ++i) put_u8(out, uint8_t(v >> (8 * i))); }
-void put_u32(std::string& out, uint32_t v) { for (int i = 0; i < 4; ++i) put_u8(out, uint8_t(v >> (8 * i))); }
-void put_u64(std::string& out, uint64_t v) { for (int i = 0; i < 8; ++i) put_u8(out, uint8_t(v >> (8 * i))); }
+// Writes little-endian fields at a cursor into a buffer sized by serialized_size.
+class Writer {
+ public:
+  explicit Writer(uint8_t* out) : p_(out) {}
+  void bytes(const void* src, size_t n) {
+    std::memcpy(p_, src, n);
+    p_ += n;
+  }
+  void u(uint64_t v, int n) {
+    for (int i = 0; i < n; ++i) *p_++ = uint8_t(v >> (8 * i));
+  }
+  uint8_t* at() { return p_; }
+  void skip(size_t n) { p_ += n; }
+
+ private:
+  uint8_t* p_;
+};
 
 // Reads little-endian fields, with the offset of each for error messages.
 class Reader {
  public:
-  Reader(std::string_view bytes, const std::string& name) : bytes_(bytes), name_(name) {}
+  Reader(TraceBytes& bytes, const std::string& name) : bytes_(bytes), name_(name) {}
 
   [[noreturn]] void fail(size_t at, const std::string& what) const {
     throw TraceError(fmt::format("trace '{}': byte {}: {}", name_, at, what), at);
   }
   size_t offset() const { return pos_; }
   size_t remaining() const { return bytes_.size() - pos_; }
-  uint64_t get(int n, const char* what) {
-    if (remaining() < size_t(n)) fail(pos_, fmt::format("truncated, expected {}", what));
-    uint64_t v = 0;
-    for (int i = 0; i < n; ++i) v |= uint64_t(uint8_t(bytes_[pos_ + size_t(i)])) << (8 * i);
-    pos_ += size_t(n);
-    return v;
-  }
+  // n bytes, valid until the next call.
   const uint8_t* take(size_t n, const char* what) {
     if (remaining() < n) fail(pos_, fmt::format("truncated, expected {}", what));
-    const auto* p = reinterpret_cast<const uint8_t*>(bytes_.data() + pos_);
+    const uint8_t* p = bytes_.read(pos_, n);
     pos_ += n;
     return p;
   }
+  uint64_t get(int n, const char* what) {
+    const uint8_t* p = take(size_t(n), what);
+    uint64_t v = 0;
+    for (int i = 0; i < n; ++i) v |= uint64_t(p[i]) << (8 * i);
+    return v;
+  }
   std::string get_string(size_t n, const char* what) {
-    if (remaining() < n) fail(pos_, fmt::format("truncated, expected {}", what));
-    std::string s(bytes_.substr(pos_, n));
-    pos_ += n;
-    return s;
+    const uint8_t* p = take(n, what);
+    return std::string(reinterpret_cast<const char*>(p), n);
   }
 
  private:
-  std::string_view bytes_;
+  TraceBytes& bytes_;
   const std::string& name_;
   size_t pos_ = 0;
 };
 
-void put_ops(std::string& out, const std::vector<FrameOp>& ops) {
-  put_u32(out, uint32_t(ops.size()));
-  for (const FrameOp& op : ops) {
-    put_u8(out, uint8_t(op.kind));
-    for (uint8_t c : {op.value.r, op.value.g, op.value.b, op.value.a}) put_u8(out, c);
-    put_u32(out, op.depth);
+// A trace already in memory.
+class ViewBytes final : public TraceBytes {
+ public:
+  explicit ViewBytes(std::string_view bytes) : bytes_(bytes) {}
+  size_t size() const override { return bytes_.size(); }
+  const uint8_t* read(size_t at, size_t) override {
+    return reinterpret_cast<const uint8_t*>(bytes_.data() + at);
   }
+
+ private:
+  std::string_view bytes_;
+};
+
+void put_ops(Writer& w, const std::vector<FrameOp>& ops) {
+  w.u(ops.size(), 4);
+  for (const FrameOp& op : ops) {
+    w.u(uint8_t(op.kind), 1);
+    for (uint8_t c : {op.value.r, op.value.g, op.value.b, op.value.a}) w.u(c, 1);
+    w.u(op.depth, 4);
+  }
+}
+
+constexpr size_t kHeaderBytes = sizeof kMagic + 4 * 5 + 3 + 4 + 4;  // through the pass count
+size_t ops_bytes(const std::vector<FrameOp>& ops) { return 4 + 9 * ops.size(); }
+// A pass's name, operations and state: what comes before its fragment count.
+size_t pass_head_bytes(const TracePass& p) { return 4 + p.name.size() + ops_bytes(p.frame_ops) + 2; }
+
+void put_header(Writer& w, const Trace& t, size_t passes) {
+  w.bytes(kMagic, sizeof kMagic);
+  for (uint32_t v : {kVersion, uint32_t(t.width), uint32_t(t.height), uint32_t(t.depth_bits),
+                     uint32_t(t.coverage_samples)})
+    w.u(v, 4);
+  for (int v : {t.wboit.acc_bits, t.wboit.rev_bits, t.wboit.weight_bits}) w.u(uint8_t(v), 1);
+  for (uint8_t c : {t.clear_color.r, t.clear_color.g, t.clear_color.b, t.clear_color.a}) w.u(c, 1);
+  w.u(passes, 4);
+}
+
+void put_pass_head(Writer& w, const TracePass& p) {
+  w.u(p.name.size(), 4);
+  w.bytes(p.name.data(), p.name.size());
+  put_ops(w, p.frame_ops);
+  w.u(pack_state(p.state), 2);
+}
+
+// The pixels of `t`'s vertex box within the frame: where its pixel centres and coverage
+// samples can lie.
+size_t box_pixels(const ScreenTriangle& t, const Viewport& vp) {
+  int64_t lo[2] = {INT64_MAX, INT64_MAX}, hi[2] = {INT64_MIN, INT64_MIN};
+  for (const ScreenVertex& v : t.v) {
+    lo[0] = std::min<int64_t>(lo[0], v.x), hi[0] = std::max<int64_t>(hi[0], v.x);
+    lo[1] = std::min<int64_t>(lo[1], v.y), hi[1] = std::max<int64_t>(hi[1], v.y);
+  }
+  const int64_t size[2] = {vp.width, vp.height};
+  size_t n = 1;
+  for (int a = 0; a < 2; ++a) {
+    const int64_t from = std::max<int64_t>(0, edge::floor_div(lo[a], kSubpixelOne));
+    const int64_t to = std::min<int64_t>(size[a] - 1, edge::floor_div(hi[a], kSubpixelOne));
+    if (to < from) return 0;
+    n *= size_t(to - from + 1);
+  }
+  return n;
 }
 
 // `kinds`: the frame operation codes the file's version has.
@@ -97,9 +164,8 @@ std::vector<FrameOp> get_ops(Reader& r, const std::string& where, uint64_t kinds
   return ops;
 }
 
-}  // namespace
-
-Trace make_trace(const RasterizedScene& rs, const PassPlan& plan) {
+// A trace of `rs` without its passes.
+Trace trace_header(const RasterizedScene& rs) {
   Trace t;
   t.width = rs.viewport.width;
   t.height = rs.viewport.height;
@@ -107,17 +173,34 @@ Trace make_trace(const RasterizedScene& rs, const PassPlan& plan) {
   t.coverage_samples = rs.viewport.coverage_samples;
   t.wboit = rs.viewport.wboit;
   t.clear_color = rs.background;
-  for (const PassState& p : plan.passes) {
-    TracePass tp{p.name, {}, p.rop, pass_fragments(rs, p)};
-    for (const FrameOp& op : p.frame_ops) tp.frame_ops.push_back(resolve_op(op, rs.background));
-    t.passes.push_back(std::move(tp));
-  }
-  for (const FrameOp& op : plan.final_ops) t.final_ops.push_back(resolve_op(op, rs.background));
+  return t;
+}
+
+std::vector<FrameOp> resolve_ops(const std::vector<FrameOp>& ops, Rgba8 background) {
+  std::vector<FrameOp> out;
+  for (const FrameOp& op : ops) out.push_back(resolve_op(op, background));
+  return out;
+}
+
+}  // namespace
+
+Trace make_trace(const RasterizedScene& rs, const PassPlan& plan) {
+  Trace t = trace_header(rs);
+  for (const PassState& p : plan.passes)
+    t.passes.push_back(TracePass{p.name, resolve_ops(p.frame_ops, rs.background), p.rop,
+                                 pass_fragments(rs, p)});
+  t.final_ops = resolve_ops(plan.final_ops, rs.background);
   return t;
 }
 
 void encode_fragment(std::string& out, const Fragment& f) {
-  uint8_t rec[kTraceFragmentBytes] = {};
+  uint8_t rec[kTraceFragmentBytes];
+  encode_fragment(rec, f);
+  out.append(reinterpret_cast<const char*>(rec), sizeof rec);
+}
+
+void encode_fragment(uint8_t* rec, const Fragment& f) {
+  std::memset(rec, 0, kTraceFragmentBytes);
   const auto set = [&rec](int at, uint64_t v, int n) {
     for (int i = 0; i < n; ++i) rec[at + i] = uint8_t(v >> (8 * i));
   };
@@ -128,7 +211,6 @@ void encode_fragment(std::string& out, const Fragment& f) {
   rec[12] = f.front ? 1 : 0;
   rec[13] = f.coverage;  // flags bits 8..15
   set(16, f.prim, 4);
-  out.append(reinterpret_cast<const char*>(rec), sizeof rec);
 }
 
 bool decode_fragment(const uint8_t* rec, int width, int height, int depth_bits, int samples,
@@ -163,34 +245,88 @@ bool decode_fragment(const uint8_t* rec, int width, int height, int depth_bits, 
 }
 
 std::string serialize_trace(const Trace& t) {
-  std::string out;
-  out.reserve(serialized_size(t));
-  put(out, kMagic, sizeof kMagic);
-  put_u32(out, kVersion);
-  put_u32(out, uint32_t(t.width));
-  put_u32(out, uint32_t(t.height));
-  put_u32(out, uint32_t(t.depth_bits));
-  put_u32(out, uint32_t(t.coverage_samples));
-  for (int v : {t.wboit.acc_bits, t.wboit.rev_bits, t.wboit.weight_bits}) put_u8(out, uint8_t(v));
-  for (uint8_t c : {t.clear_color.r, t.clear_color.g, t.clear_color.b, t.clear_color.a}) put_u8(out, c);
-  put_u32(out, uint32_t(t.passes.size()));
-  for (const TracePass& p : t.passes) {
-    put_u32(out, uint32_t(p.name.size()));
-    put(out, p.name.data(), p.name.size());
-    put_ops(out, p.frame_ops);
-    put_u16(out, pack_state(p.state));
-    put_u64(out, p.fragments.size());
-    for (const Fragment& f : p.fragments) encode_fragment(out, f);
-  }
-  put_ops(out, t.final_ops);
+  std::string out(serialized_size(t), '\0');
+  serialize_trace(t, reinterpret_cast<uint8_t*>(out.data()));
   return out;
 }
 
+void serialize_trace(const Trace& t, uint8_t* out) {
+  Writer w(out);
+  put_header(w, t, t.passes.size());
+  for (const TracePass& p : t.passes) {
+    put_pass_head(w, p);
+    w.u(p.fragments.size(), 8);
+    for (const Fragment& f : p.fragments) {
+      encode_fragment(w.at(), f);
+      w.skip(kTraceFragmentBytes);
+    }
+  }
+  put_ops(w, t.final_ops);
+}
+
+TraceCounts serialize_trace(const RasterizedScene& rs, const PassPlan& plan, uint8_t* out,
+                            size_t capacity) {
+  Writer w(out);
+  const auto room = [&](size_t n) {
+    if (size_t(w.at() - out) + n > capacity)
+      throw std::logic_error(fmt::format("serialize_trace: the trace outgrows its {} bytes", capacity));
+  };
+  const Trace header = trace_header(rs);
+  room(kHeaderBytes);
+  put_header(w, header, plan.passes.size());
+  TraceCounts c;
+  TracePass head;
+  for (const PassState& p : plan.passes) {
+    head.name = p.name;
+    head.frame_ops = resolve_ops(p.frame_ops, rs.background);
+    head.state = p.rop;
+    room(pass_head_bytes(head) + 8);
+    put_pass_head(w, head);
+    uint8_t* count_at = w.at();
+    w.skip(8);
+    uint64_t n = 0;
+    feed_stored_pass(rs, p, [&](const Fragment* f, size_t k) {
+      room(k * kTraceFragmentBytes);
+      for (size_t i = 0; i < k; ++i) {
+        encode_fragment(w.at(), f[i]);
+        w.skip(kTraceFragmentBytes);
+      }
+      n += k;
+    });
+    Writer(count_at).u(n, 8);
+    ++c.passes;
+    c.fragments += n;
+  }
+  const std::vector<FrameOp> final_ops = resolve_ops(plan.final_ops, rs.background);
+  room(ops_bytes(final_ops));
+  put_ops(w, final_ops);
+  c.bytes = size_t(w.at() - out);
+  return c;
+}
+
+size_t trace_bound(const RasterizedScene& rs, const PassPlan& plan) {
+  const size_t stored = std::max(rs.fragments.size(), rs.line_fragments.size());
+  size_t boxes = 0;  // computed once, for the first coverage pass
+  size_t n = kHeaderBytes + ops_bytes(resolve_ops(plan.final_ops, rs.background));
+  for (const PassState& p : plan.passes) {
+    size_t most = stored;
+    if (is_coverage_pass(p.rop)) {
+      if (boxes == 0) {
+        for (const ScreenTriangle& t : rs.triangles) boxes += box_pixels(t, rs.viewport);
+        boxes = std::max<size_t>(boxes, 1);
+      }
+      most = std::max(most, boxes);
+    }
+    n += pass_head_bytes(TracePass{p.name, resolve_ops(p.frame_ops, rs.background), p.rop, {}}) +
+         8 + most * kTraceFragmentBytes;
+  }
+  return n;
+}
+
 size_t serialized_size(const Trace& t) {
-  const auto ops = [](const std::vector<FrameOp>& v) { return 4 + 9 * v.size(); };
-  size_t n = sizeof kMagic + 4 * 5 + 3 + 4 + 4 + ops(t.final_ops);
+  size_t n = kHeaderBytes + ops_bytes(t.final_ops);
   for (const TracePass& p : t.passes)
-    n += 4 + p.name.size() + ops(p.frame_ops) + 2 + 8 + p.fragments.size() * kTraceFragmentBytes;
+    n += pass_head_bytes(p) + 8 + p.fragments.size() * kTraceFragmentBytes;
   return n;
 }
 
@@ -198,10 +334,12 @@ std::string write_trace(const std::string& path, const Trace& trace) {
   return write_file_atomic(path, serialize_trace(trace));
 }
 
-void scan_trace(std::string_view bytes, const std::string& name,
-                const std::function<void(const Trace&)>& on_header,
-                const std::function<void(TracePass&)>& on_pass,
-                const std::function<void(const std::vector<FrameOp>&)>& on_final) {
+void scan_trace(std::string_view bytes, const std::string& name, const TraceScan& scan) {
+  ViewBytes view(bytes);
+  scan_trace(view, name, scan);
+}
+
+void scan_trace(TraceBytes& bytes, const std::string& name, const TraceScan& scan) {
   Reader r(bytes, name);
   if (r.get_string(sizeof kMagic, "the magic 'ZBTRACE'") != std::string(kMagic, sizeof kMagic))
     r.fail(0, "not a zblend trace (bad magic)");
@@ -249,8 +387,9 @@ void scan_trace(std::string_view bytes, const std::string& name,
   const uint64_t passes = r.get(4, "the pass count");
   if (passes > kMaxPasses)
     r.fail(at_passes, fmt::format("{} passes is more than {}", passes, kMaxPasses));
-  if (on_header) on_header(t);
+  if (scan.header) scan.header(t);
   TracePass pass;  // one pass at a time, its buffers kept for the next
+  std::vector<Fragment> block(scan.pass && !scan.fragments ? 0 : kTraceReadRecords);
   for (uint64_t p = 0; p < passes; ++p) {
     const size_t at_name = r.offset();
     const uint64_t len = r.get(4, "a pass name length");
@@ -267,32 +406,41 @@ void scan_trace(std::string_view bytes, const std::string& name,
     if (count > r.remaining() / kTraceFragmentBytes)
       r.fail(at_count, fmt::format("pass {}: {} fragments announced, {} bytes left", p + 1, count,
                                    r.remaining()));
-    // Without on_pass the fragments are only checked: nothing is kept.
-    Fragment scratch;
-    pass.fragments.resize(on_pass ? size_t(count) : 0);
-    for (uint64_t i = 0; i < count; ++i) {
+    // Into the pass whole, or block by block to scan.fragments; without either only checked.
+    const bool whole = scan.pass && !scan.fragments;
+    pass.fragments.resize(whole ? size_t(count) : 0);
+    if (!whole && scan.pass) scan.pass(pass);
+    for (uint64_t i = 0; i < count;) {
+      const size_t n = size_t(std::min<uint64_t>(count - i, kTraceReadRecords));
       const size_t at = r.offset();
-      const uint8_t* rec = r.take(kTraceFragmentBytes, "a fragment");
-      Fragment& f = on_pass ? pass.fragments[i] : scratch;
-      if (!decode_fragment(rec, t.width, t.height, t.depth_bits, t.coverage_samples, f)) {
-        std::string why;  // again, for the message (off the per-fragment path)
-        decode_fragment(rec, t.width, t.height, t.depth_bits, t.coverage_samples, f, &why);
-        r.fail(at, why);
+      const uint8_t* records = r.take(n * kTraceFragmentBytes, "a fragment");
+      Fragment* out = whole ? &pass.fragments[size_t(i)] : block.data();
+      for (size_t k = 0; k < n; ++k) {
+        const uint8_t* rec = records + k * kTraceFragmentBytes;
+        if (!decode_fragment(rec, t.width, t.height, t.depth_bits, t.coverage_samples, out[k])) {
+          std::string why;  // again, for the message (off the per-fragment path)
+          decode_fragment(rec, t.width, t.height, t.depth_bits, t.coverage_samples, out[k], &why);
+          r.fail(at + k * kTraceFragmentBytes, why);
+        }
       }
+      if (scan.fragments) scan.fragments(out, n);
+      i += n;
     }
-    if (on_pass) on_pass(pass);
+    if (whole) scan.pass(pass);
+    if (scan.fragments && scan.pass_end) scan.pass_end();
   }
   const std::vector<FrameOp> final_ops = get_ops(r, "after the last pass", op_kinds);
   if (r.remaining() != 0) r.fail(r.offset(), fmt::format("{} bytes after the last pass", r.remaining()));
-  if (on_final) on_final(final_ops);
+  if (scan.final_ops) scan.final_ops(final_ops);
 }
 
 Trace parse_trace(std::string_view bytes, const std::string& name) {
   Trace t;
-  scan_trace(
-      bytes, name, [&t](const Trace& header) { t = header; },
-      [&t](TracePass& p) { t.passes.push_back(std::move(p)); },
-      [&t](const std::vector<FrameOp>& ops) { t.final_ops = ops; });
+  TraceScan scan;
+  scan.header = [&t](const Trace& header) { t = header; };
+  scan.pass = [&t](TracePass& p) { t.passes.push_back(std::move(p)); };
+  scan.final_ops = [&t](const std::vector<FrameOp>& ops) { t.final_ops = ops; };
+  scan_trace(bytes, name, scan);
   return t;
 }
 

@@ -2,6 +2,7 @@
 // reproduced from the file alone. Format in docs/datapath.md, "Trace files".
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -41,6 +42,7 @@ struct TraceError : std::runtime_error {
 // One fragment record of a trace ("Trace files": 20 bytes), the unit a fragment stream in memory
 // is made of as well (the virtual platform's DRAW command, docs/systemc.md).
 constexpr size_t kTraceFragmentBytes = 20;
+void encode_fragment(uint8_t* rec, const Fragment& f);  // rec[0, kTraceFragmentBytes)
 void encode_fragment(std::string& out, const Fragment& f);
 // Decodes `rec` and checks it against the frame (inside width x height, depth within
 // depth_bits, coverage at most `samples`, no reserved flag); false, with what is wrong in `why`
@@ -56,15 +58,50 @@ std::string write_trace(const std::string& path, const Trace& trace);
 std::string serialize_trace(const Trace& trace);
 // serialize_trace(trace).size(), without making it.
 size_t serialized_size(const Trace& trace);
+// The same bytes into out[0, serialized_size(trace)): a buffer of the caller's, or memory in place.
+void serialize_trace(const Trace& trace, uint8_t* out);
 
-// Reads and validates a trace pass by pass, as it goes: the header (a Trace without passes),
-// each pass (valid until the next call, which reuses its buffers unless it was moved from), the
-// final operations. Throws
-// TraceError at the first fault, after the calls for what came before it.
-void scan_trace(std::string_view bytes, const std::string& name,
-                const std::function<void(const Trace&)>& on_header,
-                const std::function<void(TracePass&)>& on_pass,
-                const std::function<void(const std::vector<FrameOp>&)>& on_final);
+// What a serialised trace holds.
+struct TraceCounts {
+  size_t bytes = 0;
+  uint64_t passes = 0, fragments = 0;
+};
+// serialize_trace(make_trace(rs, plan)) without the Trace: each pass's fragments encoded into
+// `out` as the feeder hands them over, the same bytes. `out` holds `capacity` bytes, at least
+// trace_bound(rs, plan) (std::logic_error, having written no byte past it, if not).
+TraceCounts serialize_trace(const RasterizedScene& rs, const PassPlan& plan, uint8_t* out,
+                            size_t capacity);
+// An upper bound of that trace's bytes, without running the feeder: a pass draws at most the
+// stored fragments (triangles or edges), a coverage pass at most the pixels of its triangles'
+// boxes.
+size_t trace_bound(const RasterizedScene& rs, const PassPlan& plan);
+
+// Where scan_trace reads a trace from: bytes [0, size()), read in order. A pointer read()
+// returns stays valid until the next call; read() may throw (scan_trace passes it on).
+class TraceBytes {
+ public:
+  virtual ~TraceBytes() = default;
+  virtual size_t size() const = 0;
+  virtual const uint8_t* read(size_t at, size_t n) = 0;
+};
+
+// What scan_trace calls as it reads: the header (a Trace without passes); each pass (valid
+// until the next call, which reuses its buffers unless it was moved from); the final
+// operations. With `fragments` set, each pass's fragments go to it instead, block by block as
+// they are read (a block valid until the next call): after `pass` (its fragments empty), then
+// `pass_end`. Any may be empty.
+struct TraceScan {
+  std::function<void(const Trace&)> header;
+  std::function<void(TracePass&)> pass;
+  std::function<void(const Fragment*, size_t)> fragments;
+  std::function<void()> pass_end;
+  std::function<void(const std::vector<FrameOp>&)> final_ops;
+};
+// Reads and validates a trace as it goes, the calls for what came before a fault made; throws
+// TraceError at the fault. Fragments are read in blocks of at most kTraceReadRecords.
+constexpr size_t kTraceReadRecords = 4096;
+void scan_trace(TraceBytes& bytes, const std::string& name, const TraceScan& scan);
+void scan_trace(std::string_view bytes, const std::string& name, const TraceScan& scan);
 
 // Reads and validates a trace; throws TraceError.
 Trace read_trace(const std::string& path);

@@ -54,10 +54,10 @@ class StoredSource final : public FragmentSource {
 
 }  // namespace
 
-RasterizedScene rasterize_scene(const Scene& scene, const Viewport& vp) {
+RasterizedScene rasterize_scene(const Scene& scene, const Viewport& vp, bool exact_depth) {
   std::vector<ScreenTriangle> triangles = setup_triangles(scene, vp);
   std::vector<ScreenLine> lines = setup_lines(scene, vp, triangles);
-  RasterizedScene rs = rasterize_triangles(std::move(triangles), vp, scene.background);
+  RasterizedScene rs = rasterize_triangles(std::move(triangles), vp, scene.background, exact_depth);
   add_lines(rs, std::move(lines));
   return rs;
 }
@@ -74,7 +74,7 @@ void add_lines(RasterizedScene& rs, std::vector<ScreenLine> lines) {
 }
 
 RasterizedScene rasterize_triangles(std::vector<ScreenTriangle> triangles, const Viewport& vp,
-                                    Rgba8 background) {
+                                    Rgba8 background, bool exact_depth) {
   RasterizedScene rs;
   rs.viewport = vp;
   rs.background = background;
@@ -90,21 +90,27 @@ RasterizedScene rasterize_triangles(std::vector<ScreenTriangle> triangles, const
     estimate += std::min(pixels, frame) + 1;
   }
   rs.fragments.reserve(size_t(estimate * 1.02));
-  rs.z_exact.reserve(size_t(estimate * 1.02));
+  if (exact_depth) rs.z_exact.reserve(size_t(estimate * 1.02));
   for (const ScreenTriangle& t : rs.triangles) {
     rs.first_fragment.push_back(rs.fragments.size());
-    rasterize(t, vp, rs.fragments, &rs.z_exact);
+    rasterize(t, vp, rs.fragments, exact_depth ? &rs.z_exact : nullptr);
   }
   rs.first_fragment.push_back(rs.fragments.size());
   return rs;
 }
 
 std::vector<Fragment> pass_fragments(const RasterizedScene& rs, const PassState& pass) {
-  std::vector<Fragment> out, buffer;
-  StoredSource source(rs);
-  feed_pass(source, 0, pass, [&](const Fragment* f, size_t n) { out.insert(out.end(), f, f + n); },
-            buffer);
+  std::vector<Fragment> out;
+  // A pixel pass draws at most the stored fragments: one allocation, not a doubling series.
+  out.reserve(std::max(rs.fragments.size(), rs.line_fragments.size()));
+  feed_stored_pass(rs, pass, [&](const Fragment* f, size_t n) { out.insert(out.end(), f, f + n); });
   return out;
+}
+
+void feed_stored_pass(const RasterizedScene& rs, const PassState& pass, const DrawFn& draw) {
+  std::vector<Fragment> buffer;
+  StoredSource source(rs);
+  feed_pass(source, 0, pass, draw, buffer);
 }
 
 Traffic pass_traffic(const PassStats& s, const RopState& state, const Viewport& vp) {

@@ -26,11 +26,12 @@ struct RasterizedScene : FrameGeometry {
   std::vector<size_t> first_line_fragment;   // line i owns [first_line_fragment[i], [i+1])
 };
 
-RasterizedScene rasterize_scene(const Scene& scene, const Viewport& vp);
+// `exact_depth` false leaves z_exact empty: for runs that never build the exact reference.
+RasterizedScene rasterize_scene(const Scene& scene, const Viewport& vp, bool exact_depth = true);
 
 // The same from triangles already in window coordinates (tests, traces).
 RasterizedScene rasterize_triangles(std::vector<ScreenTriangle> triangles, const Viewport& vp,
-                                    Rgba8 background);
+                                    Rgba8 background, bool exact_depth = true);
 
 // Replaces the scene's edges with `lines` and rasterizes them (rasterize_scene does this with
 // setup_lines; tests may give their own).
@@ -39,6 +40,8 @@ void add_lines(RasterizedScene& rs, std::vector<ScreenLine> lines);
 // The fragments a pass draws, in primitive order, as the feeder sends them to the datapath
 // (filtered, culled and rewritten by the pass's feeder rules).
 std::vector<Fragment> pass_fragments(const RasterizedScene& rs, const PassState& pass);
+// The same handed to `draw` as the feeder goes, a few thousand at a time, nothing kept.
+void feed_stored_pass(const RasterizedScene& rs, const PassState& pass, const DrawFn& draw);
 
 struct RenderResult {
   Framebuffer framebuffer;

@@ -6,6 +6,8 @@
 #include "support/layers.h"
 #include "rop/rop.h"
 #include "io/trace.h"
+#include "pipeline/passes.h"
+#include "scene/builtin_scenes.h"
 
 namespace {
 
@@ -86,6 +88,96 @@ void expect_rejected(const std::string& bytes, const char* needle) {
     EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("trace 't.zbt': byte "), std::string::npos) << e.what();
   }
+}
+
+// A scene's plan serialised straight from the feeder: the same bytes as its Trace's, within
+// trace_bound, never a byte past the capacity it is given.
+TEST(Trace, SceneStreamIsTheTraceSerialised) {
+  int coverage_passes = 0, edge_passes = 0;
+  for (const char* scene : {"cad", "parts"}) {
+    const zb::RasterizedScene rs =
+        zb::rasterize_scene(*zb::builtin_scene(scene), zb::Viewport{64, 48});
+    for (const zb::PassPlan& plan : zb::pass_plans()) {
+      const zb::Trace t = zb::make_trace(rs, plan);
+      const std::string want = zb::serialize_trace(t);
+      const size_t bound = zb::trace_bound(rs, plan);
+      ASSERT_LE(want.size(), bound) << scene << " " << plan.name;
+      std::vector<uint8_t> buf(bound + 16, 0xcd);
+      const zb::TraceCounts c = zb::serialize_trace(rs, plan, buf.data(), bound);
+      ASSERT_EQ(c.bytes, want.size()) << scene << " " << plan.name;
+      EXPECT_EQ(std::string(buf.begin(), buf.begin() + std::ptrdiff_t(c.bytes)), want)
+          << scene << " " << plan.name;
+      EXPECT_EQ(c.passes, t.passes.size());
+      uint64_t fragments = 0;
+      for (const zb::TracePass& p : t.passes) {
+        fragments += p.fragments.size();
+        coverage_passes += zb::is_coverage_pass(p.state) && !p.fragments.empty();
+      }
+      for (const zb::PassState& p : plan.passes) edge_passes += p.filter == zb::PrimFilter::kEdges;
+      EXPECT_EQ(c.fragments, fragments);
+      // One byte short: refused, nothing written past it.
+      if (want.size() > 64) {
+        std::vector<uint8_t> small(want.size() + 16, 0xcd);
+        EXPECT_THROW(zb::serialize_trace(rs, plan, small.data(), want.size() - 1), std::logic_error);
+        EXPECT_TRUE(std::all_of(small.begin() + std::ptrdiff_t(want.size() - 1), small.end(),
+                                [](uint8_t b) { return b == 0xcd; }))
+            << scene << " " << plan.name;
+      }
+    }
+  }
+  EXPECT_GT(coverage_passes, 0);  // the bound's box case was exercised
+  EXPECT_GT(edge_passes, 0);
+}
+
+// Fragments block by block: the same fragments in order, each block at most
+// kTraceReadRecords, between `pass` and `pass_end`; a damaged fragment stops the scan at its byte
+// with the blocks before it delivered.
+TEST(Trace, BlocksGiveThePassWhole) {
+  zb::Trace t;
+  t.width = t.height = 128;
+  std::mt19937 rng(7);
+  zb::TracePass pass{"big", {}, zb::RopState{}, {}};
+  for (size_t i = 0; i < 2 * zb::kTraceReadRecords + 123; ++i)
+    pass.fragments.push_back({uint16_t(rng() % 128), uint16_t(rng() % 128), uint32_t(rng() % 65536),
+                              {uint8_t(rng()), 0, 0, 255}});
+  t.passes.push_back(pass);
+  t.passes.push_back({"none", {}, zb::RopState{}, {}});
+  std::string bytes = zb::serialize_trace(t);
+  std::vector<zb::Fragment> got;
+  std::vector<std::string> calls;
+  zb::TraceScan scan;
+  scan.pass = [&](zb::TracePass& p) {
+    EXPECT_TRUE(p.fragments.empty());
+    calls.push_back("pass " + p.name);
+  };
+  scan.fragments = [&](const zb::Fragment* f, size_t n) {
+    EXPECT_LE(n, zb::kTraceReadRecords);
+    got.insert(got.end(), f, f + n);
+    calls.push_back("block");
+  };
+  scan.pass_end = [&] { calls.push_back("end"); };
+  zb::scan_trace(bytes, "mem", scan);
+  EXPECT_EQ(calls, (std::vector<std::string>{"pass big", "block", "block", "block", "end",
+                                              "pass none", "end"}));
+  ASSERT_EQ(got.size(), pass.fragments.size());
+  for (size_t i = 0; i < got.size(); ++i)
+    ASSERT_TRUE(got[i].x == pass.fragments[i].x && got[i].y == pass.fragments[i].y &&
+                got[i].z == pass.fragments[i].z && got[i].color == pass.fragments[i].color)
+        << i;
+  // Fragment 2 * kTraceReadRecords + 5 (in the third block) moved outside the frame.
+  const size_t first = 8 + 4 * 5 + 3 + 4 + 4 + 4 + 3 + 4 + 2 + 8;  // header, pass "big" head
+  const size_t bad = first + (2 * zb::kTraceReadRecords + 5) * zb::kTraceFragmentBytes;
+  bytes[bad] = char(0xff), bytes[bad + 1] = char(0xff);
+  got.clear();
+  calls.clear();
+  try {
+    zb::scan_trace(bytes, "mem", scan);
+    FAIL() << "the damaged fragment was taken";
+  } catch (const zb::TraceError& e) {
+    EXPECT_EQ(e.byte, bad) << e.what();
+  }
+  EXPECT_EQ(got.size(), 2 * zb::kTraceReadRecords);
+  EXPECT_EQ(calls, (std::vector<std::string>{"pass big", "block", "block"}));
 }
 
 TEST(Trace, EveryTruncationIsRejected) {
