@@ -67,7 +67,9 @@ enum class Command : uint32_t {
   kEndFrame = 6,    // the frame ends (final operations done): every tile stored to memory
   kTileStore = 7,   // the tile at kTileOrigin stored to memory, between passes
   kRunStream = 8,   // a whole frame from the trace at kStreamAddr: BEGIN_FRAME to END_FRAME
+  kTileLoad = 9,    // the tile at kTileOrigin loaded from memory, between passes
 };
+constexpr uint32_t kLastCommand = uint32_t(Command::kTileLoad);
 
 namespace status {
 constexpr uint32_t kBusy = 1u << 0;
@@ -86,6 +88,7 @@ enum class ErrorCode : uint32_t {
   kBadStream = 5,   // RUN_STREAM's trace is malformed (kErrorInfo: the byte)
   kDma = 6,         // the memory answered a DMA access with an error (kErrorInfo: the address)
   kBadFragment = 7,  // DRAW's fragment outside the frame or its formats (kErrorInfo: its index)
+  kBadTile = 8,      // TILE_LOAD's depth word above the frame's depth width (kErrorInfo: its address)
 };
 
 }  // namespace zb::vp

@@ -220,8 +220,11 @@ void ZbRopTlm::execute(Command c) {
       return;
     }
     case Command::kEndFrame: end_frame(); return;
-    case Command::kTileStore: {
-      order(frame_open_ && !in_pass_, "TILE_STORE outside a frame or inside a pass");
+    case Command::kTileStore:
+    case Command::kTileLoad: {
+      const bool load = c == Command::kTileLoad;
+      order(frame_open_ && !in_pass_, load ? "TILE_LOAD outside a frame or inside a pass"
+                                           : "TILE_STORE outside a frame or inside a pass");
       const int x = int(rw(reg::kTileOrigin) & 0xffff), y = int(rw(reg::kTileOrigin) >> 16);
       if (x % kRtlTileW || y % kRtlTileW || x >= width_ || y >= height_)
         throw CommandError{ErrorCode::kBadSetup,
@@ -229,16 +232,18 @@ void ZbRopTlm::execute(Command c) {
                                        "frame (multiples of {})",
                                        x, y, width_, height_, kRtlTileW)};
       try {
-        store_tile(x / kRtlTileW, y / kRtlTileW);
+        if (load) load_tile(x / kRtlTileW, y / kRtlTileW);
+        else store_tile(x / kRtlTileW, y / kRtlTileW);
       } catch (const std::logic_error& e) {  // the RTL's layers passes wait for their resolve
-        throw CommandError{ErrorCode::kOrder, fmt::format("TILE_STORE: {}", e.what())};
+        throw CommandError{ErrorCode::kOrder,
+                           fmt::format("{}: {}", load ? "TILE_LOAD" : "TILE_STORE", e.what())};
       }
       return;
     }
     case Command::kRunStream: run_stream(); return;
   }
-  throw CommandError{ErrorCode::kBadCommand, fmt::format("COMMAND {} is not a command (1 to 8)",
-                                                         uint32_t(c))};
+  throw CommandError{ErrorCode::kBadCommand, fmt::format("COMMAND {} is not a command (1 to {})",
+                                                         uint32_t(c), kLastCommand)};
 }
 
 void ZbRopTlm::begin_frame(int width, int height, int depth_bits, int samples,
@@ -309,40 +314,90 @@ void ZbRopTlm::end_frame() {
   frame_open_ = false;
 }
 
+// The tile of (tx, ty), clipped to the frame, and the strides its rows are moved with.
+ZbRopTlm::TileRows ZbRopTlm::tile_rows(int tx, int ty) const {
+  TileRows t;
+  t.x0 = tx * kRtlTileW, t.y0 = ty * kRtlTileW;
+  t.w = std::min(kRtlTileW, width_ - t.x0), t.h = std::min(kRtlTileW, height_ - t.y0);
+  t.depth = rw64(reg::kDepthAddrLo) != 0;
+  if (rw(reg::kFbStride) < uint32_t(width_) * 4)
+    throw CommandError{ErrorCode::kBadSetup,
+                       fmt::format("FB_STRIDE {} is less than a row of {} pixels", rw(reg::kFbStride),
+                                   width_)};
+  if (t.depth && rw(reg::kDepthStride) < uint32_t(width_) * 4)
+    throw CommandError{ErrorCode::kBadSetup,
+                       fmt::format("DEPTH_STRIDE {} is less than a row of {} pixels",
+                                   rw(reg::kDepthStride), width_)};
+  return t;
+}
+
+uint64_t ZbRopTlm::TileRows::color_at(const ZbRopTlm& r, int y) const {
+  return r.rw64(reg::kFbAddrLo) + uint64_t(y) * r.rw(reg::kFbStride) + uint64_t(x0) * 4;
+}
+uint64_t ZbRopTlm::TileRows::depth_at(const ZbRopTlm& r, int y) const {
+  return r.rw64(reg::kDepthAddrLo) + uint64_t(y) * r.rw(reg::kDepthStride) + uint64_t(x0) * 4;
+}
+
 // The tile's colour rows to the framebuffer in memory, then its depth rows when DEPTH_ADDR is set.
 void ZbRopTlm::store_tile(int tx, int ty) {
   const Framebuffer& fb = framebuffer();
-  const int x0 = tx * kRtlTileW, y0 = ty * kRtlTileW;
-  const int w = std::min(kRtlTileW, fb.width - x0), h = std::min(kRtlTileW, fb.height - y0);
-  if (rw(reg::kFbStride) < uint32_t(fb.width) * 4)
-    throw CommandError{ErrorCode::kBadSetup,
-                       fmt::format("FB_STRIDE {} is less than a row of {} pixels", rw(reg::kFbStride),
-                                   fb.width)};
-  if (rw64(reg::kDepthAddrLo) != 0 && rw(reg::kDepthStride) < uint32_t(fb.width) * 4)
-    throw CommandError{ErrorCode::kBadSetup,
-                       fmt::format("DEPTH_STRIDE {} is less than a row of {} pixels",
-                                   rw(reg::kDepthStride), fb.width)};
-  std::vector<uint8_t> row(size_t(w) * 4);
-  for (int y = y0; y < y0 + h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const uint32_t c = pack_rgba(fb.color_at(x0 + x, y));
+  const TileRows t = tile_rows(tx, ty);
+  std::vector<uint8_t> row(size_t(t.w) * 4);
+  for (int y = t.y0; y < t.y0 + t.h; ++y) {
+    for (int x = 0; x < t.w; ++x) {
+      const uint32_t c = pack_rgba(fb.color_at(t.x0 + x, y));
       std::memcpy(&row[size_t(x) * 4], &c, 4);
     }
-    dma_access(tlm::TLM_WRITE_COMMAND, rw64(reg::kFbAddrLo) + uint64_t(y) * rw(reg::kFbStride) + uint64_t(x0) * 4,
-               row.data(), row.size());
+    dma_access(tlm::TLM_WRITE_COMMAND, t.color_at(*this, y), row.data(), row.size());
   }
-  if (rw64(reg::kDepthAddrLo) == 0) return;
-  for (int y = y0; y < y0 + h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const uint32_t d = fb.depth_at(x0 + x, y);
+  if (!t.depth) return;
+  for (int y = t.y0; y < t.y0 + t.h; ++y) {
+    for (int x = 0; x < t.w; ++x) {
+      const uint32_t d = fb.depth_at(t.x0 + x, y);
       std::memcpy(&row[size_t(x) * 4], &d, 4);
     }
-    dma_access(tlm::TLM_WRITE_COMMAND, rw64(reg::kDepthAddrLo) + uint64_t(y) * rw(reg::kDepthStride) + uint64_t(x0) * 4,
-               row.data(), row.size());
+    dma_access(tlm::TLM_WRITE_COMMAND, t.depth_at(*this, y), row.data(), row.size());
   }
 }
 
-// A whole frame from the trace in memory, through the same steps as the registers' commands.
+// The tile's colour rows from the framebuffer in memory, and its depth rows when DEPTH_ADDR is
+// set (each word within the frame's depth width); all read before the inside takes any.
+void ZbRopTlm::load_tile(int tx, int ty) {
+  const TileRows t = tile_rows(tx, ty);
+  RegionLoad r;
+  r.x0 = t.x0, r.y0 = t.y0, r.width = t.w, r.height = t.h;
+  r.color.resize(size_t(t.w) * size_t(t.h));
+  std::vector<uint8_t> row(size_t(t.w) * 4);
+  for (int y = 0; y < t.h; ++y) {
+    dma_access(tlm::TLM_READ_COMMAND, t.color_at(*this, t.y0 + y), row.data(), row.size());
+    for (int x = 0; x < t.w; ++x) {
+      uint32_t c;
+      std::memcpy(&c, &row[size_t(x) * 4], 4);
+      r.color[size_t(y) * size_t(t.w) + size_t(x)] = unpack_rgba(c);
+    }
+  }
+  if (t.depth) {
+    r.depth.resize(r.color.size());
+    for (int y = 0; y < t.h; ++y) {
+      dma_access(tlm::TLM_READ_COMMAND, t.depth_at(*this, t.y0 + y), row.data(), row.size());
+      for (int x = 0; x < t.w; ++x) {
+        uint32_t d;
+        std::memcpy(&d, &row[size_t(x) * 4], 4);
+        if (d > depth_max(depth_bits_)) {
+          const uint64_t at = t.depth_at(*this, t.y0 + y) + uint64_t(x) * 4;
+          throw CommandError{ErrorCode::kBadTile,
+                             fmt::format("TILE_LOAD: depth 0x{:x} at 0x{:x} exceeds the frame's {} bits",
+                                         d, at, depth_bits_),
+                             uint32_t(at)};
+        }
+        r.depth[size_t(y) * size_t(t.w) + size_t(x)] = d;
+      }
+    }
+  }
+  inside_->backend().load_region(r);
+  count_cycles();  // the passes a backend ran first (the RTL's waiting ones)
+}
+
 // RUN_STREAM's stream, read as the parse goes through the DMA port: in place where DMI covers
 // a read, else fetched into a buffer kept from read to read.
 class ZbRopTlm::StreamBytes final : public TraceBytes {

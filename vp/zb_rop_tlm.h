@@ -71,7 +71,16 @@ class ZbRopTlm : public sc_core::sc_module {
   void end_pass();
   void frame_op(const FrameOp& op);
   void end_frame();
+  // A tile's rectangle in the frame and its rows' addresses in memory (checked strides).
+  struct TileRows {
+    int x0 = 0, y0 = 0, w = 0, h = 0;
+    bool depth = false;  // DEPTH_ADDR set
+    uint64_t color_at(const ZbRopTlm& r, int y) const;
+    uint64_t depth_at(const ZbRopTlm& r, int y) const;
+  };
+  TileRows tile_rows(int tx, int ty) const;
   void store_tile(int tx, int ty);
+  void load_tile(int tx, int ty);
   void run_stream();
   void abandon_frame();
   std::vector<Fragment> fetch_fragments(uint64_t addr, uint64_t count);

@@ -130,6 +130,7 @@ class CostCounter final : public Backend {
   PassStats end_pass() override;
   void finish_frame(std::vector<PassStats>& stats) override;
   void frame_op(const FrameOp& op) override;
+  void load_region(const RegionLoad& r) override;
   const Framebuffer& framebuffer() const override { return inner_.framebuffer(); }
 
   const MethodCost& cost() const { return cost_; }

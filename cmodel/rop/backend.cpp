@@ -1,9 +1,12 @@
-// The host side shared by every backend: counters summed, frame operations applied.
+// The host side shared by every backend: counters summed, frame operations and region loads
+// applied.
 #include "backend.h"
 
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+
+#include <fmt/core.h>
 
 #include "blend.h"
 
@@ -18,6 +21,33 @@ PassStats& PassStats::operator+=(const PassStats& o) {
   depth_writes += o.depth_writes;
   cycles += o.cycles;
   return *this;
+}
+
+void check_region_load(const Framebuffer& fb, const RegionLoad& r) {
+  const size_t n = size_t(std::max(r.width, 0)) * size_t(std::max(r.height, 0));
+  if (r.x0 < 0 || r.y0 < 0 || r.width < 1 || r.height < 1 || r.x0 + r.width > fb.width ||
+      r.y0 + r.height > fb.height)
+    throw std::invalid_argument(fmt::format("region load: {}x{} at ({}, {}) is not inside the {}x{} frame",
+                                            r.width, r.height, r.x0, r.y0, fb.width, fb.height));
+  if (r.color.size() != n || (!r.depth.empty() && r.depth.size() != n))
+    throw std::invalid_argument("region load: the planes' sizes are not the region's");
+  for (const uint32_t d : r.depth)
+    if (d > depth_max(fb.depth_bits))
+      throw std::invalid_argument(fmt::format("region load: depth 0x{:x} exceeds {} bits", d, fb.depth_bits));
+}
+
+void apply_region_load(Framebuffer& fb, const RegionLoad& r) {
+  check_region_load(fb, r);
+  for (int y = 0; y < r.height; ++y) {
+    const size_t from = size_t(y) * size_t(r.width), to = fb.index(r.x0, r.y0 + y);
+    std::copy_n(r.color.begin() + std::ptrdiff_t(from), r.width, fb.color.begin() + std::ptrdiff_t(to));
+    if (!r.depth.empty())
+      std::copy_n(r.depth.begin() + std::ptrdiff_t(from), r.width, fb.depth.begin() + std::ptrdiff_t(to));
+  }
+}
+
+void Backend::load_region(const RegionLoad&) {
+  throw std::logic_error(fmt::format("{} backend: no region loads", name()));
 }
 
 void apply_frame_op(Framebuffer& fb, const FrameOp& op) {

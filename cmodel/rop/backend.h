@@ -26,6 +26,20 @@ struct PassStats {
 
 // Applies `op` to `fb` (the host's rule, shared by every backend's host side).
 void apply_frame_op(Framebuffer& fb, const FrameOp& op);
+
+// The colour and depth of a rectangle of pixels, from memory: a tile loaded between passes
+// (the virtual platform's TILE_LOAD). Row by row, width * height words each; no depth: kept.
+// The other planes (coverage, peel, accumulation, layers) are kept.
+struct RegionLoad {
+  int x0 = 0, y0 = 0, width = 0, height = 0;
+  std::vector<Rgba8> color;
+  std::vector<uint32_t> depth;
+};
+// std::invalid_argument for a rectangle outside `fb`'s frame, planes of another size or a depth
+// above the frame's depth_max.
+void check_region_load(const Framebuffer& fb, const RegionLoad& r);
+// Writes `r` into `fb`, checked first (nothing written when it throws).
+void apply_region_load(Framebuffer& fb, const RegionLoad& r);
 const char* to_string(FrameOpKind k);
 
 class Backend {
@@ -53,6 +67,9 @@ class Backend {
   virtual PassStats end_pass() = 0;
   // A frame operation between passes (never inside one).
   virtual void frame_op(const FrameOp& op) = 0;
+  // A region loaded between passes (apply_region_load's rule). Backends without it throw
+  // std::logic_error.
+  virtual void load_region(const RegionLoad& r);
   // The frame's last call, after its final frame operations: a backend that runs passes later
   // than end_pass (the RTL's tile schedule) runs them here and puts their counters in `stats`
   // (one a pass, end_pass's in order). Others leave `stats` as it is.

@@ -94,6 +94,7 @@ class GoldenRop final : public Backend {
   void draw(const Fragment* fragments, size_t count) override;
   PassStats end_pass() override;
   void frame_op(const FrameOp& op) override;
+  void load_region(const RegionLoad& r) override { apply_region_load(fb_, r); }
   const Framebuffer& framebuffer() const override { return fb_; }
 
   // One fragment through the datapath; returns what it wrote. Throws std::invalid_argument

@@ -361,6 +361,23 @@ void RtlRop::frame_op(const FrameOp& op) {
   m.tiles.frame_op(op);
 }
 
+// The passes waiting run first (their stores would write over the region); the host's frame
+// takes the region, and the tiles it covers load those planes from there at their next pass.
+void RtlRop::load_region(const RegionLoad& r) {
+  Impl& m = *impl_;
+  if (m.fb.width == 0) fail<std::logic_error>("rtl backend: load_region before begin_frame");
+  if (m.in_pass) fail<std::logic_error>("rtl backend: load_region inside a pass");
+  if (m.pending() && m.layered())
+    fail<std::logic_error>("rtl backend: load_region while layers passes wait for their resolve");
+  check_region_load(m.fb, r);  // refused before the waiting passes run
+  flush();
+  apply_region_load(m.fb, r);
+  const uint8_t planes = uint8_t(kPlaneColor | (r.depth.empty() ? 0 : kPlaneDepth));
+  for (int ty = r.y0 / kRtlTileH; ty <= (r.y0 + r.height - 1) / kRtlTileH; ++ty)
+    for (int tx = r.x0 / kRtlTileW; tx <= (r.x0 + r.width - 1) / kRtlTileW; ++tx)
+      m.tiles.stored(size_t(ty) * size_t(m.tiles_x()) + size_t(tx), planes);
+}
+
 const Framebuffer& RtlRop::framebuffer() const {
   if (impl_->pending())
     fail<std::logic_error>("rtl backend: the frame read with passes not yet run (finish_frame)");

@@ -108,6 +108,7 @@ class RtlRop final : public Backend {
   // on the store, closing the group). Else the passes waiting run first and the host applies
   // it.
   void frame_op(const FrameOp& op) override;
+  void load_region(const RegionLoad& r) override;
   bool on_tile() const;  // whether frame_op now joins the group
   // std::logic_error while passes wait (finish_frame or flush first).
   const Framebuffer& framebuffer() const override;

@@ -357,7 +357,7 @@ void Tester::run() {
     exec(Command::kEndPass, "END_PASS in a frame, outside a pass", ErrorCode::kOrder);
   });
   check("err_bad_command", [&] {
-    for (uint32_t c : {0u, 9u, 0xffffffffu}) {
+    for (uint32_t c : {0u, kLastCommand + 1, 0xffffffffu}) {
       exec(c, fmt::format("COMMAND {}", c), ErrorCode::kBadCommand);
       exec(Command::kBeginFrame, "BEGIN_FRAME after it");
     }
@@ -422,6 +422,84 @@ void Tester::run() {
     wr(reg::kTileOrigin, 1);
     exec(Command::kTileStore, "TILE_ORIGIN not a tile corner", ErrorCode::kBadSetup);
     wr(reg::kTileOrigin, 0);
+  });
+
+  // A frame one and a half tiles wide: TILE_LOAD (T, 0) takes the clipped second tile from
+  // memory, and a pass's depth test meets what it loaded.
+  check("tile_load", [&] {
+    const int t = int(rd(reg::kTileSize)), w = t + std::max(1, t / 2), h = std::min(t, 8);
+    const uint32_t stride = uint32_t(w) * 4;
+    const auto at = [&](uint64_t base, int x, int y) { return base + uint64_t(y) * stride + uint64_t(x) * 4; };
+    const auto loaded = [](int x, int y) { return Rgba8{uint8_t(x), uint8_t(y), 7, 200}; };
+    const auto loaded_z = [](int x, int y) { return uint32_t(1000 + x + 100 * y); };
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const uint32_t c = word_of(loaded(x, y)), z = loaded_z(x, y);
+        std::memcpy(mem_.data() + at(kFbAt, x, y), &c, 4);
+        std::memcpy(mem_.data() + at(kDepthAt, x, y), &z, 4);
+      }
+    setup();
+    wr(reg::kFrameSize, uint32_t(w) | uint32_t(h) << 16);
+    wr(reg::kFbStride, stride);
+    wr(reg::kDepthStride, stride);
+    exec(Command::kBeginFrame, "BEGIN_FRAME");
+    exec(Command::kTileLoad, "TILE_LOAD (0, 0) before a frame's pass");  // then overwritten:
+    wr(reg::kOpKind, uint32_t(FrameOpKind::kClearColor));
+    wr(reg::kOpColor, word_of(kClear));
+    exec(Command::kFrameOp, "FRAME_OP clear colour");
+    wr(reg::kOpKind, uint32_t(FrameOpKind::kClearDepth));
+    wr(reg::kOpDepth, kFar);
+    exec(Command::kFrameOp, "FRAME_OP clear depth");
+    wr(reg::kTileOrigin, uint32_t(t));
+    exec(Command::kTileLoad, "TILE_LOAD (T, 0)");
+    wr(reg::kPassState, pack_state(RopState{}));
+    exec(Command::kBeginPass, "BEGIN_PASS");
+    exec(Command::kTileLoad, "TILE_LOAD inside a pass", ErrorCode::kOrder);
+    // Nearer than the loaded depth, farther than it, and on the cleared first tile.
+    put_fragments({{uint16_t(t), 0, 500, {1, 2, 3, 255}},
+                   {uint16_t(t + (w - t) - 1), uint16_t(h - 1), 5000, {4, 5, 6, 255}},
+                   {0, 0, 5000, {7, 8, 9, 255}}});
+    exec(Command::kDraw, "DRAW");
+    exec(Command::kEndPass, "END_PASS");
+    expect_eq(rd64(reg::kFragmentsPassedLo), 2, "FRAGMENTS_PASSED (the far one on the loaded tile fails)");
+    for (int y = 0; y < h; ++y)  // the memory the frame is stored to: wiped
+      for (int x = 0; x < w; ++x) {
+        std::memset(mem_.data() + at(kFbAt, x, y), kSentinel, 4);
+        std::memset(mem_.data() + at(kDepthAt, x, y), kSentinel, 4);
+      }
+    exec(Command::kEndFrame, "END_FRAME");
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        Rgba8 c = x < t ? kClear : loaded(x, y);
+        uint32_t z = x < t ? kFar : loaded_z(x, y);
+        if (x == t && y == 0) c = {1, 2, 3, 255}, z = 500;
+        if (x == 0 && y == 0) c = {7, 8, 9, 255}, z = 5000;
+        uint32_t got_c, got_z;
+        std::memcpy(&got_c, mem_.data() + at(kFbAt, x, y), 4);
+        std::memcpy(&got_z, mem_.data() + at(kDepthAt, x, y), 4);
+        expect(got_c == word_of(c) && got_z == z,
+               fmt::format("({}, {}): colour 0x{:x} depth {}, expected 0x{:x} {}", x, y, got_c,
+                           got_z, word_of(c), z));
+      }
+    exec(Command::kTileLoad, "TILE_LOAD outside a frame", ErrorCode::kOrder);
+    exec(Command::kBeginFrame, "BEGIN_FRAME");
+    wr(reg::kTileOrigin, 1);
+    exec(Command::kTileLoad, "TILE_ORIGIN not a tile corner", ErrorCode::kBadSetup);
+    wr(reg::kTileOrigin, uint32_t(t) << 16);
+    exec(Command::kTileLoad, "TILE_ORIGIN below the frame", ErrorCode::kBadSetup);
+    // A depth word wider than the frame's: refused at its address, nothing loaded.
+    wr(reg::kTileOrigin, uint32_t(t));
+    const uint32_t wide = kFar + 1;
+    std::memcpy(mem_.data() + at(kDepthAt, t, 1), &wide, 4);
+    exec(Command::kTileLoad, "a depth word above 24 bits", ErrorCode::kBadTile);
+    expect_eq(rd(reg::kErrorInfo), uint32_t(at(kDepthAt, t, 1)), "ERROR_INFO (its address)");
+    exec(Command::kTileStore, "TILE_STORE after it");
+    expect_eq(word_of(rop_.framebuffer().color_at(t, 0)), word_of(kClear), "colour after the refused load");
+    wr64(reg::kFbAddrLo, kMemBytes - 64);
+    exec(Command::kTileLoad, "TILE_LOAD past the memory's end", ErrorCode::kDma);
+    wr(reg::kTileOrigin, 0);
+    setup();
+    exec(Command::kBeginFrame, "BEGIN_FRAME after it");
   });
 
   // ---- 5b. Command errors in and around a frame ---------------------------------------------
