@@ -1,8 +1,10 @@
 """The virtual platform's speed for `make bench` (docs/bench.md, docs/systemc.md): zblend_vp on
 cad three-pass 640x480 against its yardstick, whole processes run in turn so that the machine's
-drift falls on both, the median of the per-pair ratios. Golden inside against `zblend render
+drift falls on both, the median of the per-pair ratios (three times the pairs for the golden
+inside, whose pair takes 50 ms). Golden inside against `zblend render
 --threads 1` (target: at most 2, half the speed); RTL inside against `zblend render --backend rtl
---threads 1` (target: at most 1.2).
+--threads 1` (target: at most 1.2), and against the same with `--schedule pass`, the RTL
+inside's schedule (no target: the platform's own cost).
 """
 import os
 import shlex
@@ -17,17 +19,27 @@ def vp(b, runs):
     os.makedirs(out, exist_ok=True)
     scene = ["--scene", "cad", "--method", METHOD, "-W", "640", "-H", "480"]
     pairs = {
-        "golden": ([b.exe("zblend_vp")] + scene + ["--no-check", "-q", "--out", f"{out}/vp.png"],
+        "golden inside": ([b.exe("zblend_vp")] + scene + ["--no-check", "-q", "--out", f"{out}/vp.png"],
                    [b.exe("zblend"), "render", "-q"] + scene +
                    ["--threads", "1", "--out", f"{out}/render.png"], "<= 2"),
-        "rtl": ([b.exe("zblend_vp")] + scene + ["--inside", "rtl", "--no-check", "-q", "--out",
+        "rtl inside": ([b.exe("zblend_vp")] + scene + ["--inside", "rtl", "--no-check", "-q", "--out",
                                                 f"{out}/vp-rtl.png"],
                 [b.exe("zblend"), "render", "-q"] + scene +
                 ["--backend", "rtl", "--threads", "1", "--out", f"{out}/render-rtl.png"], "<= 1.2"),
+        # The RTL inside runs the pass schedule (a pass's cycles annotated as it ends), where
+        # zblend render's default is the tile schedule, which takes fewer cycles: the same
+        # schedule on both sides shows the platform's own cost.
+        "rtl inside, yardstick --schedule pass": (
+            [b.exe("zblend_vp")] + scene + ["--inside", "rtl", "--no-check", "-q", "--out",
+                                            f"{out}/vp-rtl.png"],
+            [b.exe("zblend"), "render", "-q"] + scene +
+            ["--backend", "rtl", "--schedule", "pass", "--threads", "1", "--out",
+             f"{out}/render-rtl-pass.png"], ""),
     }
     for inside, (vp_cmd, yard_cmd, target) in pairs.items():
         ratios, vp_s, yard_s = [], [], []
-        for _ in range(runs):
+        n = runs * 3 if inside == "golden inside" else runs  # 50 ms a pair: more of them
+        for _ in range(n):
             t0 = time.perf_counter()
             b.run(vp_cmd)
             t1 = time.perf_counter()
@@ -37,9 +49,9 @@ def vp(b, runs):
             yard_s.append(t2 - t1)
             ratios.append((t1 - t0) / (t2 - t1))
         shown = shlex.join(["zblend_vp"] + vp_cmd[1:])
-        b.add(f"zblend_vp, {inside} inside, cad {METHOD} 640x480, whole process: median of {runs}",
+        b.add(f"zblend_vp, {inside}, cad {METHOD} 640x480, whole process: median of {n}",
               statistics.median(vp_s), "s", "", shown)
-        b.add(f"its yardstick, alternated with it: median of {runs}", statistics.median(yard_s),
+        b.add(f"its yardstick, alternated with it: median of {n}", statistics.median(yard_s),
               "s", "", shlex.join(["zblend"] + yard_cmd[1:]))
-        b.add(f"zblend_vp, {inside} inside / its yardstick (median of the pairs' ratios)",
+        b.add(f"zblend_vp, {inside} / its yardstick (median of the pairs' ratios)",
               statistics.median(ratios), "x", target, shown)

@@ -50,14 +50,19 @@ void append(void* context, void* data, int size) {
 }  // namespace
 
 std::string write_png(const std::string& path, const Framebuffer& fb) {
-  std::vector<uint8_t> rgb(fb.color.size() * 3);
-  for (size_t i = 0; i < fb.color.size(); ++i) {
-    rgb[3 * i] = fb.color[i].r;
-    rgb[3 * i + 1] = fb.color[i].g;
-    rgb[3 * i + 2] = fb.color[i].b;
+  return write_png(path, fb.width, fb.height, fb.color.data());
+}
+
+std::string write_png(const std::string& path, int width, int height, const Rgba8* color) {
+  const size_t n = size_t(width) * size_t(height);
+  std::vector<uint8_t> rgb(n * 3);
+  for (size_t i = 0; i < n; ++i) {
+    rgb[3 * i] = color[i].r;
+    rgb[3 * i + 1] = color[i].g;
+    rgb[3 * i + 2] = color[i].b;
   }
   std::string png;
-  if (!stbi_write_png_to_func(append, &png, fb.width, fb.height, 3, rgb.data(), fb.width * 3))
+  if (!stbi_write_png_to_func(append, &png, width, height, 3, rgb.data(), width * 3))
     return "cannot encode PNG for '" + path + "'";
   return write_file_atomic(path, png);
 }
