@@ -52,7 +52,12 @@ class ZbRopTlm : public sc_core::sc_module {
   const std::string& last_error() const { return error_text_; }  // the last error's detail
 
  private:
-  struct CommandError;
+  // A command that cannot go on: its code, the detail for last_error() and kErrorInfo.
+  struct CommandError {
+    ErrorCode code;
+    std::string text;
+    uint32_t info = 0;
+  };
   class StreamBytes;
   void b_transport(tlm::tlm_generic_payload& tx, sc_core::sc_time& delay);
   unsigned transport_dbg(tlm::tlm_generic_payload& tx);
