@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstring>
 #include <stdexcept>
 
@@ -120,6 +121,11 @@ void ZbVpHost::write_stream(HostJob& job) {
   else mem_dma_.charge(qk_, tlm::TLM_WRITE_COMMAND, c.bytes);
   job.sent_passes = c.passes;
   job.sent_fragments = c.fragments;
+  if (c.bytes > UINT32_MAX) {
+    job.error = fmt::format("the stream's {} bytes do not fit STREAM_BYTES (32 bits): a smaller "
+                            "frame, or --programming registers", c.bytes);
+    return;
+  }
   write_reg(job, reg::kStreamAddrLo, uint32_t(layout_.stream));
   write_reg(job, reg::kStreamAddrHi, uint32_t(layout_.stream >> 32));
   write_reg(job, reg::kStreamBytes, uint32_t(c.bytes));
@@ -155,6 +161,11 @@ void ZbVpHost::program_registers(HostJob& job) {
                bytes.size());
     write_reg(job, reg::kFragAddrLo, uint32_t(layout_.stream));
     write_reg(job, reg::kFragAddrHi, uint32_t(layout_.stream >> 32));
+    if (p.fragments.size() > UINT32_MAX) {
+      job.error = fmt::format("pass '{}': {} fragments do not fit FRAG_COUNT (32 bits)", p.name,
+                              p.fragments.size());
+      return;
+    }
     write_reg(job, reg::kFragCount, uint32_t(p.fragments.size()));
     if (command(job, uint32_t(Command::kDraw)) & status::kError) return;
     if (command(job, uint32_t(Command::kEndPass)) & status::kError) return;
