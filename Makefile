@@ -7,7 +7,7 @@ ZBLEND     := $(BUILD)/zblend
 RUN_SIZE   ?= --width 640 --height 480
 
 .DEFAULT_GOAL := build
-.PHONY: help setup full-tree build run test test-release test-asan test-tsan regress conformance conformance-mutate kit kit-install mutate mutate-layers bench pgo bench-verilator profile-rtl synth formal systemc lint soak waves coverage fuzz fuzz-ci fuzz-build clean
+.PHONY: help setup full-tree build run test test-release test-asan test-tsan regress conformance conformance-mutate kit kit-install mutate mutate-layers bench pgo bench-verilator profile-rtl synth formal systemc vp lint soak waves coverage fuzz fuzz-ci fuzz-build clean
 
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | awk -F'\t' '{printf "%-16s %s\n", $$1, $$2}'
@@ -38,6 +38,11 @@ run: ## Render `cad` with every method on golden model and RTL, compared: out/ru
 	@$(ZBLEND) render --scene cad --method all $(RUN_SIZE) --backend both --out-dir out/run \
 	  --stats out/run/stats.json
 	@echo "images and table: out/run/"
+
+vp: full-tree ## The virtual platform: cad, every method, both insides, 640x480, against zblend render: out/vp/
+	@cmake --build $(BUILD) -j $(JOBS) --target zblend zblend_vp
+	@tests/vp/test_vp_frames.sh $(BUILD)/zblend_vp $(ZBLEND) out/vp 640 480
+	@echo "frames: out/vp/base/ (docs/systemc.md)"
 
 test: ## Every test: the Release tree (CTest), ASan+UBSan, ThreadSanitizer, the fuzzers briefly
 	@$(MAKE) --no-print-directory test-release

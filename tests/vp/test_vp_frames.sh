@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # zblend_vp's frames against zblend render's, and against themselves under every platform option:
 # the PNG files must be the same bytes (both programs write the colour plane with one encoder).
-# usage: test_vp_frames.sh ZBLEND_VP ZBLEND WORKDIR
+# usage: test_vp_frames.sh ZBLEND_VP ZBLEND WORKDIR [WIDTH HEIGHT]   (96x72; make vp: 640x480)
 set -euo pipefail
 vp=$1 zblend=$2 work=$3
 rm -rf "$work" && mkdir -p "$work"
-size=(--width 96 --height 72)
+size=(--width "${4:-96}" --height "${5:-72}")
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 # 1. Every method, both insides, against zblend render's frame (the golden model, one thread).
@@ -35,4 +35,4 @@ for opts in "--programming registers" "--no-dmi" "--quantum 1" "--quantum frame"
     cmp -s "$png" "$dir/$(basename "$png")" || fail "$opts: $(basename "$png") differs"
   done
 done
-echo "zblend_vp: $n methods on both insides match zblend render; registers, no DMI, quantum 1 and frame the same"
+echo "zblend_vp: $n methods on both insides match zblend render at ${size[1]}x${size[3]}; registers, no DMI, quantum 1 and frame the same"
