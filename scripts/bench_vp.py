@@ -18,39 +18,41 @@ def vp(b, runs):
     out = os.path.join(b.out, "vp")
     os.makedirs(out, exist_ok=True)
     scene = ["--scene", "cad", "--method", METHOD, "-W", "640", "-H", "480"]
+
+    def vp_cmd(extra, png):
+        return [b.exe("zblend_vp")] + scene + extra + ["--no-check", "-q", "--out", f"{out}/{png}"]
+
+    def render_cmd(extra, png):
+        return ([b.exe("zblend"), "render", "-q"] + scene + extra +
+                ["--threads", "1", "--out", f"{out}/{png}"])
+
+    rtl = ["--inside", "rtl"]
+    # Each: the platform, its yardstick, the target, the pairs (more than the other steps: the
+    # ratios are near their targets and the machine noisy; a golden pair takes 50 ms, an RTL
+    # one 0.65 s). The RTL inside runs the pass schedule (a pass's cycles annotated as it ends),
+    # where zblend render's default is the tile schedule, which takes fewer cycles: the same
+    # schedule on both sides shows the platform's own cost.
     pairs = {
-        "golden inside": ([b.exe("zblend_vp")] + scene + ["--no-check", "-q", "--out", f"{out}/vp.png"],
-                   [b.exe("zblend"), "render", "-q"] + scene +
-                   ["--threads", "1", "--out", f"{out}/render.png"], "<= 2"),
-        "rtl inside": ([b.exe("zblend_vp")] + scene + ["--inside", "rtl", "--no-check", "-q", "--out",
-                                                f"{out}/vp-rtl.png"],
-                [b.exe("zblend"), "render", "-q"] + scene +
-                ["--backend", "rtl", "--threads", "1", "--out", f"{out}/render-rtl.png"], "<= 1.2"),
-        # The RTL inside runs the pass schedule (a pass's cycles annotated as it ends), where
-        # zblend render's default is the tile schedule, which takes fewer cycles: the same
-        # schedule on both sides shows the platform's own cost.
+        "golden inside": (vp_cmd([], "vp.png"), render_cmd([], "render.png"), "<= 2", runs * 3),
+        "rtl inside": (vp_cmd(rtl, "vp-rtl.png"),
+                       render_cmd(["--backend", "rtl"], "render-rtl.png"), "<= 1.2", runs * 2),
         "rtl inside, yardstick --schedule pass": (
-            [b.exe("zblend_vp")] + scene + ["--inside", "rtl", "--no-check", "-q", "--out",
-                                            f"{out}/vp-rtl.png"],
-            [b.exe("zblend"), "render", "-q"] + scene +
-            ["--backend", "rtl", "--schedule", "pass", "--threads", "1", "--out",
-             f"{out}/render-rtl-pass.png"], ""),
+            vp_cmd(rtl, "vp-rtl.png"),
+            render_cmd(["--backend", "rtl", "--schedule", "pass"], "render-rtl-pass.png"), "",
+            runs * 2),
     }
-    for inside, (vp_cmd, yard_cmd, target) in pairs.items():
+    for inside, (vp_run, yard_cmd, target, n) in pairs.items():
         ratios, vp_s, yard_s = [], [], []
-        # More pairs than the other steps: the ratios are near their targets and the machine
-        # noisy (a golden pair takes 50 ms, an RTL one 0.65 s).
-        n = runs * 3 if inside == "golden inside" else runs * 2
         for _ in range(n):
             t0 = time.perf_counter()
-            b.run(vp_cmd)
+            b.run(vp_run)
             t1 = time.perf_counter()
             b.run(yard_cmd)
             t2 = time.perf_counter()
             vp_s.append(t1 - t0)
             yard_s.append(t2 - t1)
             ratios.append((t1 - t0) / (t2 - t1))
-        shown = shlex.join(["zblend_vp"] + vp_cmd[1:])
+        shown = shlex.join(["zblend_vp"] + vp_run[1:])
         b.add(f"zblend_vp, {inside}, cad {METHOD} 640x480, whole process: median of {n}",
               statistics.median(vp_s), "s", "", shown)
         b.add(f"its yardstick, alternated with it: median of {n}", statistics.median(yard_s),

@@ -224,12 +224,14 @@ int run(const Options& o) {
                  (j.end - j.start).to_seconds() * 1e6, j.cycles, j.dma_transactions,
                  j.rop_transactions, j.wall_ms, check);
     if (!o.out.empty() || !o.out_dir.empty()) {
+      // A frame that failed is written black.
       const std::vector<Rgba8> black(j.frame.empty() ? size_t(j.width()) * size_t(j.height()) : 0);
       const std::string path =
           !o.out.empty() ? o.out
                          : fmt::format("{}/vp-{}-{}.png", o.out_dir, f.name,
                                        to_string(insides[size_t(j.rop)]));
-      cli::write_or_fail(write_png(path, j.width(), j.height(), j.frame.empty() ? black.data() : j.frame.data()));
+      cli::write_or_fail(
+          write_png(path, j.width(), j.height(), (j.frame.empty() ? black : j.frame).data()));
     }
   }
   if (!o.quiet)

@@ -88,50 +88,42 @@ void ZbRopTlm::end_frame() {
   frame_open_ = false;
 }
 
-// The tile of (tx, ty), clipped to the frame, and the strides its rows are moved with.
+// The tile of (tx, ty), clipped to the frame, and its rows in memory.
 ZbRopTlm::TileRows ZbRopTlm::tile_rows(int tx, int ty) const {
   TileRows t;
   t.x0 = tx * kRtlTileW, t.y0 = ty * kRtlTileW;
   t.w = std::min(kRtlTileW, width_ - t.x0), t.h = std::min(kRtlTileW, height_ - t.y0);
-  t.depth = rw64(reg::kDepthAddrLo) != 0;
   if (rw(reg::kFbStride) < uint32_t(width_) * 4)
     throw CommandError{ErrorCode::kBadSetup,
                        fmt::format("FB_STRIDE {} is less than a row of {} pixels", rw(reg::kFbStride),
                                    width_)};
-  if (t.depth && rw(reg::kDepthStride) < uint32_t(width_) * 4)
+  const bool depth = rw64(reg::kDepthAddrLo) != 0;
+  if (depth && rw(reg::kDepthStride) < uint32_t(width_) * 4)
     throw CommandError{ErrorCode::kBadSetup,
                        fmt::format("DEPTH_STRIDE {} is less than a row of {} pixels",
                                    rw(reg::kDepthStride), width_)};
+  const auto plane = [&](uint64_t addr, uint32_t stride) {
+    return TileRows::Plane{addr + uint64_t(t.y0) * stride + uint64_t(t.x0) * 4, stride};
+  };
+  t.color = plane(rw64(reg::kFbAddrLo), rw(reg::kFbStride));
+  if (depth) t.depth = plane(rw64(reg::kDepthAddrLo), rw(reg::kDepthStride));
   return t;
-}
-
-uint64_t ZbRopTlm::TileRows::color_at(const ZbRopTlm& r, int y) const {
-  return r.rw64(reg::kFbAddrLo) + uint64_t(y) * r.rw(reg::kFbStride) + uint64_t(x0) * 4;
-}
-uint64_t ZbRopTlm::TileRows::depth_at(const ZbRopTlm& r, int y) const {
-  return r.rw64(reg::kDepthAddrLo) + uint64_t(y) * r.rw(reg::kDepthStride) + uint64_t(x0) * 4;
 }
 
 // The tile's colour rows to the framebuffer in memory, then its depth rows when DEPTH_ADDR is set.
 void ZbRopTlm::store_tile(int tx, int ty) {
   const Framebuffer& fb = framebuffer();
   const TileRows t = tile_rows(tx, ty);
-  std::vector<uint8_t> row(size_t(t.w) * 4);
-  for (int y = t.y0; y < t.y0 + t.h; ++y) {
-    for (int x = 0; x < t.w; ++x) {
-      const uint32_t c = pack_rgba(fb.color_at(t.x0 + x, y));
-      std::memcpy(&row[size_t(x) * 4], &c, 4);
+  std::vector<uint32_t> row(size_t(t.w));
+  const auto store = [&](const TileRows::Plane& plane, auto word) {
+    for (int k = 0; k < t.h; ++k) {
+      for (int x = 0; x < t.w; ++x) row[size_t(x)] = word(t.x0 + x, t.y0 + k);
+      dma_access(tlm::TLM_WRITE_COMMAND, plane.row(k), reinterpret_cast<uint8_t*>(row.data()),
+                 row.size() * 4);
     }
-    dma_access(tlm::TLM_WRITE_COMMAND, t.color_at(*this, y), row.data(), row.size());
-  }
-  if (!t.depth) return;
-  for (int y = t.y0; y < t.y0 + t.h; ++y) {
-    for (int x = 0; x < t.w; ++x) {
-      const uint32_t d = fb.depth_at(t.x0 + x, y);
-      std::memcpy(&row[size_t(x) * 4], &d, 4);
-    }
-    dma_access(tlm::TLM_WRITE_COMMAND, t.depth_at(*this, y), row.data(), row.size());
-  }
+  };
+  store(t.color, [&](int x, int y) { return pack_rgba(fb.color_at(x, y)); });
+  if (t.depth.first) store(t.depth, [&](int x, int y) { return fb.depth_at(x, y); });
 }
 
 // The tile's colour rows from the framebuffer in memory, and its depth rows when DEPTH_ADDR is
@@ -140,33 +132,27 @@ void ZbRopTlm::load_tile(int tx, int ty) {
   const TileRows t = tile_rows(tx, ty);
   RegionLoad r;
   r.x0 = t.x0, r.y0 = t.y0, r.width = t.w, r.height = t.h;
-  r.color.resize(size_t(t.w) * size_t(t.h));
-  std::vector<uint8_t> row(size_t(t.w) * 4);
-  for (int y = 0; y < t.h; ++y) {
-    dma_access(tlm::TLM_READ_COMMAND, t.color_at(*this, t.y0 + y), row.data(), row.size());
-    for (int x = 0; x < t.w; ++x) {
-      uint32_t c;
-      std::memcpy(&c, &row[size_t(x) * 4], 4);
-      r.color[size_t(y) * size_t(t.w) + size_t(x)] = unpack_rgba(c);
-    }
-  }
-  if (t.depth) {
-    r.depth.resize(r.color.size());
-    for (int y = 0; y < t.h; ++y) {
-      dma_access(tlm::TLM_READ_COMMAND, t.depth_at(*this, t.y0 + y), row.data(), row.size());
-      for (int x = 0; x < t.w; ++x) {
-        uint32_t d;
-        std::memcpy(&d, &row[size_t(x) * 4], 4);
-        if (d > depth_max(depth_bits_)) {
-          const uint64_t at = t.depth_at(*this, t.y0 + y) + uint64_t(x) * 4;
+  std::vector<uint32_t> words(size_t(t.w) * size_t(t.h));
+  const auto load = [&](const TileRows::Plane& plane, bool depth) {
+    for (int k = 0; k < t.h; ++k) {
+      uint32_t* row = &words[size_t(k) * size_t(t.w)];
+      dma_access(tlm::TLM_READ_COMMAND, plane.row(k), reinterpret_cast<uint8_t*>(row),
+                 size_t(t.w) * 4);
+      for (int x = 0; depth && x < t.w; ++x)
+        if (row[x] > depth_max(depth_bits_)) {
+          const uint64_t at = plane.row(k) + uint64_t(x) * 4;
           throw CommandError{ErrorCode::kBadTile,
                              fmt::format("TILE_LOAD: depth 0x{:x} at 0x{:x} exceeds the frame's {} bits",
-                                         d, at, depth_bits_),
+                                         row[x], at, depth_bits_),
                              uint32_t(at)};
         }
-        r.depth[size_t(y) * size_t(t.w) + size_t(x)] = d;
-      }
     }
+  };
+  load(t.color, false);
+  for (const uint32_t w : words) r.color.push_back(unpack_rgba(w));
+  if (t.depth.first) {
+    load(t.depth, true);
+    r.depth = std::move(words);
   }
   inside_->backend().load_region(r);
   count_cycles();  // the passes a backend ran first (the RTL's waiting ones)
@@ -196,7 +182,7 @@ void ZbRopTlm::run_stream() {
   scan.header = [this](const Trace& t) {
     begin_frame(t.width, t.height, t.depth_bits, t.coverage_samples, t.wboit, t.clear_color);
   };
-  scan.pass = [this](TracePass& p) {
+  scan.pass = [this](const TracePass& p, uint64_t) {
     for (const FrameOp& op : p.frame_ops) frame_op(op);
     inside_->backend().label_pass(p.name);
     begin_pass(pack_state(p.state));
@@ -243,14 +229,12 @@ std::vector<Fragment> ZbRopTlm::fetch_fragments(uint64_t addr, uint64_t count) {
   std::vector<uint8_t> bytes(count * kTraceFragmentBytes);
   dma_access(tlm::TLM_READ_COMMAND, addr, bytes.data(), bytes.size());
   std::vector<Fragment> out(count);
-  for (uint64_t i = 0; i < count; ++i) {
-    const uint8_t* rec = &bytes[i * kTraceFragmentBytes];
-    if (decode_fragment(rec, width_, height_, depth_bits_, samples_, out[i])) continue;
-    std::string why;  // again, for the message
-    decode_fragment(rec, width_, height_, depth_bits_, samples_, out[i], &why);
-    throw CommandError{ErrorCode::kBadFragment, fmt::format("fragment {}: {}", i, why),
-                       uint32_t(i)};
-  }
+  std::string why;
+  const size_t good = decode_fragments(bytes.data(), count, width_, height_, depth_bits_, samples_,
+                                       out.data(), why);
+  if (good < count)
+    throw CommandError{ErrorCode::kBadFragment, fmt::format("fragment {}: {}", good, why),
+                       uint32_t(good)};
   return out;
 }
 

@@ -6,8 +6,6 @@
 
 #include <fmt/core.h>
 
-#include "geometry/geometry.h"
-#include "io/trace.h"
 #include "rtl_params.h"
 #include "tile_io.h"
 

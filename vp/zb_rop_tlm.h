@@ -76,12 +76,14 @@ class ZbRopTlm : public sc_core::sc_module {
   void end_pass();
   void frame_op(const FrameOp& op);
   void end_frame();
-  // A tile's rectangle in the frame and its rows' addresses in memory (checked strides).
+  // A tile's rectangle in the frame and where its rows lie in memory (the strides checked).
   struct TileRows {
     int x0 = 0, y0 = 0, w = 0, h = 0;
-    bool depth = false;  // DEPTH_ADDR set
-    uint64_t color_at(const ZbRopTlm& r, int y) const;
-    uint64_t depth_at(const ZbRopTlm& r, int y) const;
+    struct Plane {
+      uint64_t first = 0;   // row y0's first pixel; 0 for depth: DEPTH_ADDR not set
+      uint32_t stride = 0;
+      uint64_t row(int k) const { return first + uint64_t(k) * stride; }  // row y0 + k
+    } color, depth;
   };
   TileRows tile_rows(int tx, int ty) const;
   void store_tile(int tx, int ty);

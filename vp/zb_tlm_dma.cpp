@@ -9,10 +9,13 @@ namespace {
 constexpr uint32_t kBusBytes = 8;  // a DMI access is timed as a burst of these beats
 }
 
-bool DmaPort::dmi_covers(tlm::tlm_command cmd, uint64_t addr, size_t len) const {
-  if (!dmi_valid_ || addr < dmi_.get_start_address() || addr + len - 1 > dmi_.get_end_address())
-    return false;
-  return cmd == tlm::TLM_READ_COMMAND ? dmi_.is_read_allowed() : dmi_.is_write_allowed();
+uint8_t* DmaPort::held(tlm::tlm_command cmd, uint64_t addr, size_t len) const {
+  if (!use_dmi_ || !dmi_valid_ || addr < dmi_.get_start_address() ||
+      addr + len - 1 > dmi_.get_end_address())
+    return nullptr;
+  if (!(cmd == tlm::TLM_READ_COMMAND ? dmi_.is_read_allowed() : dmi_.is_write_allowed()))
+    return nullptr;
+  return dmi_.get_dmi_ptr() + (addr - dmi_.get_start_address());
 }
 
 void DmaPort::ask_dmi(tlm::tlm_fw_transport_if<>& fw, tlm::tlm_command cmd, uint64_t addr) {
@@ -39,9 +42,9 @@ uint8_t* DmaPort::view(tlm::tlm_fw_transport_if<>& fw, tlm_utils::tlm_quantumkee
                        tlm::tlm_command cmd, uint64_t addr, size_t len) {
   if (!use_dmi_ || len == 0) return nullptr;
   if (qk.need_sync()) qk.sync();
-  if (!dmi_covers(cmd, addr, len)) ask_dmi(fw, cmd, addr);
-  if (!dmi_covers(cmd, addr, len)) return nullptr;
-  return dmi_.get_dmi_ptr() + (addr - dmi_.get_start_address());
+  if (uint8_t* p = held(cmd, addr, len)) return p;
+  ask_dmi(fw, cmd, addr);
+  return held(cmd, addr, len);
 }
 
 tlm::tlm_response_status DmaPort::access(tlm::tlm_fw_transport_if<>& fw,
@@ -50,8 +53,7 @@ tlm::tlm_response_status DmaPort::access(tlm::tlm_fw_transport_if<>& fw,
                                          uint64_t& failed) {
   const bool read = cmd == tlm::TLM_READ_COMMAND;
   while (len > 0) {
-    if (use_dmi_ && dmi_covers(cmd, addr, len)) {
-      uint8_t* p = dmi_.get_dmi_ptr() + (addr - dmi_.get_start_address());
+    if (uint8_t* p = held(cmd, addr, len)) {
       charge(qk, cmd, len);
       if (read) std::memcpy(data, p, len);
       else std::memcpy(p, data, len);
@@ -70,7 +72,7 @@ tlm::tlm_response_status DmaPort::access(tlm::tlm_fw_transport_if<>& fw,
       return tx.get_response_status();
     }
     counts_.bytes += n;
-    if (use_dmi_ && tx.is_dmi_allowed() && !dmi_covers(cmd, addr, 1)) ask_dmi(fw, cmd, addr);
+    if (use_dmi_ && tx.is_dmi_allowed() && !held(cmd, addr, 1)) ask_dmi(fw, cmd, addr);
     if (qk.need_sync()) qk.sync();
     addr += n;
     data += n;

@@ -62,7 +62,8 @@ class DmaPort {
   const DmaCounts& counts() const { return counts_; }
 
  private:
-  bool dmi_covers(tlm::tlm_command cmd, uint64_t addr, size_t len) const;
+  // The held pointer at `addr` when it covers [addr, addr + len) for `cmd`, else null.
+  uint8_t* held(tlm::tlm_command cmd, uint64_t addr, size_t len) const;
   void ask_dmi(tlm::tlm_fw_transport_if<>& fw, tlm::tlm_command cmd, uint64_t addr);
 
   uint32_t burst_;

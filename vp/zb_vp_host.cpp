@@ -77,6 +77,10 @@ void ZbVpHost::run_job(HostJob& job) {
   write_reg(job, reg::kDepthAddrLo, uint32_t(layout_.depth));
   write_reg(job, reg::kDepthAddrHi, uint32_t(layout_.depth >> 32));
   write_reg(job, reg::kDepthStride, uint32_t(job.width()) * 4);
+  if (job.trace) {  // a scene's stream is counted as it is written
+    job.sent_passes = job.trace->passes.size();
+    for (const TracePass& p : job.trace->passes) job.sent_fragments += p.fragments.size();
+  }
   if (job.programming == Programming::kStream)
     write_stream(job);
   else
@@ -101,42 +105,39 @@ void ZbVpHost::run_job(HostJob& job) {
 // The trace into memory, in place where the memory grants DMI (else made here and written in
 // bursts), then RUN_STREAM.
 void ZbVpHost::write_stream(HostJob& job) {
-  const size_t room = stream_bytes(job);
+  const size_t room = layout_.bytes - layout_.stream;  // the stream's region (layout_for)
   uint8_t* at = mem_dma_.view(*mem.operator->(), qk_, tlm::TLM_WRITE_COMMAND, layout_.stream, room);
   std::unique_ptr<uint8_t[]> own;  // not zeroed: only what is written is touched
   if (!at) {
     own.reset(new uint8_t[room]);
     at = own.get();
   }
-  TraceCounts c;
+  size_t bytes;
   if (job.trace) {
     serialize_trace(*job.trace, at);
-    c.bytes = room;
-    c.passes = job.trace->passes.size();
-    for (const TracePass& p : job.trace->passes) c.fragments += p.fragments.size();
+    bytes = serialized_size(*job.trace);
   } else {
-    c = serialize_trace(*job.scene, *job.plan, at, room);
+    const TraceCounts c = serialize_trace(*job.scene, *job.plan, at, room);
+    bytes = c.bytes;
+    job.sent_passes = c.passes;
+    job.sent_fragments = c.fragments;
   }
-  if (own) mem_access(tlm::TLM_WRITE_COMMAND, layout_.stream, at, c.bytes);
-  else mem_dma_.charge(qk_, tlm::TLM_WRITE_COMMAND, c.bytes);
-  job.sent_passes = c.passes;
-  job.sent_fragments = c.fragments;
-  if (c.bytes > UINT32_MAX) {
+  if (own) mem_access(tlm::TLM_WRITE_COMMAND, layout_.stream, at, bytes);
+  else mem_dma_.charge(qk_, tlm::TLM_WRITE_COMMAND, bytes);
+  if (bytes > UINT32_MAX) {
     job.error = fmt::format("the stream's {} bytes do not fit STREAM_BYTES (32 bits): a smaller "
-                            "frame, or --programming registers", c.bytes);
+                            "frame, or --programming registers", bytes);
     return;
   }
   write_reg(job, reg::kStreamAddrLo, uint32_t(layout_.stream));
   write_reg(job, reg::kStreamAddrHi, uint32_t(layout_.stream >> 32));
-  write_reg(job, reg::kStreamBytes, uint32_t(c.bytes));
+  write_reg(job, reg::kStreamBytes, uint32_t(bytes));
   command(job, uint32_t(Command::kRunStream));
 }
 
 // The frame command by command: the same steps RUN_STREAM takes from the trace.
 void ZbVpHost::program_registers(HostJob& job) {
   const Trace& t = *job.trace;
-  job.sent_passes = t.passes.size();
-  for (const TracePass& p : t.passes) job.sent_fragments += p.fragments.size();
   const auto op = [&](const FrameOp& o) {
     write_reg(job, reg::kOpKind, uint32_t(o.kind));
     write_reg(job, reg::kOpColor, pack_rgba(o.value));

@@ -306,14 +306,10 @@ void CostCounter::frame_op(const FrameOp& op) {
 void CostCounter::load_region(const RegionLoad& r) {
   inner_.load_region(r);
   end_group();
-  const uint8_t planes = uint8_t(kPlaneColor | (r.depth.empty() ? 0 : kPlaneDepth));
-  for (Grid& g : grids_)
-    for (int ty = r.y0 / g.size; ty <= (r.y0 + r.height - 1) / g.size; ++ty)
-      for (int tx = r.x0 / g.size; tx <= (r.x0 + r.width - 1) / g.size; ++tx) {
-        const size_t t = size_t(ty) * size_t(g.columns) + size_t(tx);
-        g.states.stored(t, planes);
-        g.resident_states.stored(t, planes);
-      }
+  for (Grid& g : grids_) {
+    g.states.loaded(r);
+    g.resident_states.loaded(r);
+  }
 }
 
 }  // namespace zb

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <climits>
 #include <cstring>
 #include <filesystem>
 #include <functional>
@@ -12,7 +11,7 @@
 #include <fmt/core.h>
 
 #include "geometry/geometry.h"
-#include "raster/internal/edge_functions.h"
+#include "raster/sample_coverage.h"
 #include "atomic_file.h"
 
 namespace zb {
@@ -39,6 +38,9 @@ class Writer {
   }
   void u(uint64_t v, int n) {
     for (int i = 0; i < n; ++i) *p_++ = uint8_t(v >> (8 * i));
+  }
+  void fragments(const Fragment* f, size_t n) {
+    for (size_t i = 0; i < n; ++i, p_ += kTraceFragmentBytes) encode_fragment(p_, f[i]);
   }
   uint8_t* at() { return p_; }
   void skip(size_t n) { p_ += n; }
@@ -104,9 +106,9 @@ void put_ops(Writer& w, const std::vector<FrameOp>& ops) {
 }
 
 constexpr size_t kHeaderBytes = sizeof kMagic + 4 * 5 + 3 + 4 + 4;  // through the pass count
-size_t ops_bytes(const std::vector<FrameOp>& ops) { return 4 + 9 * ops.size(); }
+size_t ops_bytes(size_t ops) { return 4 + 9 * ops; }
 // A pass's name, operations and state: what comes before its fragment count.
-size_t pass_head_bytes(const TracePass& p) { return 4 + p.name.size() + ops_bytes(p.frame_ops) + 2; }
+size_t pass_head_bytes(size_t name, size_t ops) { return 4 + name + ops_bytes(ops) + 2; }
 
 void put_header(Writer& w, const Trace& t, size_t passes) {
   w.bytes(kMagic, sizeof kMagic);
@@ -123,25 +125,6 @@ void put_pass_head(Writer& w, const TracePass& p) {
   w.bytes(p.name.data(), p.name.size());
   put_ops(w, p.frame_ops);
   w.u(pack_state(p.state), 2);
-}
-
-// The pixels of `t`'s vertex box within the frame: where its pixel centres and coverage
-// samples can lie.
-size_t box_pixels(const ScreenTriangle& t, const Viewport& vp) {
-  int64_t lo[2] = {INT64_MAX, INT64_MAX}, hi[2] = {INT64_MIN, INT64_MIN};
-  for (const ScreenVertex& v : t.v) {
-    lo[0] = std::min<int64_t>(lo[0], v.x), hi[0] = std::max<int64_t>(hi[0], v.x);
-    lo[1] = std::min<int64_t>(lo[1], v.y), hi[1] = std::max<int64_t>(hi[1], v.y);
-  }
-  const int64_t size[2] = {vp.width, vp.height};
-  size_t n = 1;
-  for (int a = 0; a < 2; ++a) {
-    const int64_t from = std::max<int64_t>(0, edge::floor_div(lo[a], kSubpixelOne));
-    const int64_t to = std::min<int64_t>(size[a] - 1, edge::floor_div(hi[a], kSubpixelOne));
-    if (to < from) return 0;
-    n *= size_t(to - from + 1);
-  }
-  return n;
 }
 
 // `kinds`: the frame operation codes the file's version has.
@@ -244,6 +227,17 @@ bool decode_fragment(const uint8_t* rec, int width, int height, int depth_bits, 
   return true;
 }
 
+size_t decode_fragments(const uint8_t* records, size_t n, int width, int height, int depth_bits,
+                        int samples, Fragment* out, std::string& why) {
+  for (size_t k = 0; k < n; ++k) {
+    const uint8_t* rec = records + k * kTraceFragmentBytes;
+    if (decode_fragment(rec, width, height, depth_bits, samples, out[k])) continue;
+    decode_fragment(rec, width, height, depth_bits, samples, out[k], &why);  // again, for the message
+    return k;
+  }
+  return n;
+}
+
 std::string serialize_trace(const Trace& t) {
   std::string out(serialized_size(t), '\0');
   serialize_trace(t, reinterpret_cast<uint8_t*>(out.data()));
@@ -256,10 +250,7 @@ void serialize_trace(const Trace& t, uint8_t* out) {
   for (const TracePass& p : t.passes) {
     put_pass_head(w, p);
     w.u(p.fragments.size(), 8);
-    for (const Fragment& f : p.fragments) {
-      encode_fragment(w.at(), f);
-      w.skip(kTraceFragmentBytes);
-    }
+    w.fragments(p.fragments.data(), p.fragments.size());
   }
   put_ops(w, t.final_ops);
 }
@@ -280,17 +271,14 @@ TraceCounts serialize_trace(const RasterizedScene& rs, const PassPlan& plan, uin
     head.name = p.name;
     head.frame_ops = resolve_ops(p.frame_ops, rs.background);
     head.state = p.rop;
-    room(pass_head_bytes(head) + 8);
+    room(pass_head_bytes(head.name.size(), head.frame_ops.size()) + 8);
     put_pass_head(w, head);
     uint8_t* count_at = w.at();
     w.skip(8);
     uint64_t n = 0;
     feed_stored_pass(rs, p, [&](const Fragment* f, size_t k) {
       room(k * kTraceFragmentBytes);
-      for (size_t i = 0; i < k; ++i) {
-        encode_fragment(w.at(), f[i]);
-        w.skip(kTraceFragmentBytes);
-      }
+      w.fragments(f, k);
       n += k;
     });
     Writer(count_at).u(n, 8);
@@ -298,7 +286,7 @@ TraceCounts serialize_trace(const RasterizedScene& rs, const PassPlan& plan, uin
     c.fragments += n;
   }
   const std::vector<FrameOp> final_ops = resolve_ops(plan.final_ops, rs.background);
-  room(ops_bytes(final_ops));
+  room(ops_bytes(final_ops.size()));
   put_ops(w, final_ops);
   c.bytes = size_t(w.at() - out);
   return c;
@@ -306,27 +294,25 @@ TraceCounts serialize_trace(const RasterizedScene& rs, const PassPlan& plan, uin
 
 size_t trace_bound(const RasterizedScene& rs, const PassPlan& plan) {
   const size_t stored = std::max(rs.fragments.size(), rs.line_fragments.size());
-  size_t boxes = 0;  // computed once, for the first coverage pass
-  size_t n = kHeaderBytes + ops_bytes(resolve_ops(plan.final_ops, rs.background));
-  for (const PassState& p : plan.passes) {
-    size_t most = stored;
+  size_t boxes = 0;  // a coverage pass's most: a fragment a pixel of each triangle's box
+  for (const PassState& p : plan.passes)
     if (is_coverage_pass(p.rop)) {
-      if (boxes == 0) {
-        for (const ScreenTriangle& t : rs.triangles) boxes += box_pixels(t, rs.viewport);
-        boxes = std::max<size_t>(boxes, 1);
-      }
-      most = std::max(most, boxes);
+      for (const ScreenTriangle& t : rs.triangles) boxes += coverage_box(t, rs.viewport).pixels();
+      break;
     }
-    n += pass_head_bytes(TracePass{p.name, resolve_ops(p.frame_ops, rs.background), p.rop, {}}) +
-         8 + most * kTraceFragmentBytes;
+  size_t n = kHeaderBytes + ops_bytes(plan.final_ops.size());
+  for (const PassState& p : plan.passes) {
+    const size_t most = is_coverage_pass(p.rop) ? std::max(stored, boxes) : stored;
+    n += pass_head_bytes(p.name.size(), p.frame_ops.size()) + 8 + most * kTraceFragmentBytes;
   }
   return n;
 }
 
 size_t serialized_size(const Trace& t) {
-  size_t n = kHeaderBytes + ops_bytes(t.final_ops);
+  size_t n = kHeaderBytes + ops_bytes(t.final_ops.size());
   for (const TracePass& p : t.passes)
-    n += pass_head_bytes(p) + 8 + p.fragments.size() * kTraceFragmentBytes;
+    n += pass_head_bytes(p.name.size(), p.frame_ops.size()) + 8 +
+         p.fragments.size() * kTraceFragmentBytes;
   return n;
 }
 
@@ -388,8 +374,9 @@ void scan_trace(TraceBytes& bytes, const std::string& name, const TraceScan& sca
   if (passes > kMaxPasses)
     r.fail(at_passes, fmt::format("{} passes is more than {}", passes, kMaxPasses));
   if (scan.header) scan.header(t);
-  TracePass pass;  // one pass at a time, its buffers kept for the next
-  std::vector<Fragment> block(scan.pass && !scan.fragments ? 0 : kTraceReadRecords);
+  TracePass pass;  // a pass's head: its fragments go to scan.fragments
+  std::vector<Fragment> block(kTraceReadRecords);
+  std::string why;
   for (uint64_t p = 0; p < passes; ++p) {
     const size_t at_name = r.offset();
     const uint64_t len = r.get(4, "a pass name length");
@@ -406,28 +393,18 @@ void scan_trace(TraceBytes& bytes, const std::string& name, const TraceScan& sca
     if (count > r.remaining() / kTraceFragmentBytes)
       r.fail(at_count, fmt::format("pass {}: {} fragments announced, {} bytes left", p + 1, count,
                                    r.remaining()));
-    // Into the pass whole, or block by block to scan.fragments; without either only checked.
-    const bool whole = scan.pass && !scan.fragments;
-    pass.fragments.resize(whole ? size_t(count) : 0);
-    if (!whole && scan.pass) scan.pass(pass);
+    if (scan.pass) scan.pass(pass, count);
     for (uint64_t i = 0; i < count;) {
       const size_t n = size_t(std::min<uint64_t>(count - i, kTraceReadRecords));
       const size_t at = r.offset();
       const uint8_t* records = r.take(n * kTraceFragmentBytes, "a fragment");
-      Fragment* out = whole ? &pass.fragments[size_t(i)] : block.data();
-      for (size_t k = 0; k < n; ++k) {
-        const uint8_t* rec = records + k * kTraceFragmentBytes;
-        if (!decode_fragment(rec, t.width, t.height, t.depth_bits, t.coverage_samples, out[k])) {
-          std::string why;  // again, for the message (off the per-fragment path)
-          decode_fragment(rec, t.width, t.height, t.depth_bits, t.coverage_samples, out[k], &why);
-          r.fail(at + k * kTraceFragmentBytes, why);
-        }
-      }
-      if (scan.fragments) scan.fragments(out, n);
+      const size_t good = decode_fragments(records, n, t.width, t.height, t.depth_bits,
+                                           t.coverage_samples, block.data(), why);
+      if (good < n) r.fail(at + good * kTraceFragmentBytes, why);
+      if (scan.fragments) scan.fragments(block.data(), n);
       i += n;
     }
-    if (whole) scan.pass(pass);
-    if (scan.fragments && scan.pass_end) scan.pass_end();
+    if (scan.pass_end) scan.pass_end();
   }
   const std::vector<FrameOp> final_ops = get_ops(r, "after the last pass", op_kinds);
   if (r.remaining() != 0) r.fail(r.offset(), fmt::format("{} bytes after the last pass", r.remaining()));
@@ -438,7 +415,14 @@ Trace parse_trace(std::string_view bytes, const std::string& name) {
   Trace t;
   TraceScan scan;
   scan.header = [&t](const Trace& header) { t = header; };
-  scan.pass = [&t](TracePass& p) { t.passes.push_back(std::move(p)); };
+  scan.pass = [&t](const TracePass& p, uint64_t fragments) {
+    t.passes.push_back(p);
+    t.passes.back().fragments.reserve(size_t(fragments));
+  };
+  scan.fragments = [&t](const Fragment* f, size_t n) {
+    std::vector<Fragment>& v = t.passes.back().fragments;
+    v.insert(v.end(), f, f + n);
+  };
   scan.final_ops = [&t](const std::vector<FrameOp>& ops) { t.final_ops = ops; };
   scan_trace(bytes, name, scan);
   return t;

@@ -49,6 +49,10 @@ void encode_fragment(std::string& out, const Fragment& f);
 // when given, for a fragment that fails.
 bool decode_fragment(const uint8_t* rec, int width, int height, int depth_bits, int samples,
                      Fragment& f, std::string* why = nullptr);
+// Decodes records[0, n) into out[0, n); returns n, or the index of the first that fails, with
+// what is wrong in `why`.
+size_t decode_fragments(const uint8_t* records, size_t n, int width, int height, int depth_bits,
+                        int samples, Fragment* out, std::string& why);
 
 // The trace of rendering `rs` with `plan`: every pass's state and fragments.
 Trace make_trace(const RasterizedScene& rs, const PassPlan& plan);
@@ -85,14 +89,13 @@ class TraceBytes {
   virtual const uint8_t* read(size_t at, size_t n) = 0;
 };
 
-// What scan_trace calls as it reads: the header (a Trace without passes); each pass (valid
-// until the next call, which reuses its buffers unless it was moved from); the final
-// operations. With `fragments` set, each pass's fragments go to it instead, block by block as
-// they are read (a block valid until the next call): after `pass` (its fragments empty), then
-// `pass_end`. Any may be empty.
+// What scan_trace calls as it reads, each when set: the header (a Trace without passes); each
+// pass's head (its name, operations and state; valid until the next call) with its fragment
+// count, then its fragments block by block as they are read (a block valid until the next
+// call), then pass_end; the final operations.
 struct TraceScan {
   std::function<void(const Trace&)> header;
-  std::function<void(TracePass&)> pass;
+  std::function<void(const TracePass&, uint64_t fragments)> pass;
   std::function<void(const Fragment*, size_t)> fragments;
   std::function<void()> pass_end;
   std::function<void(const std::vector<FrameOp>&)> final_ops;

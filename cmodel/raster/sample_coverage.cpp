@@ -69,6 +69,19 @@ const std::vector<SamplePos>& sample_pattern(int n) {
                               " samples; the patterns have 1, 2, 4, 8 or 16");
 }
 
+// Pixels with a sample position (256 px + 0..255) inside the vertices' box, scissored to the
+// viewport and the row range.
+PixelBox coverage_box(const ScreenTriangle& tri, const Viewport& vp, RowRange rows) {
+  const ScreenVertex(&v)[3] = tri.v;
+  PixelBox b;
+  b.x_lo = std::max<int64_t>(0, floor_div(std::min({v[0].x, v[1].x, v[2].x}), kSubpixelOne));
+  b.x_hi = std::min<int64_t>(vp.width - 1, floor_div(std::max({v[0].x, v[1].x, v[2].x}), kSubpixelOne));
+  b.y_lo = std::max<int64_t>({0, rows.begin, floor_div(std::min({v[0].y, v[1].y, v[2].y}), kSubpixelOne)});
+  b.y_hi = std::min<int64_t>({vp.height - 1, int64_t{rows.end} - 1,
+                              floor_div(std::max({v[0].y, v[1].y, v[2].y}), kSubpixelOne)});
+  return b;
+}
+
 void rasterize_coverage(const ScreenTriangle& tri, const Viewport& vp, std::vector<Fragment>& out,
                         std::vector<double>* z_exact, RowRange rows) {
   if (vp.width < 1 || vp.width > kMaxFrameSize || vp.height < 1 || vp.height > kMaxFrameSize)
@@ -80,18 +93,9 @@ void rasterize_coverage(const ScreenTriangle& tri, const Viewport& vp, std::vect
   const ScreenVertex(&v)[3] = t.v;
   const int64_t area = t.area;
 
-  // Pixels with a sample position (256 px + 0..255) inside the vertices' box, scissored to the
-  // viewport and the row range.
-  const int64_t min_x = std::min({v[0].x, v[1].x, v[2].x});
-  const int64_t max_x = std::max({v[0].x, v[1].x, v[2].x});
-  const int64_t min_y = std::min({v[0].y, v[1].y, v[2].y});
-  const int64_t max_y = std::max({v[0].y, v[1].y, v[2].y});
-  const int64_t px_lo = std::max<int64_t>(0, floor_div(min_x, kSubpixelOne));
-  const int64_t px_hi = std::min<int64_t>(vp.width - 1, floor_div(max_x, kSubpixelOne));
-  const int64_t py_lo = std::max<int64_t>({0, rows.begin, floor_div(min_y, kSubpixelOne)});
-  const int64_t py_hi =
-      std::min<int64_t>({vp.height - 1, int64_t{rows.end} - 1, floor_div(max_y, kSubpixelOne)});
-  if (px_lo > px_hi || py_lo > py_hi) return;
+  const PixelBox box = coverage_box(tri, vp, rows);
+  if (box.empty()) return;
+  const int64_t px_lo = box.x_lo, px_hi = box.x_hi, py_lo = box.y_lo, py_hi = box.y_hi;
 
   // Edge k is opposite vertex k: its value at the centre is vertex k's weight times A.
   const Edge edge[3] = {make_edge(v[1], v[2]), make_edge(v[2], v[0]), make_edge(v[0], v[1])};

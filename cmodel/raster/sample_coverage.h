@@ -2,6 +2,7 @@
 // Bit-exact rules in docs/raster.md, "Coverage".
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "rop/fragment.h"
@@ -29,5 +30,16 @@ const std::vector<SamplePos>& sample_pattern(int n);
 // `rows` scissors rows as for rasterize (raster.h): the rows kept give the same fragments.
 void rasterize_coverage(const ScreenTriangle& tri, const Viewport& vp, std::vector<Fragment>& out,
                         std::vector<double>* z_exact = nullptr, RowRange rows = {});
+
+// The pixels rasterize_coverage tests for `tri` (a fragment at most each): its vertices' box
+// (a pixel with a sample position inside it), scissored to the viewport and `rows`.
+struct PixelBox {
+  int64_t x_lo = 0, x_hi = -1, y_lo = 0, y_hi = -1;
+  bool empty() const { return x_lo > x_hi || y_lo > y_hi; }
+  uint64_t pixels() const {
+    return empty() ? 0 : uint64_t(x_hi - x_lo + 1) * uint64_t(y_hi - y_lo + 1);
+  }
+};
+PixelBox coverage_box(const ScreenTriangle& tri, const Viewport& vp, RowRange rows = {});
 
 }  // namespace zb

@@ -372,10 +372,7 @@ void RtlRop::load_region(const RegionLoad& r) {
   check_region_load(m.fb, r);  // refused before the waiting passes run
   flush();
   apply_region_load(m.fb, r);
-  const uint8_t planes = uint8_t(kPlaneColor | (r.depth.empty() ? 0 : kPlaneDepth));
-  for (int ty = r.y0 / kRtlTileH; ty <= (r.y0 + r.height - 1) / kRtlTileH; ++ty)
-    for (int tx = r.x0 / kRtlTileW; tx <= (r.x0 + r.width - 1) / kRtlTileW; ++tx)
-      m.tiles.stored(size_t(ty) * size_t(m.tiles_x()) + size_t(tx), planes);
+  m.tiles.loaded(r);
 }
 
 const Framebuffer& RtlRop::framebuffer() const {

@@ -119,10 +119,11 @@ uint64_t tile_io_cycles(uint64_t beats, const TileIo& io) {
 
 TileStates::TileStates(int width, int height, int tile, int depth_bits, Rgba8 clear_color,
                        const WboitFormat& wboit)
-    : depth_bits_(depth_bits), accum_clear_(accum_clear_word(wboit)) {
+    : depth_bits_(depth_bits), tile_(tile), columns_((width + tile - 1) / tile),
+      accum_clear_(accum_clear_word(wboit)) {
   if (width < 1 || height < 1 || tile < 1)
     throw std::invalid_argument("tile states: empty frame or tile");
-  const size_t n = size_t((width + tile - 1) / tile) * size_t((height + tile - 1) / tile);
+  const size_t n = size_t(columns_) * size_t((height + tile - 1) / tile);
   std::array<Plane, kTilePlanes> fresh;
   fresh[0] = {true, pack_rgba(clear_color)};
   fresh[1] = {true, depth_max(depth_bits)};
@@ -333,6 +334,13 @@ bool parse_schedule(const std::string& name, TileSchedule& out) {
   else if (name == "tile") out = TileSchedule::kTile;
   else return false;
   return true;
+}
+
+void TileStates::loaded(const RegionLoad& r) {
+  const uint8_t planes = uint8_t(kPlaneColor | (r.depth.empty() ? 0 : kPlaneDepth));
+  for (int ty = r.y0 / tile_; ty <= (r.y0 + r.height - 1) / tile_; ++ty)
+    for (int tx = r.x0 / tile_; tx <= (r.x0 + r.width - 1) / tile_; ++tx)
+      stored(size_t(ty) * size_t(columns_) + size_t(tx), planes);
 }
 
 void TileStates::stored(size_t tile, uint8_t planes) {

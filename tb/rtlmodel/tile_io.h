@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "rop/backend.h"
 #include "rop/fragment.h"
 #include "rop/framebuffer.h"
 #include "rtl_params.h"
@@ -203,6 +204,9 @@ class TileStates {
     return !steps.empty() && !steps.back().pass && resolves(steps.back().op.kind);
   }
   void stored(size_t tile, uint8_t planes);  // the pass stored these planes of the tile
+  // A region loaded into the frame (Backend::load_region): every tile it covers holds its
+  // colour (and depth) in the frame now, loaded at the tile's next pass.
+  void loaded(const RegionLoad& r);
 
  private:
   struct Plane {
@@ -210,6 +214,7 @@ class TileStates {
     uint32_t value = 0;
   };
   int depth_bits_ = 24;
+  int tile_ = 1, columns_ = 1;
   AccumWord accum_clear_;
   std::vector<std::array<Plane, kTilePlanes>> planes_;
   void apply(std::array<Plane, kTilePlanes>& t, const FrameOp& op) const;

@@ -146,7 +146,7 @@ TEST(Trace, BlocksGiveThePassWhole) {
   std::vector<zb::Fragment> got;
   std::vector<std::string> calls;
   zb::TraceScan scan;
-  scan.pass = [&](zb::TracePass& p) {
+  scan.pass = [&](const zb::TracePass& p, uint64_t) {
     EXPECT_TRUE(p.fragments.empty());
     calls.push_back("pass " + p.name);
   };
