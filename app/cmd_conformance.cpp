@@ -32,7 +32,7 @@ struct ExportOptions {
 };
 
 struct CheckOptions {
-  std::string suite, out, tests;
+  std::string suite, out, tests, arithmetic;
   bool no_accum = false;
   bool quick = false;
 };
@@ -102,6 +102,7 @@ void run_check(const CLI::App& cmd, const CheckOptions& o) {
   std::vector<cf::TestResult> results;
   std::string chosen;  // how the tests were chosen, when by the run in OUT
   bool no_accum = o.no_accum;
+  std::string arith_name = o.arithmetic.empty() ? "zblend" : o.arithmetic;
   try {
     // Neither --tests nor --quick: the tests the run in OUT simulated, when a run left its
     // results there, so a --quick or subset run is not judged by the tests it never ran.
@@ -114,10 +115,19 @@ void run_check(const CLI::App& cmd, const CheckOptions& o) {
         only.names = run->tests;
         // As the run checked them: a DUT it found without the plane, as --no-accum.
         no_accum = no_accum || !run->accum_plane;
+        if (o.arithmetic.empty()) arith_name = run->arithmetic;  // as the run declared it
         chosen = fmt::format(" (the tests the run simulated{}, {})",
                              run->accum_plane ? "" : ", without the accumulation plane", only.from);
       }
     }
+    const std::optional<zb::Arithmetic> arith = zb::parse_arithmetic(arith_name);
+    if (!arith)
+      throw UsageError(fmt::format("--arithmetic: '{}' is not an arithmetic: zblend, or <each|sum>-"
+                                   "<zblend|round255|floor256|ceil256|round256>[-one256] "
+                                   "(docs/datapath.md \"Declared arithmetic\")", arith_name));
+    if (!arith->is_zblend())
+      chosen += fmt::format(" (arithmetic {}: the expected planes are the streams replayed in it)",
+                            arith_name);
     // A failed test's line ends with the command that shows its first wrong pixel's history.
     const std::string program = command_of(*cmd.get_parent());
     results = cf::check_suite(o.suite, o.out, only, !no_accum, [&](const cf::TestResult& r) {
@@ -127,7 +137,7 @@ void run_check(const CLI::App& cmd, const CheckOptions& o) {
         fmt::print("{}; why: {} pixel {} {} --at {},{}\n", r.line, program, shell_word(o.suite),
                    r.name, r.first_x, r.first_y);
       std::fflush(stdout);
-    });
+    }, *arith);
   } catch (const cf::ConformanceError& e) {
     throw UsageError(e.what());
   }
@@ -182,6 +192,10 @@ void add_conformance_commands(CLI::App& parent) {
   chk->add_flag("--no-accum", c->no_accum,
                 "The DUT has no accumulation plane: skip the tests that need it (reported as "
                 "skip, not pass) and read no got.accum.hex");
+  chk->add_option("--arithmetic", c->arithmetic,
+                  "The DUT's declared blend arithmetic (docs/datapath.md \"Declared arithmetic\"): "
+                  "zblend (the default), sum-round255, sum-ceil256, ...; the expected planes are "
+                  "the streams replayed in it (default: the run's, by its results.json)");
   chk->callback([chk, c] { run_check(*chk, *c); });
   add_reach_command(*cmd);
   add_suite_pixel_command(*cmd);

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "geometry/geometry.h"
+#include "rop/rop.h"
 #include "sha256.h"
 #include "suite.h"
 #include "vectors.h"
@@ -225,7 +226,7 @@ PlaneCheck check_plane(const ManifestTest& t, Plane plane, const std::vector<std
 }
 
 TestResult check_test(const fs::path& suite, const fs::path& out, const ManifestTest& t,
-                      bool dut_accum) {
+                      bool dut_accum, const Arithmetic& arithmetic) {
   // The expected planes, held to the manifest's hash first: a damaged suite is not a DUT failure.
   std::string expect_text[std::size(kPlanes)];
   Sha256 hash;
@@ -242,6 +243,14 @@ TestResult check_test(const fs::path& suite, const fs::path& out, const Manifest
     throw ConformanceError(fmt::format("SUITE {}: the expect files of test '{}' do not match its "
                                        "signature_sha256 (export the suite again)",
                                        suite.string(), t.name));
+  if (!arithmetic.is_zblend()) {
+    // The DUT's own arithmetic: the stream (verified above) replayed in it.
+    GoldenRop golden;
+    golden.set_arithmetic(arithmetic);
+    replay_trace(read_stream((suite / t.name / "stream.hex").string()), golden);
+    for (size_t p = 0; p < std::size(kPlanes); ++p)
+      expect_text[p] = plane_hex(golden.framebuffer(), kPlanes[p]);
+  }
   TestResult r{t.name, true, false, ""};
   if (t.needs_accum && !dut_accum) {
     r.skipped = true;
@@ -304,6 +313,7 @@ std::optional<RunRecord> read_run(const std::string& out) {
   try {
     const json j = json::parse(*text);
     run.accum_plane = j.value("accum_plane", true);
+    run.arithmetic = j.value("arithmetic", std::string("zblend"));
     for (const json& t : j.at("tests")) {
       const std::string verdict = t.at("verdict").get<std::string>();
       // Simulated: it has got files, or lacks them as a failure (not_supported and not_run
@@ -319,7 +329,8 @@ std::optional<RunRecord> read_run(const std::string& out) {
 
 std::vector<TestResult> check_suite(const std::string& suite, const std::string& out,
                                     const Selection& only, bool dut_accum,
-                                    const std::function<void(const TestResult&)>& report) {
+                                    const std::function<void(const TestResult&)>& report,
+                                    const Arithmetic& arithmetic) {
   const std::vector<ManifestTest> tests = read_manifest(suite);
   verify_files(suite, tests);
   const std::vector<std::string>& names = only.names;
@@ -334,7 +345,7 @@ std::vector<TestResult> check_suite(const std::string& suite, const std::string&
   for (const ManifestTest& t : tests) {
     if (!names.empty() && std::find(names.begin(), names.end(), t.name) == names.end()) continue;
     if (only.quick && t.tier != "quick") continue;
-    results.push_back(check_test(suite, out, t, dut_accum));
+    results.push_back(check_test(suite, out, t, dut_accum, arithmetic));
     if (report) report(results.back());
   }
   if (only.quick && results.empty())

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "rop/arithmetic.h"
+
 namespace zb::conformance {
 
 struct TestResult {
@@ -32,6 +34,7 @@ std::vector<std::string> verified_test_names(const std::string& suite);
 struct RunRecord {
   std::vector<std::string> tests;
   bool accum_plane = true;
+  std::string arithmetic = "zblend";  // the profile's declared arithmetic (its name)
 };
 // nullopt when OUT has no results.json. Throws ConformanceError on one it cannot read.
 std::optional<RunRecord> read_run(const std::string& out);
@@ -48,9 +51,12 @@ struct Selection {
 // plane is skipped and no test's got.accum.hex is read. A malformed or corrupt suite (manifest,
 // files against their SHA-256, expect files against their signature_sha256), a selected name
 // that is not a test or an empty quick tier throws ConformanceError; a got file that is missing
-// or malformed fails its test.
+// or malformed fails its test. Under a declared arithmetic other than zblend's (docs/datapath.md
+// "Declared arithmetic") the expected planes are the test's stream replayed on the golden model
+// in that arithmetic, not the expect files (which are still held to their hashes).
 std::vector<TestResult> check_suite(const std::string& suite, const std::string& out,
                                     const Selection& only, bool dut_accum,
-                                    const std::function<void(const TestResult&)>& report);
+                                    const std::function<void(const TestResult&)>& report,
+                                    const Arithmetic& arithmetic = {});
 
 }  // namespace zb::conformance

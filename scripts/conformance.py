@@ -42,6 +42,7 @@ import hashlib
 import json
 import math
 import os
+import re
 import shlex
 import shutil
 import subprocess
@@ -83,7 +84,21 @@ FEATURES = (["blend." + b for b in ("replace", "alpha", "additive", "coverage", 
             + ["depth_write", "color_mask", "peel_test", "accum_plane"]
             + [f"depth_bits.{b}" for b in range(8, 33)] + [f"coverage_samples.{n}" for n in
                                                              (1, 2, 4, 8, 16)])
-PROFILE_KEYS = {"dut", "features", "params", "retire_port", "resident_tile", "sources", "defines"}
+PROFILE_KEYS = {"dut", "features", "params", "retire_port", "resident_tile", "sources", "defines",
+                "adapter_version", "arithmetic"}
+# A declared arithmetic's name (docs/datapath.md "Declared arithmetic"; rop/arithmetic.h): the
+# checker replays the streams in it. zblend's is the default.
+ARITHMETIC = re.compile(r"zblend|(each|sum)-(zblend|round255|floor256|ceil256|round256)(-one256)?")
+# The adapter interface's versions (docs/conformance.md "Adapter versions"): each adds ports, and
+# the testbench connects only a version's own (ZB_CONF_ADAPTER_V<N>), so an adapter written for
+# an earlier version keeps building; what its ports cannot carry is NOT SUPPORTED, with the reason.
+ADAPTER_VERSION = 7
+ADAPTER_LACKS = {  # version: (the features it cannot run, why)
+    6: (["blend.layers", "layers.*"],
+        "adapter version 6 has no layers port (state_layers_i, st_resolve_i, layers_o came with "
+        "version 7)"),
+    7: ([], ""),
+}
 
 
 # The waves' save file: the testbench's signals by role (zb_conf_tb.sv), hex for buses.
@@ -213,7 +228,7 @@ def load_suite(suite):
 def load_profile(path, features_arg):
     """The DUT's profile: {features, params, retire_port, sources, defines, dut, path}."""
     prof = {"features": [], "params": {}, "retire_port": False, "resident_tile": False,
-            "sources": [], "defines": [], "dut": "", "path": path}
+            "sources": [], "defines": [], "dut": "", "path": path, "arithmetic": "zblend"}
     try:
         with open(path) as f:
             j = json.load(f)
@@ -241,6 +256,15 @@ def load_profile(path, features_arg):
             usage_error(f"feature {pattern!r} (in {'--features' if features_arg else path}) names "
                         f"no feature; they are: {', '.join(FEATURES[:18])}, depth_bits.N, "
                         "coverage_samples.N (globs allowed)")
+    if not isinstance(prof["arithmetic"], str) or not ARITHMETIC.fullmatch(prof["arithmetic"]):
+        usage_error(f"--profile {path}: arithmetic: {prof['arithmetic']!r} is not an arithmetic: "
+                    "zblend, or <each|sum>-<zblend|round255|floor256|ceil256|round256>[-one256] "
+                    "(docs/datapath.md \"Declared arithmetic\")")
+    v = prof.get("adapter_version")
+    if v is not None and (isinstance(v, bool) or v not in ADAPTER_LACKS):
+        usage_error(f"--profile {path}: adapter_version: {v!r} is not one of "
+                    f"{', '.join(map(str, sorted(ADAPTER_LACKS)))} (docs/conformance.md "
+                    "\"Adapter versions\")")
     for k in ("retire_port", "resident_tile"):
         if not isinstance(prof[k], bool):
             usage_error(f"--profile {path}: {k}: {prof[k]!r} is not true or false")
@@ -254,6 +278,31 @@ def missing_features(test, prof):
     """The test's features the profile does not cover."""
     return [f for f in test["features"]
             if not any(fnmatch.fnmatchcase(f, p) for p in prof["features"])]
+
+
+def adapter_version(prof, sources):
+    """The adapter's interface version: the profile's adapter_version, else read off the
+    adapter's ports (a profile written before the key existed): version 7's layers port, or 6.
+    Returns (version, how it was known)."""
+    if prof.get("adapter_version") is not None:
+        return prof["adapter_version"], "the profile's adapter_version"
+    for f in sources:
+        try:
+            with open(f, errors="replace") as fh:
+                text = fh.read()
+        except OSError:
+            continue
+        m = re.search(r"\bmodule\s+zb_conf_adapter\b(.*?)\);", text, re.S)
+        if m:
+            v = 7 if re.search(r"\bstate_layers_i\b", m.group(1)) else 6
+            return v, f"read off {os.path.basename(f)}'s ports; the profile names no adapter_version"
+    return ADAPTER_VERSION, "no module zb_conf_adapter found in the sources: the current version"
+
+
+def adapter_lacks(test, version):
+    """The test's features that the adapter's interface version cannot carry."""
+    globs = ADAPTER_LACKS[version][0]
+    return [f for f in test["features"] if any(fnmatch.fnmatchcase(f, g) for g in globs)]
 
 
 def select(tests, globs, feature_globs):
@@ -281,6 +330,8 @@ def build(sim, config, a, bdir):
     sources = (a.dut or a.prof["sources"]) + a.extra_sources
     tb = [os.path.join(SV, "zb_conf_tb.sv")]
     defines = list(a.prof["defines"]) + list(a.define)
+    if a.adapter_version != ADAPTER_VERSION:
+        defines.append(f"ZB_CONF_ADAPTER_V{a.adapter_version}")
     if a.lockstep:
         defines.append("ZB_CONF_LOCKSTEP")
         tb = [os.path.join(SV, "zb_golden_pkg.sv"),
@@ -408,6 +459,7 @@ def write_results(a, results, counts, suite_version, no_accum):
     doc = {"suite": a.suite, "suite_version": suite_version, "sim": a.sim,
            "timing": a.timing, "schedule": a.schedule, "seed": a.seed,
            "profile": a.prof["path"], "dut": a.prof["dut"], "accum_plane": not no_accum,
+           "adapter_version": a.adapter_version, "arithmetic": a.prof["arithmetic"],
            "counts": counts, "tests": results}
     with open(os.path.join(a.out, "results.json"), "w") as f:
         json.dump(doc, f, indent=2)
@@ -445,6 +497,7 @@ def check_tests(a, names, no_accum):
     check = [a.zblend] + sub + [a.suite, a.out, "--tests", ",".join(names)]
     if no_accum:
         check.append("--no-accum")
+    check += ["--arithmetic", a.prof["arithmetic"]]
     p = subprocess.run(check, stdout=subprocess.PIPE, text=True)
     sys.stdout.write(p.stdout)
     if p.returncode == 2:
@@ -468,6 +521,9 @@ def main():
     ap.add_argument("--out", required=True, help="got signatures, logs, results and the builds")
     ap.add_argument("--profile", default=DEFAULT_PROFILE,
                     help="the DUT's profile, JSON (default: zb_rop's, conformance/sv/zb_rop.profile.json)")
+    ap.add_argument("--arithmetic", default=None, metavar="NAME",
+                    help="the DUT's blend arithmetic, in place of the profile's (docs/datapath.md "
+                         "\"Declared arithmetic\": zblend, sum-round255, sum-ceil256, ...)")
     ap.add_argument("--features", default=None, metavar="GLOBS",
                     help="comma-separated features the DUT supports, in place of the profile's")
     ap.add_argument("--tests", default="", metavar="GLOBS",
@@ -538,6 +594,15 @@ def main():
             usage_error(f"--param {name}: set by each test's configuration in the suite")
         a.params[name] = int(value)
     a.prof = load_profile(a.profile, a.features)
+    if a.arithmetic is not None:
+        if not ARITHMETIC.fullmatch(a.arithmetic):
+            usage_error(f"--arithmetic {a.arithmetic!r}: not an arithmetic: zblend, or <each|sum>-"
+                        "<zblend|round255|floor256|ceil256|round256>[-one256]")
+        a.prof["arithmetic"] = a.arithmetic
+    if a.arithmetic is not None or a.prof["arithmetic"] != "zblend":
+        print(f"conformance: declared arithmetic {a.prof['arithmetic']}: the expected planes "
+              "are the streams replayed in it", file=sys.stderr)
+        a.plusarg = list(a.plusarg) + [f"+zb_arith={a.prof['arithmetic']}"]
     a.ours = not a.dut and os.path.abspath(a.profile) == DEFAULT_PROFILE
     if not a.dut and not a.prof["sources"]:
         usage_error(f"--profile {a.profile} lists no sources: give them there or with --dut")
@@ -572,18 +637,30 @@ def main():
     if a.quick:
         all_tests = [t for t in all_tests if t.get("tier") == "quick"]
     tests = select(all_tests, [g for g in a.tests.split(",") if g], a.feature)
+    a.adapter_version, how = adapter_version(a.prof, a.dut or a.prof["sources"])
+    print(f"conformance: adapter interface version {a.adapter_version} ({how})",
+          file=sys.stderr)
     unsupported = {t["name"]: missing_features(t, a.prof) for t in tests}
     unsupported = {k: v for k, v in unsupported.items() if v}
+    # Tests the profile allows but the adapter's interface version cannot carry.
+    by_adapter = {t["name"]: adapter_lacks(t, a.adapter_version) for t in tests
+                  if t["name"] not in unsupported}
+    by_adapter = {k: v for k, v in by_adapter.items() if v}
     if a.list:
         for t in tests:
             miss = unsupported.get(t["name"])
-            print(f"{'NOT SUPPORTED' if miss else 'supported':13}  {t['name']:32} "
-                  + (f"needs {', '.join(miss)}" if miss else ", ".join(t["features"])))
+            lacks = by_adapter.get(t["name"])
+            why = (f"needs {', '.join(miss)}" if miss else
+                   f"{ADAPTER_LACKS[a.adapter_version][1]} ({', '.join(lacks)})" if lacks else
+                   ", ".join(t["features"]))
+            print(f"{'NOT SUPPORTED' if miss or lacks else 'supported':13}  {t['name']:32} {why}")
+        unsupported = {**unsupported, **by_adapter}
         print(f"{len(tests) - len(unsupported)} of {len(tests)} selected tests supported by the "
-              f"profile ({'--features' if a.features is not None else a.profile})")
+              f"profile ({'--features' if a.features is not None else a.profile}) and the "
+              f"adapter (version {a.adapter_version})")
         return
     os.makedirs(a.out, exist_ok=True)
-    to_run = [t for t in tests if t["name"] not in unsupported]
+    to_run = [t for t in tests if t["name"] not in unsupported and t["name"] not in by_adapter]
 
     by_config = {}
     for t in to_run:
@@ -641,6 +718,8 @@ def main():
         if name in unsupported:
             r.update(verdict="not_supported",
                      message=f"needs {', '.join(unsupported[name])}, not in the profile")
+        elif name in by_adapter:
+            r.update(verdict="not_supported", message=ADAPTER_LACKS[a.adapter_version][1])
         elif name not in sims:
             r.update(verdict="not_run", message="--first-fail: an earlier test failed")
         else:
@@ -672,8 +751,11 @@ def main():
             print("conformance: NOT SUPPORTED by the profile: " + ", ".join(
                 f"{k} ({v} tests)" for k, v in sorted(needs.items(), key=lambda kv: -kv[1])),
                 file=sys.stderr)
+        if by_adapter:
+            print(f"conformance: NOT SUPPORTED by the adapter's interface: {len(by_adapter)} "
+                  f"tests: {ADAPTER_LACKS[a.adapter_version][1]}", file=sys.stderr)
         skipped = sum(r["verdict"] == "not_supported" and r["name"] not in unsupported
-                      for r in results)
+                      and r["name"] not in by_adapter for r in results)
         if skipped:
             print(f"conformance: NOT SUPPORTED by the DUT (skipped by the testbench: planes_o, "
                   f"layers_o): {skipped} tests", file=sys.stderr)

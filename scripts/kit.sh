@@ -75,6 +75,7 @@ printf 'kit %s\ncommit %s\nsuite %s\n' "$version" "$(git rev-parse HEAD 2>/dev/n
   "$suite_version" >"$out/$name/share/zblend-conformance/VERSION"
 suite=zblend-conformance-suite-v$suite_version
 mv "$out/suite" "$out/$suite"
+cp LICENSE "$out/$suite/LICENSE"  # the suite is zblend's work too: Apache-2.0
 (cd "$out/$suite" && find . -type f ! -name SHA256SUMS -printf '%P\n' | LC_ALL=C sort | xargs sha256sum >SHA256SUMS)
 
 # The staged kit as a team would use it: the module finds lib/ by the layout, no ZBGOLDEN_LIB.

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 
+#include "arithmetic.h"
 #include "fixed.h"
 
 namespace zb {
@@ -13,20 +14,17 @@ namespace zb {
 // x*y/255 rounded to nearest for all but 24 of the 65536 pairs, where the fraction is just
 // over one half and it rounds down (tests/rop/test_blend.cpp counts them).
 constexpr uint8_t mul_unorm8(uint8_t x, uint8_t y) {
-  const uint32_t t = uint32_t{x} * y;
-  return static_cast<uint8_t>((t + (t >> 8) + 0x80u) >> 8);
+  return static_cast<uint8_t>(divide(Divide::kZblend, uint32_t{x} * y));
 }
 
-// Alpha blend of one channel: min(255, m(s, a) + m(d, 255 - a)).
+// Alpha blend of one channel: min(255, m(s, a) + m(d, 255 - a)), zblend's rule of arithmetic.h.
 constexpr uint8_t blend_alpha(uint8_t s, uint8_t a, uint8_t d) {
-  const uint32_t v = uint32_t{mul_unorm8(s, a)} + mul_unorm8(d, static_cast<uint8_t>(255 - a));
-  return static_cast<uint8_t>(v > 255u ? 255u : v);
+  return blend_alpha(Arithmetic{}, s, a, d);
 }
 
 // Additive blend of one channel: min(255, d + m(s, a)).
 constexpr uint8_t blend_additive(uint8_t s, uint8_t a, uint8_t d) {
-  const uint32_t v = uint32_t{d} + mul_unorm8(s, a);
-  return static_cast<uint8_t>(v > 255u ? 255u : v);
+  return blend_additive(Arithmetic{}, s, a, d);
 }
 
 // Under blend (front-to-back accumulation, depth peeling; docs/datapath.md "Under blend"):

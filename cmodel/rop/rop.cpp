@@ -29,6 +29,19 @@ Rgba8 blend(BlendMode mode, Rgba8 s, Rgba8 d) {
   return s;
 }
 
+Rgba8 blend(const Arithmetic& r, BlendMode mode, Rgba8 s, Rgba8 d) {
+  switch (mode) {
+    case BlendMode::kAlpha:
+      return {blend_alpha(r, s.r, s.a, d.r), blend_alpha(r, s.g, s.a, d.g),
+              blend_alpha(r, s.b, s.a, d.b), blend_alpha(r, s.a, s.a, d.a)};
+    case BlendMode::kAdditive:
+      return {blend_additive(r, s.r, s.a, d.r), blend_additive(r, s.g, s.a, d.g),
+              blend_additive(r, s.b, s.a, d.b), blend_additive(r, s.a, s.a, d.a)};
+    default:
+      return blend(mode, s, d);
+  }
+}
+
 namespace {
 
 // w of the N samples from p, the rest from d, every channel (alpha too).
@@ -193,7 +206,8 @@ PixelWrites GoldenRop::process(const Fragment& f) {
     return w;
   }
   const Rgba8 d = fb_.color[i];
-  fb_.color[i] = w.rgba = apply_color_mask(state_.color_mask, blend(state_.blend, f.color, d), d);
+  const Rgba8 b = declared_ ? blend(arith_, state_.blend, f.color, d) : blend(state_.blend, f.color, d);
+  fb_.color[i] = w.rgba = apply_color_mask(state_.color_mask, b, d);
   w.color = true;
   ++stats_.color_writes;
   return w;

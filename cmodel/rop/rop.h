@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 
+#include "arithmetic.h"
 #include "backend.h"
 
 namespace zb {
@@ -32,6 +33,9 @@ inline bool depth_test(DepthFunc func, uint32_t z, uint32_t stored) {
 
 // The colour the blend unit produces from source `s` and destination `d`.
 Rgba8 blend(BlendMode mode, Rgba8 s, Rgba8 d);
+// The same under a declared arithmetic (arithmetic.h): the alpha and additive blends by its
+// rule, every other mode as blend() (they are zblend's own operations).
+Rgba8 blend(const Arithmetic& r, BlendMode mode, Rgba8 s, Rgba8 d);
 
 // Merges `blended` into `d` under the colour write mask.
 Rgba8 apply_color_mask(uint8_t mask, Rgba8 blended, Rgba8 d);
@@ -101,12 +105,22 @@ class GoldenRop final : public Backend {
   // when its coverage exceeds the frame's sample count.
   PixelWrites process(const Fragment& f);
 
+  // The blend arithmetic a DUT declares (the conformance path); zblend's by default. Kept
+  // across frames.
+  void set_arithmetic(const Arithmetic& r) {
+    arith_ = r;
+    declared_ = !r.is_zblend();
+  }
+  Arithmetic arithmetic() const { return arith_; }
+
  private:
   PixelWrites process_coverage(const Fragment& f);
 
   Framebuffer fb_;
   RopState state_;
   PassStats stats_;
+  Arithmetic arith_;
+  bool declared_ = false;  // arith_ is not zblend's: the colour path asks it
 };
 
 }  // namespace zb

@@ -9,6 +9,7 @@
 #include <exception>
 #include <memory>
 #include <new>
+#include <optional>
 #include <string>
 
 #include <fmt/core.h>
@@ -229,6 +230,22 @@ int zb_golden_set_wboit(zb_golden* g, int acc_bits, int rev_bits, int weight_bit
     // Nothing has drawn yet, so every pixel still holds the frame's clear colour.
     const zb::Framebuffer& fb = h.rop.framebuffer();
     h.rop.begin_frame(fb.width, fb.height, fb.depth_bits, fb.color[0], fb.coverage_samples, f);
+    return kOk;
+  });
+}
+
+int zb_golden_set_arithmetic(zb_golden* g, const char* name) {
+  return guarded(g, "zb_golden_set_arithmetic", [&](zb_golden& h) -> Failure {
+    if (h.in_pass)
+      return {ZB_EORDER, "a pass is open: the arithmetic changes between passes (end it with "
+                         "zb_golden_end_pass first)"};
+    const std::optional<zb::Arithmetic> r =
+        name ? zb::parse_arithmetic(name) : std::optional<zb::Arithmetic>{};
+    if (!r)
+      return {ZB_EARG, fmt::format("'{}' is not an arithmetic: zblend, or <each|sum>-<zblend|"
+                                   "round255|floor256|ceil256|round256>[-one256] (docs/datapath.md "
+                                   "\"Declared arithmetic\")", name ? name : "(null)")};
+    h.rop.set_arithmetic(*r);
     return kOk;
   });
 }

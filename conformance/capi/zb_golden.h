@@ -74,6 +74,12 @@ int zb_golden_create(zb_golden** out, int width, int height, int depth_bits,
  * operation. */
 int zb_golden_set_wboit(zb_golden* g, int acc_bits, int rev_bits, int weight_bits);
 
+/* The blend arithmetic the DUT declares (docs/datapath.md "Declared arithmetic"), by name:
+ * "zblend" (the default), or "<each|sum>-<zblend|round255|floor256|ceil256|round256>" with an
+ * optional "-one256" (for example "sum-round255", "sum-ceil256"). It rules the alpha and additive
+ * blends from the next push on; allowed between passes. */
+int zb_golden_set_arithmetic(zb_golden* g, const char* name);
+
 /* Frees the handle; NULL is allowed and does nothing. */
 void zb_golden_destroy(zb_golden* g);
 

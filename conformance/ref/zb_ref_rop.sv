@@ -102,15 +102,50 @@ module zb_ref_rop #(
     return 8'(s >> 8);
   endfunction
 
+  // A declared arithmetic other than zblend's (docs/datapath.md "Declared arithmetic"): the
+  // alpha and additive blends divide their sum once. ZB_REF_ARITH_SUM_ROUND255 (t / 255 rounded
+  // half up: c = t + 128, (c + (c >> 8)) >> 8), _CEIL256 ((t + 255) >> 8), _FLOOR256 (t >> 8);
+  // the profile says which ("arithmetic"). The quotient is at most 9 bits (the additive sum
+  // reaches 2 * 65025).
+`ifdef ZB_REF_ARITH_SUM_ROUND255
+  `define ZB_REF_ARITH_SUM
+`elsif ZB_REF_ARITH_SUM_CEIL256
+  `define ZB_REF_ARITH_SUM
+`elsif ZB_REF_ARITH_SUM_FLOOR256
+  `define ZB_REF_ARITH_SUM
+`endif
+`ifdef ZB_REF_ARITH_SUM
+  function automatic logic [8:0] sum_div(input logic [17:0] t);
+    logic [17:0] c;
+`ifdef ZB_REF_ARITH_SUM_ROUND255
+    c = t + 18'h80;
+    c = (c + (c >> 8)) >> 8;
+`elsif ZB_REF_ARITH_SUM_CEIL256
+    c = (t + 18'hff) >> 8;
+`else
+    c = t >> 8;
+`endif
+    return c > 18'd255 ? 9'd256 : 9'(c);
+  endfunction
+`endif
+
   // One channel of the alpha blend: min(255, m(s, a) + m(d, 255 - a)); the alpha channel is the
   // same with s = a.
   function automatic logic [7:0] blend_alpha(input logic [7:0] s, input logic [7:0] d,
                                              input logic [7:0] a);
     logic [8:0] sum;
+`ifdef ZB_REF_ARITH_SUM
+    logic [7:0] inv;
+`endif
 `ifdef ZB_REF_DEFECT_ALPHA_OPAQUE_MSB
     if (a[7]) return s;  // the defect: an "opaque" fast path keyed on the alpha's top bit
 `endif
+`ifdef ZB_REF_ARITH_SUM
+    inv = 8'd255 - a;
+    sum = sum_div(18'(16'(s) * 16'(a)) + 18'(16'(d) * 16'(inv)));
+`else
     sum = 9'(unorm_mul(s, a)) + 9'(unorm_mul(d, 8'd255 - a));
+`endif
     return sum > 9'd255 ? 8'd255 : 8'(sum);
   endfunction
 
@@ -316,7 +351,11 @@ module zb_ref_rop #(
   function automatic logic [7:0] blend_add(input logic [7:0] s, input logic [7:0] d,
                                            input logic [7:0] a);
     logic [8:0] sum;
+`ifdef ZB_REF_ARITH_SUM
+    sum = sum_div(18'(16'(s) * 16'(a)) + 18'(16'(d) * 16'd255));
+`else
     sum = 9'(d) + 9'(unorm_mul(s, a));
+`endif
     return sum > 9'd255 ? 8'd255 : 8'(sum);
   endfunction
 

@@ -66,11 +66,16 @@ module zb_conf_scoreboard
     $fatal(1, "zb_conf: the first wrong write");
   endfunction
 
+  string arith;
+
   function automatic void begin_frame(input int unsigned width, input int unsigned height,
                                       input int unsigned depth_bits, input int unsigned samples,
                                       input int unsigned clear_rgba, input int weight_bits);
     check(zb_golden_create(golden, width, height, depth_bits, samples, clear_rgba), "create");
     check(zb_golden_set_wboit(golden, ACC_BITS, REV_BITS, weight_bits), "set_wboit");
+    // The DUT's declared arithmetic (conformance.py from the profile): +zb_arith=NAME.
+    if ($value$plusargs("zb_arith=%s", arith))
+      check(zb_golden_set_arithmetic(golden, arith), "set_arithmetic");
     pass_no = 0;
     checked = 0;
   endfunction

@@ -34,6 +34,10 @@ int zb_dpi_set_wboit(void* handle, int acc_bits, int rev_bits, int weight_bits) 
   return zb_golden_set_wboit(golden(handle), acc_bits, rev_bits, weight_bits);
 }
 
+int zb_dpi_set_arithmetic(void* handle, const char* name) {
+  return zb_golden_set_arithmetic(golden(handle), name);
+}
+
 int zb_dpi_begin_pass(void* handle, unsigned int state) {
   return zb_golden_begin_pass(golden(handle), state);
 }

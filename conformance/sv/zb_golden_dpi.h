@@ -15,6 +15,7 @@ int zb_dpi_create(void** handle, int width, int height, int depth_bits, int cove
                   unsigned int clear_rgba);
 void zb_dpi_destroy(void* handle);
 int zb_dpi_set_wboit(void* handle, int acc_bits, int rev_bits, int weight_bits);
+int zb_dpi_set_arithmetic(void* handle, const char* name);
 int zb_dpi_begin_pass(void* handle, unsigned int state);
 int zb_dpi_push(void* handle, int x, int y, unsigned int z, unsigned int rgba, int coverage,
                 unsigned int* wrote, unsigned int* depth, unsigned int* coverage_out,

@@ -54,6 +54,10 @@ package zb_golden_pkg;
   import "DPI-C" zb_dpi_set_wboit = function int zb_golden_set_wboit(
       input chandle handle, input int acc_bits, input int rev_bits, input int weight_bits);
 
+  // The blend arithmetic the DUT declares, by name (docs/datapath.md "Declared arithmetic").
+  import "DPI-C" zb_dpi_set_arithmetic = function int zb_golden_set_arithmetic(
+      input chandle handle, input string name);
+
   // The 16-bit pass state register (docs/datapath.md "The pass state"; zb_pass_state below).
   import "DPI-C" zb_dpi_begin_pass = function int zb_golden_begin_pass(
       input chandle handle, input int unsigned state);

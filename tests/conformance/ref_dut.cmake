@@ -52,6 +52,41 @@ if(NOT ZBLEND_SANITIZE)
   add_test(NAME conformance_ref_pipe
            COMMAND ${ref} pass verilator ${suite} ${w}/ref-pipe ${zb} "" 97 107
                    --profile ${refdir}/profile_pipe.json)
+  # Upgrading the kit never breaks an adapter (docs/conformance.md "Adapter versions"): the
+  # second DUT's adapter as it was at interface version 6 (tests/conformance/adapter_v6, before
+  # the layers port) builds and passes what it passed on both simulators; today's adapter, of
+  # version 7, is conformance_ref_verilator's. Then the versions read off the ports, without a run.
+  set(v6 ${CMAKE_CURRENT_SOURCE_DIR}/adapter_v6/profile.json)
+  add_test(NAME conformance_adapter_v6_verilator
+           COMMAND ${ref} pass verilator ${suite} ${w}/adapter-v6-verilator ${zb} "" 84 120
+                   --profile ${v6})
+  add_test(NAME conformance_adapter_v6_icarus
+           COMMAND ${ref} pass icarus ${suite} ${w}/adapter-v6-icarus ${zb} "cad-*,random-core" 11 12
+                   --profile ${v6})
+  add_test(NAME conformance_adapter_versions
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test_adapter_versions.sh ${suite} ${w}/adapter-versions)
+  set_tests_properties(conformance_adapter_v6_verilator conformance_adapter_v6_icarus
+                       conformance_adapter_versions
+                       PROPERTIES LABELS conformance FIXTURES_REQUIRED conformance_suite)
+  # Declared arithmetic: the DUT built in each of three rules other than zblend's (round(sum /
+  # 255), ceil(sum / 256), floor(sum / 256)) and declaring it passes; the ceil rule declared as
+  # zblend's fails exactly the tests whose planes the two rules make differently.
+  set(arith ${CMAKE_CURRENT_SOURCE_DIR}/test_ref_arith.sh)
+  add_test(NAME conformance_arith_round255
+           COMMAND ${arith} pass verilator ${suite} ${w}/arith-round255 ${zb}
+                   ZB_REF_ARITH_SUM_ROUND255 sum-round255)
+  add_test(NAME conformance_arith_ceil256
+           COMMAND ${arith} pass icarus ${suite} ${w}/arith-ceil256 ${zb}
+                   ZB_REF_ARITH_SUM_CEIL256 sum-ceil256 --quick)
+  add_test(NAME conformance_arith_floor256
+           COMMAND ${arith} pass icarus ${suite} ${w}/arith-floor256 ${zb}
+                   ZB_REF_ARITH_SUM_FLOOR256 sum-floor256 --quick)
+  add_test(NAME conformance_arith_wrong
+           COMMAND ${arith} wrong verilator ${suite} ${w}/arith-wrong ${zb}
+                   ZB_REF_ARITH_SUM_CEIL256 sum-ceil256)
+  set_tests_properties(conformance_arith_round255 conformance_arith_ceil256
+                       conformance_arith_floor256 conformance_arith_wrong
+                       PROPERTIES LABELS conformance FIXTURES_REQUIRED conformance_suite)
   # The defect catalogue (conformance/ref/defects.json): each defect against the quick tier on
   # Icarus, stopping at the first failing test, which the line names; the quick tier, chosen by the
   # reach alone, catches all of them. make conformance runs each against the whole suite.

@@ -183,6 +183,34 @@ static void test_accumulate(void) {
   zb_golden_destroy(g);
 }
 
+/* A declared arithmetic (datapath.md "Declared arithmetic"), worked by hand: clear colour
+ * (34, 51, 102, 0), an alpha fragment (0, 0, 0, 64), so d * 191 on R, G, B: 6494, 9741, 19482.
+ * zblend's m: (6494 + 25 + 128) >> 8 = 25, (9741 + 38 + 128) >> 8 = 38, (19482 + 76 + 128) >> 8
+ * = 76; sum-ceil256: (6494 + 255) >> 8 = 26, 39, 77. Alpha 64 * 64 = 4096: 16 under both. */
+static void test_arithmetic(void) {
+  zb_golden* g = NULL;
+  uint32_t rgba = 0;
+  const uint32_t state = 1u << 5 | 15u << 8; /* no depth test, alpha blend, every channel */
+  CHECK(zb_golden_create(&g, 2, 1, 16, 4, 0x00663322u) == ZB_OK, "create: %s",
+        zb_golden_last_error(NULL));
+  if (g == NULL) return;
+  EXPECT_ERROR(zb_golden_set_arithmetic(g, "sum-ceil"), ZB_EARG, g, "zb_golden_set_arithmetic");
+  EXPECT_ERROR(zb_golden_set_arithmetic(g, NULL), ZB_EARG, g, "zb_golden_set_arithmetic");
+  EXPECT_ERROR(zb_golden_set_arithmetic(NULL, "zblend"), ZB_EHANDLE, NULL, "zb_golden_set_arithmetic");
+  CHECK(zb_golden_begin_pass(g, state) == ZB_OK &&
+            zb_golden_push(g, 0, 0, 0, 0x40000000u, 0, NULL, NULL, NULL, &rgba) == ZB_OK,
+        "push: %s", zb_golden_last_error(g));
+  CHECK(rgba == 0x104c2619u, "zblend's arithmetic: %08x, want 104c2619", rgba);
+  EXPECT_ERROR(zb_golden_set_arithmetic(g, "sum-ceil256"), ZB_EORDER, g, "zb_golden_set_arithmetic");
+  CHECK(zb_golden_end_pass(g, NULL, NULL, NULL, NULL, NULL, NULL) == ZB_OK &&
+            zb_golden_set_arithmetic(g, "sum-ceil256") == ZB_OK && zb_golden_begin_pass(g, state) == ZB_OK &&
+            zb_golden_push(g, 1, 0, 0, 0x40000000u, 0, NULL, NULL, NULL, &rgba) == ZB_OK,
+        "sum-ceil256: %s", zb_golden_last_error(g));
+  CHECK(rgba == 0x104d271au, "sum-ceil256: %08x, want 104d271a", rgba);
+  CHECK(read_plane(g, ZB_PLANE_COLOR, 0, 0) == 0x104c2619u, "the first pass's pixel kept");
+  zb_golden_destroy(g);
+}
+
 /* A layers pass (mlab-K, K = 2), 16-bit depth, worked by hand from datapath.md "8. Layers":
  * rgba (255, 0, 0, 128) at z 100 is the layer p = (m(255, 128), 0, 0) = (128, 0, 0), A 128;
  * (0, 0, 255, 64) at z 50 goes before it as (0, 0, 64), A 64. The resolve: acc = (0, 0, 64, 64),
@@ -642,6 +670,7 @@ int main(int argc, char** argv) {
   }
   test_errors();
   test_accumulate();
+  test_arithmetic();
   test_layers();
   test_reader();
   if (argc > 2) {

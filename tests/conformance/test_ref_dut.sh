@@ -43,6 +43,7 @@ print(" ".join(d["define"] for d in json.load(open(sys.argv[1])) if d["variant"]
   # own defects, every defect at once, and each defect alone.
   inject="ZB_REF_INJECT_BLEND_BUG ZB_REF_INJECT_HANG"
   ref_sets=$(printf '%s\n' "" "ZB_REF_FULL" "$inject" "$inject $ref_defects" \
+    ZB_REF_ARITH_SUM_ROUND255 "ZB_REF_FULL ZB_REF_ARITH_SUM_CEIL256" ZB_REF_ARITH_SUM_FLOOR256 \
     "ZB_REF_FULL $inject $ref_defects"; for d in $ref_defects; do echo "ZB_REF_FULL $d"; done)
   pipe_sets=$(printf '%s\n' "ZB_REF_PIPE" "ZB_REF_PIPE $pipe_defects"; for d in $pipe_defects; do echo "ZB_REF_PIPE $d"; done)
   n=0

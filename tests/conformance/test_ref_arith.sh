@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Declared arithmetic (docs/datapath.md "Declared arithmetic") on conformance/ref's zb_ref_rop:
+#   test_ref_arith.sh pass SIM SUITE OUT ZBLEND DEFINE NAME [ARGS...]
+#       the DUT built with DEFINE (its own arithmetic) and declared NAME: every supported test
+#       passes, none fails
+#   test_ref_arith.sh wrong SIM SUITE OUT ZBLEND DEFINE NAME [ARGS...]
+#       the DUT built with DEFINE (arithmetic NAME) but declared zblend's: exit 1, and the tests
+#       that fail are exactly those whose planes the two arithmetics make differently, found
+#       without the DUT: the suite's own expect files (zblend's planes) checked as got files under
+#       --arithmetic NAME. Neither set is empty, and some supported test passes.
+set -u
+root=$(cd "$(dirname "$0")/../.." && pwd)
+mode=${1:?usage: test_ref_arith.sh pass|wrong SIM SUITE OUT ZBLEND DEFINE NAME [ARGS...]}
+sim=${2:?} suite=${3:?} out=${4:?} zblend=${5:?} define=${6:?} name=${7:?}
+shift 7
+fail() { echo "FAIL: $*" >&2; [[ -f $out/log.txt ]] && tail -n 20 "$out/log.txt" >&2; exit 1; }
+rm -rf "$out"
+mkdir -p "$out"
+declared=$name
+[[ $mode == wrong ]] && declared=zblend
+python3 "$root/scripts/conformance.py" --suite "$suite" --sim "$sim" --out "$out/run" \
+  --profile "$root/conformance/ref/profile.json" --define "$define" --arithmetic "$declared" \
+  --zblend "$zblend" -j 2 "$@" >"$out/log.txt" 2>&1
+rc=$?
+verdicts() {  # the tests of a verdict in results.json, sorted, one a line
+  python3 -c 'import json,sys
+print("\n".join(sorted(t["name"] for t in json.load(open(sys.argv[1]))["tests"] if t["verdict"] == sys.argv[2])))' \
+    "$out/run/results.json" "$1"
+}
+[[ -f $out/run/results.json ]] || fail "no results.json (exit $rc)"
+npass=$(verdicts pass | grep -c .)
+case $mode in
+  pass)
+    [[ $rc == 0 ]] || fail "$define declared $name: exit $rc"
+    [[ -z $(verdicts fail) && $npass -gt 0 ]] || fail "$define declared $name: $npass pass, failing: $(verdicts fail | tr '\n' ' ')"
+    python3 -c 'import json,sys; assert json.load(open(sys.argv[1]))["arithmetic"] == sys.argv[2]' \
+      "$out/run/results.json" "$name" || fail "results.json does not record arithmetic $name"
+    echo "ok: zb_ref_rop with $define declared $name under $sim: $npass pass, 0 fail"
+    ;;
+  wrong)
+    [[ $rc == 1 ]] || fail "$define declared zblend: exit $rc, want 1"
+    verdicts fail >"$out/failed.txt"
+    # The same tests' expect files (zblend's planes) as got files, checked in the DUT's arithmetic.
+    ran=$(python3 -c 'import json,sys
+print(",".join(t["name"] for t in json.load(open(sys.argv[1]))["tests"] if t["verdict"] in ("pass", "fail")))' \
+      "$out/run/results.json")
+    for t in ${ran//,/ }; do
+      mkdir -p "$out/zblend/$t"
+      for f in "$suite/$t"/expect.*.hex; do cp "$f" "$out/zblend/$t/got.${f##*/expect.}"; done
+    done
+    "$zblend" conformance check "$suite" "$out/zblend" --tests "$ran" --arithmetic "$name" \
+      >"$out/differ.log" 2>&1
+    sed -n 's/^FAIL  \([^:]*\):.*/\1/p' "$out/differ.log" | sort >"$out/differ.txt"
+    [[ -s $out/differ.txt ]] || fail "no supported test tells $name from zblend's arithmetic"
+    [[ $npass -gt 0 ]] || fail "no test passed: the wrong declaration should fail only where the arithmetics differ"
+    diff "$out/failed.txt" "$out/differ.txt" >"$out/sets.diff" ||
+      fail "the failing tests are not those where $name and zblend differ: $(cat "$out/sets.diff")"
+    echo "ok: zb_ref_rop with $define declared zblend under $sim: the $(grep -c . "$out/failed.txt") tests where the arithmetics differ fail, $npass pass"
+    ;;
+  *) echo "usage: test_ref_arith.sh pass|wrong ..." >&2; exit 2 ;;
+esac
