@@ -150,21 +150,28 @@ void GoldenRop::begin_pass(const RopState& state) {
 }
 
 void GoldenRop::draw(const Fragment* fragments, size_t count) {
-  for (size_t i = 0; i < count; ++i) process(fragments[i]);
+  for (size_t i = 0; i < count; ++i) run<false>(fragments[i], nullptr);
 }
 
 PassStats GoldenRop::end_pass() { return stats_; }
 
 void GoldenRop::frame_op(const FrameOp& op) { apply_frame_op(fb_, op); }
 
+PixelWrites GoldenRop::process(const Fragment& f) {
+  PixelWrites w;
+  run<true>(f, &w);
+  return w;
+}
+
 // Stages as in the RTL: fetch the stored depth, test, fetch the destination colour, blend,
 // mask, write. "If the depth test is disabled ... the depth buffer is not updated" (GL 4.6,
-// 14.9.4): a disabled test passes every fragment and never writes depth.
-PixelWrites GoldenRop::process(const Fragment& f) {
-  if (state_.blend == BlendMode::kCoverage) return process_coverage(f);
+// 14.9.4): a disabled test passes every fragment and never writes depth. With kLog the writes
+// go to *w; draw() runs without it, so the frame's loop builds no write log.
+template <bool kLog>
+void GoldenRop::run(const Fragment& f, PixelWrites* w) {
+  if (state_.blend == BlendMode::kCoverage) return run_coverage<kLog>(f, w);
   const size_t i = fb_.index(f.x, f.y);
   ++stats_.fragments_in;
-  PixelWrites w;
 
   bool pass = true;
   if (state_.depth_test) {
@@ -173,50 +180,47 @@ PixelWrites GoldenRop::process(const Fragment& f) {
   }
   // Peel test: the second compare, strictly behind the previous layer (z > peel).
   if (state_.peel_test && !(f.z > fb_.peel[i])) pass = false;
-  if (!pass) return w;
+  if (!pass) return;
   ++stats_.fragments_passed;
 
   if (state_.depth_test && state_.depth_write) {
-    fb_.depth[i] = w.z = f.z;
-    w.depth = true;
+    fb_.depth[i] = f.z;
+    if constexpr (kLog) w->z = f.z, w->depth = true;
     ++stats_.depth_writes;
   }
-  if (state_.color_mask == 0) return w;
+  if (state_.color_mask == 0) return;
 
   const bool reads_dest = state_.blend != BlendMode::kReplace || state_.color_mask != kMaskRgba;
   if (reads_dest) ++stats_.color_reads;
+  ++stats_.color_writes;
   if (state_.blend == BlendMode::kAccumulate) {
     // The accumulation word is read and written whole; the colour plane is kept.
     fb_.touch_accum();
     const WboitPixel p =
         accumulate_wboit(f.z, f.color, fb_.accum[i], fb_.reveal[i], fb_.depth_bits, fb_.wboit);
-    fb_.accum[i] = w.acc = p.acc;
-    fb_.reveal[i] = w.reveal = p.reveal;
-    w.accum = true;
-    ++stats_.color_writes;
-    return w;
+    fb_.accum[i] = p.acc;
+    fb_.reveal[i] = p.reveal;
+    if constexpr (kLog) w->acc = p.acc, w->reveal = p.reveal, w->accum = true;
+    return;
   }
   if (state_.blend == BlendMode::kLayers) {
     // The layers word is read and written whole (an alpha of 0 writes it back unchanged).
     fb_.touch_layers();
-    w.layer_at = insert_layer(fb_.layers[i], state_.layers, fragment_layer(f.z, f.color));
-    w.lay = fb_.layers[i];
-    w.layers = true;
-    ++stats_.color_writes;
-    return w;
+    const int at = insert_layer(fb_.layers[i], state_.layers, fragment_layer(f.z, f.color));
+    if constexpr (kLog) w->layer_at = at, w->lay = fb_.layers[i], w->layers = true;
+    return;
   }
   const Rgba8 d = fb_.color[i];
   const Rgba8 b = declared_ ? blend(arith_, state_.blend, f.color, d) : blend(state_.blend, f.color, d);
-  fb_.color[i] = w.rgba = apply_color_mask(state_.color_mask, b, d);
-  w.color = true;
-  ++stats_.color_writes;
-  return w;
+  fb_.color[i] = apply_color_mask(state_.color_mask, b, d);
+  if constexpr (kLog) w->rgba = fb_.color[i], w->color = true;
 }
 
 // Coverage mode (datapath.md "Coverage blend"): the depth unit compares three ways instead of
 // testing, so every fragment passes and is composited; depth is written (when depth_test and
 // depth_write) only in the nearer case; coverage always; colour under the write mask.
-PixelWrites GoldenRop::process_coverage(const Fragment& f) {
+template <bool kLog>
+void GoldenRop::run_coverage(const Fragment& f, PixelWrites* w) {
   if (f.coverage > fb_.coverage_samples)
     throw std::invalid_argument("golden: fragment coverage " + std::to_string(f.coverage) +
                                 " exceeds the " + std::to_string(fb_.coverage_samples) +
@@ -225,23 +229,21 @@ PixelWrites GoldenRop::process_coverage(const Fragment& f) {
   ++stats_.fragments_in;
   ++stats_.fragments_passed;
   ++stats_.depth_reads;
-  PixelWrites w;
   const CoveragePixel c = composite_coverage(f.z, f.color, f.coverage, fb_.depth[i],
                                              fb_.color[i], fb_.coverage[i],
                                              fb_.coverage_samples);
   if (state_.depth_test && state_.depth_write && c.depth != fb_.depth[i]) {
-    fb_.depth[i] = w.z = c.depth;
-    w.depth = true;
+    fb_.depth[i] = c.depth;
+    if constexpr (kLog) w->z = c.depth, w->depth = true;
     ++stats_.depth_writes;
   }
-  fb_.coverage[i] = w.cov = c.coverage;
-  w.coverage = true;
-  if (state_.color_mask == 0) return w;
+  fb_.coverage[i] = c.coverage;
+  if constexpr (kLog) w->cov = c.coverage, w->coverage = true;
+  if (state_.color_mask == 0) return;
   ++stats_.color_reads;
-  fb_.color[i] = w.rgba = apply_color_mask(state_.color_mask, c.color, fb_.color[i]);
-  w.color = true;
+  fb_.color[i] = apply_color_mask(state_.color_mask, c.color, fb_.color[i]);
+  if constexpr (kLog) w->rgba = fb_.color[i], w->color = true;
   ++stats_.color_writes;
-  return w;
 }
 
 }  // namespace zb

@@ -114,7 +114,11 @@ class GoldenRop final : public Backend {
   Arithmetic arithmetic() const { return arith_; }
 
  private:
-  PixelWrites process_coverage(const Fragment& f);
+  // One fragment; its writes into *w when kLog (process), none when not (draw).
+  template <bool kLog>
+  void run(const Fragment& f, PixelWrites* w);
+  template <bool kLog>
+  void run_coverage(const Fragment& f, PixelWrites* w);
 
   Framebuffer fb_;
   RopState state_;
