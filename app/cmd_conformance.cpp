@@ -15,6 +15,7 @@
 #include "commands.h"
 #include "export.h"
 #include "suite.h"
+#include "vectors.h"
 
 namespace zb::app {
 
@@ -36,6 +37,32 @@ struct CheckOptions {
   bool no_accum = false;
   bool quick = false;
 };
+
+struct DigestOptions {
+  std::string suite, test, arithmetic = "zblend";
+};
+
+void run_digests(const DigestOptions& o) {
+  const std::optional<zb::Arithmetic> arith = zb::parse_arithmetic(o.arithmetic);
+  if (!arith)
+    throw UsageError(fmt::format("--arithmetic: '{}' is not an arithmetic: zblend, or <each|sum>-"
+                                 "<zblend|round255|floor256|ceil256|round256>[-one256]",
+                                 o.arithmetic));
+  std::vector<cf::PassDigest> digests;
+  try {
+    const std::vector<std::string> names = cf::verified_test_names(o.suite);
+    if (std::find(names.begin(), names.end(), o.test) == names.end())
+      throw UsageError(fmt::format("TEST: '{}' is not a test of {} (its manifest.json lists them)",
+                                   o.test, o.suite));
+    digests = cf::pass_digests(
+        cf::read_stream((std::filesystem::path(o.suite) / o.test / "stream.hex").string()), *arith);
+  } catch (const cf::ConformanceError& e) {
+    throw UsageError(e.what());
+  } catch (const zb::TraceError& e) {
+    throw UsageError(e.what());
+  }
+  for (const cf::PassDigest& p : digests) fmt::print("{} {:016x}\n", p.pass, p.digest);
+}
 
 void print_list(const std::vector<cf::TestSpec>& tests) {
   fmt::print("{:<30} {:<8} {:<7} {:>6}  {}\n", "test", "config", "kind", "frame", "what");
@@ -197,6 +224,16 @@ void add_conformance_commands(CLI::App& parent) {
                   "zblend (the default), sum-round255, sum-ceil256, ...; the expected planes are "
                   "the streams replayed in it (default: the run's, by its results.json)");
   chk->callback([chk, c] { run_check(*chk, *c); });
+
+  auto d = std::make_shared<DigestOptions>();
+  CLI::App* dig = cmd->add_subcommand(
+      "digests", "Print the golden model's digest of the planes after each pass of a test, as "
+                 "the testbench writes got.passes.hex (docs/conformance.md \"Every pass seen\")");
+  dig->add_option("SUITE", d->suite, "The suite's directory")->required();
+  dig->add_option("TEST", d->test, "A test of the suite")->required();
+  dig->add_option("--arithmetic", d->arithmetic,
+                  "The blend arithmetic to replay in (default zblend)");
+  dig->callback([d] { run_digests(*d); });
   add_reach_command(*cmd);
   add_suite_pixel_command(*cmd);
 }

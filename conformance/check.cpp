@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -225,6 +226,37 @@ PlaneCheck check_plane(const ManifestTest& t, Plane plane, const std::vector<std
   return c;
 }
 
+// The testbench's digest of the planes after each pass (got.passes.hex: "<passes done> <16 hex
+// digits>" a line) against the golden model's: "" when every line matches or there is no file,
+// else the first differing pass. A pass another overwrites is seen here, not in the final planes.
+std::string check_passes(const fs::path& suite, const fs::path& out, const ManifestTest& t,
+                         const Arithmetic& arithmetic) {
+  const fs::path path = out / t.name / "got.passes.hex";
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return "";
+  const std::optional<std::string> text = read_text(path);
+  if (!text) return fmt::format("{}: cannot read: {}", path.string(), std::strerror(errno));
+  const std::vector<PassDigest> golden =
+      pass_digests(read_stream((suite / t.name / "stream.hex").string()), arithmetic);
+  std::istringstream in(*text);
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    unsigned long long pass = 0, digest = 0;
+    char tail = 0;
+    if (std::sscanf(line.c_str(), "%llu %16llx%c", &pass, &digest, &tail) != 2 || line.size() < 18)
+      return fmt::format("{} line {}: '{}' is not \"<passes> <16 hex digits>\"", path.string(), n,
+                         line);
+    if (pass < 1 || pass > golden.size())
+      return fmt::format("{} line {}: pass {} of a stream of {}", path.string(), n, pass,
+                         golden.size());
+    if (digest != golden[pass - 1].digest)
+      return fmt::format("the planes after pass {} of {} differ from the golden model's (digest "
+                         "{:016x}, expected {:016x}; got.passes.hex line {})", pass, golden.size(),
+                         digest, golden[pass - 1].digest, n);
+  }
+  return "";
+}
+
 TestResult check_test(const fs::path& suite, const fs::path& out, const ManifestTest& t,
                       bool dut_accum, const Arithmetic& arithmetic) {
   // The expected planes, held to the manifest's hash first: a damaged suite is not a DUT failure.
@@ -282,6 +314,10 @@ TestResult check_test(const fs::path& suite, const fs::path& out, const Manifest
     }
     states += fmt::format("{}{} {}", p ? ", " : "", to_string(plane), c.state);
   }
+  const std::string passes = check_passes(suite, out, t, arithmetic);
+  if (first.empty() && !passes.empty()) first = passes + " (the final planes match: a later pass "
+                                                "overwrote what this one did wrong)";
+  else if (!passes.empty()) states += "; " + passes;
   r.pass = first.empty();
   r.line = r.pass ? fmt::format("pass  {}", t.name)
                   : fmt::format("FAIL  {}: {} [{}]", t.name, first, states);

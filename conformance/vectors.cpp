@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "geometry/geometry.h"
+#include "rop/rop.h"
 #include "tile_io.h"
 
 namespace zb::conformance {
@@ -402,6 +403,34 @@ std::string plane_word(const Framebuffer& fb, Plane p, size_t i) {
     case Plane::kAccum: return accum_word(fb, i);
   }
   return "";
+}
+
+uint64_t frame_digest(const Framebuffer& fb) {
+  const size_t n = size_t(fb.width) * size_t(fb.height);
+  uint64_t h = 0xcbf29ce484222325ull;
+  auto add = [&h](uint32_t word) { h = (h ^ word) * 0x100000001b3ull; };
+  for (size_t i = 0; i < n; ++i) add(pack(fb.color[i]));
+  for (size_t i = 0; i < n; ++i) add(fb.depth[i]);
+  for (size_t i = 0; i < n; ++i) add(fb.coverage[i]);
+  for (size_t i = 0; i < n; ++i) add(fb.peel[i]);
+  return h;
+}
+
+std::vector<PassDigest> pass_digests(const Trace& trace, const Arithmetic& arithmetic) {
+  GoldenRop golden;
+  golden.set_arithmetic(arithmetic);
+  golden.begin_frame(trace.width, trace.height, trace.depth_bits, trace.clear_color,
+                     trace.coverage_samples, trace.wboit);
+  std::vector<PassDigest> out;
+  for (size_t k = 0; k < trace.passes.size(); ++k) {
+    const TracePass& p = trace.passes[k];
+    for (const FrameOp& op : p.frame_ops) golden.frame_op(op);
+    golden.begin_pass(p.state);
+    golden.draw(p.fragments);
+    golden.end_pass();
+    out.push_back({int(k) + 1, frame_digest(golden.framebuffer())});
+  }
+  return out;
 }
 
 std::string plane_hex(const Framebuffer& fb, Plane p) {

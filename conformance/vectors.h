@@ -9,6 +9,7 @@
 
 #include "history/pixel_history.h"
 #include "io/trace.h"
+#include "rop/arithmetic.h"
 #include "rop/framebuffer.h"
 
 namespace zb::conformance {
@@ -59,5 +60,17 @@ std::string plane_word(const Framebuffer& fb, Plane p, size_t i);
 
 // One word a line (plane_word), width * height lines, row 0 first.
 std::string plane_hex(const Framebuffer& fb, Plane p);
+
+// What the testbench writes after each pass (got.passes.hex, docs/conformance.md "Every pass
+// seen"): FNV-1a over 64 bits of the colour, depth, coverage and peel planes' words, plane after
+// plane, each row-major (offset 0xcbf29ce484222325, prime 0x100000001b3; h = (h ^ word) * prime).
+uint64_t frame_digest(const Framebuffer& fb);
+// The golden model's frame_digest after each pass of `trace` (before the next pass's frame
+// operations), in `arithmetic`; pass numbers from 1.
+struct PassDigest {
+  int pass = 0;
+  uint64_t digest = 0;
+};
+std::vector<PassDigest> pass_digests(const Trace& trace, const Arithmetic& arithmetic);
 
 }  // namespace zb::conformance

@@ -5,7 +5,8 @@
 // frame operations are the host's, done here on the frame (the resolve wboit among them), but
 // for the resolve of mlab-K's layers, which live on the tile: the stores of the passes before
 // it resolve them on their way out (st_resolve_i). At the end it writes the planes as signatures
-// (got.<plane>.hex) for `zblend conformance check`. A DUT whose adapter has no accumulation
+// (got.<plane>.hex) for `zblend conformance check`, and after every pass a digest of the planes
+// (got.passes.hex), so that what a later pass overwrites is still checked. A DUT whose adapter has no accumulation
 // plane (planes_o[4] low) runs the other tests: a test that resolves from the plane is skipped
 // (a "zb_conf: skip:" line, no files), and no got.accum.hex is written; so is a test keeping
 // more layers a pixel than the DUT's layers_o.
@@ -600,6 +601,22 @@ module zb_conf_tb #(
     $fclose(fd);
   endtask
 
+  // The planes' digest after each pass, so that what a later pass overwrites is still seen
+  // (docs/conformance.md "Every pass seen"): FNV-1a over 64 bits of the colour, depth, coverage
+  // and peel words, plane after plane, each row-major, as the checker's frame_digest. A line
+  // "<passes done> <16 hex digits>" of got.passes.hex after each pass (pass by pass) or group
+  // (resident tiles); none after a group whose stores resolved the layers.
+  int passes_fd = 0;
+  function automatic logic [63:0] frame_digest();
+    logic [63:0] h;
+    h = 64'hcbf2_9ce4_8422_2325;
+    for (int unsigned p = 0; p < width * height; p++) h = (h ^ 64'(fb_color[p])) * 64'h100_0000_01b3;
+    for (int unsigned p = 0; p < width * height; p++) h = (h ^ 64'(fb_depth[p])) * 64'h100_0000_01b3;
+    for (int unsigned p = 0; p < width * height; p++) h = (h ^ 64'(fb_cov[p])) * 64'h100_0000_01b3;
+    for (int unsigned p = 0; p < width * height; p++) h = (h ^ 64'(fb_peel[p])) * 64'h100_0000_01b3;
+    return h;
+  endfunction
+
   initial begin : waves
     string path;
     int    from;
@@ -692,6 +709,8 @@ module zb_conf_tb #(
       $finish;
     end
 
+    passes_fd = $fopen({out_dir, "/got.passes.hex"}, "w");
+    if (passes_fd == 0) fail($sformatf("cannot write %s/got.passes.hex (does the folder exist?)", out_dir));
     pc = 2;
     while (opcode(words[pc]) != OpEnd) begin
       if (pc > count) fail("no END command");
@@ -725,11 +744,13 @@ module zb_conf_tb #(
         if (resident) run_resident(group, resolve);
         else run_pass(16'(group_state[0]), group_first[0], group_last[0], resolve);
         n_passes += group;
+        if (!resolve) $fdisplay(passes_fd, "%0d %016x", n_passes, frame_digest());
       end else begin
         fail($sformatf("word %0d: opcode %02x where a pass, a frame operation or END belongs",
                        pc, opcode(w)));
       end
     end
+    $fclose(passes_fd);
     for (int plane = 0; plane < (planes[4] ? 5 : 4); plane++) write_plane(plane);
     $display("zb_conf: done: %s: %0dx%0d, %0d passes, %0d fragments, %0d tile loads, %0d cycles",
              stream_path, width, height, n_passes, n_frags, n_tiles, $time / 10);

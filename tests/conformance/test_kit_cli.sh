@@ -58,7 +58,7 @@ grep -q "^NOT SUPPORTED *cad-facing-additive *needs blend.additive$" "$out/list.
 grep -q "^NOT SUPPORTED *random *needs .*blend.coverage.*peel_test" "$out/list.txt" ||
   fail "--list: random not NOT SUPPORTED"
 grep -q "cad-opaque\|cad-coverage-aa" "$out/list.txt" && fail "--list: a test without an alpha blend listed"
-grep -q "^5 of 7 selected tests supported by the profile (--features)$" "$out/list.txt" ||
+grep -q "^5 of 7 selected tests supported by the profile (--features) and the adapter (version 7)$" "$out/list.txt" ||
   fail "--list: the count line: $(tail -1 "$out/list.txt")"
 
 # A suite archive is unpacked, checked and listed alike.

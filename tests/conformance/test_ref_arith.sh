@@ -5,9 +5,10 @@
 #       passes, none fails
 #   test_ref_arith.sh wrong SIM SUITE OUT ZBLEND DEFINE NAME [ARGS...]
 #       the DUT built with DEFINE (arithmetic NAME) but declared zblend's: exit 1, and the tests
-#       that fail are exactly those whose planes the two arithmetics make differently, found
-#       without the DUT: the suite's own expect files (zblend's planes) checked as got files under
-#       --arithmetic NAME. Neither set is empty, and some supported test passes.
+#       that fail are exactly those in which the two arithmetics make some pass's planes
+#       differently, found without the DUT: the suite's own expect files (zblend's final planes)
+#       and the golden model's digests after each pass (`zblend conformance digests`) checked as
+#       got files under --arithmetic NAME. Neither set is empty, and some supported test passes.
 set -u
 root=$(cd "$(dirname "$0")/../.." && pwd)
 mode=${1:?usage: test_ref_arith.sh pass|wrong SIM SUITE OUT ZBLEND DEFINE NAME [ARGS...]}
@@ -47,6 +48,8 @@ print(",".join(t["name"] for t in json.load(open(sys.argv[1]))["tests"] if t["ve
     for t in ${ran//,/ }; do
       mkdir -p "$out/zblend/$t"
       for f in "$suite/$t"/expect.*.hex; do cp "$f" "$out/zblend/$t/got.${f##*/expect.}"; done
+      "$zblend" conformance digests "$suite" "$t" >"$out/zblend/$t/got.passes.hex" ||
+        fail "zblend conformance digests $t"
     done
     "$zblend" conformance check "$suite" "$out/zblend" --tests "$ran" --arithmetic "$name" \
       >"$out/differ.log" 2>&1
