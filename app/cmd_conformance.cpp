@@ -147,12 +147,19 @@ void run_check(const CLI::App& cmd, const CheckOptions& o) {
                              run->accum_plane ? "" : ", without the accumulation plane", only.from);
       }
     }
-    const std::optional<zb::Arithmetic> arith = zb::parse_arithmetic(arith_name);
+    cf::CheckRule rule;
+    rule.cts = arith_name == "cts";
+    const std::optional<zb::Arithmetic> arith =
+        rule.cts ? zb::Arithmetic{} : zb::parse_arithmetic(arith_name);
     if (!arith)
       throw UsageError(fmt::format("--arithmetic: '{}' is not an arithmetic: zblend, or <each|sum>-"
-                                   "<zblend|round255|floor256|ceil256|round256>[-one256] "
+                                   "<zblend|round255|floor256|ceil256|round256>[-one256], or cts "
                                    "(docs/datapath.md \"Declared arithmetic\")", arith_name));
-    if (!arith->is_zblend())
+    rule.arithmetic = *arith;
+    if (rule.cts)
+      chosen += fmt::format(" (the CTS verdict: colour within {} a channel of zblend's, reported "
+                            "apart as cts)", cf::kCtsColorThreshold);
+    else if (!arith->is_zblend())
       chosen += fmt::format(" (arithmetic {}: the expected planes are the streams replayed in it)",
                             arith_name);
     // A failed test's line ends with the command that shows its first wrong pixel's history.
@@ -164,18 +171,20 @@ void run_check(const CLI::App& cmd, const CheckOptions& o) {
         fmt::print("{}; why: {} pixel {} {} --at {},{}\n", r.line, program, shell_word(o.suite),
                    r.name, r.first_x, r.first_y);
       std::fflush(stdout);
-    }, *arith);
+    }, rule);
   } catch (const cf::ConformanceError& e) {
     throw UsageError(e.what());
   }
   // A skipped test is neither passed nor failed: it is counted apart.
-  size_t failed = 0, skipped = 0;
+  size_t failed = 0, skipped = 0, cts = 0;
   for (const cf::TestResult& r : results) {
     skipped += r.skipped ? 1 : 0;
     failed += r.pass || r.skipped ? 0 : 1;
+    cts += r.cts ? 1 : 0;
   }
   const size_t checked = results.size() - skipped;
-  fmt::print("{} of {} tests pass{}{}\n", checked - failed, checked,
+  fmt::print("{} of {} tests pass{}{}{}\n", checked - failed, checked,
+             cts ? fmt::format(" ({} of them by the CTS threshold only, not exactly)", cts) : "",
              skipped ? fmt::format(", {} skipped (they need the accumulation plane)", skipped) : "",
              chosen);
   if (failed) throw VerificationError(fmt::format("{} of {} tests failed", failed, checked));
@@ -222,7 +231,8 @@ void add_conformance_commands(CLI::App& parent) {
   chk->add_option("--arithmetic", c->arithmetic,
                   "The DUT's declared blend arithmetic (docs/datapath.md \"Declared arithmetic\"): "
                   "zblend (the default), sum-round255, sum-ceil256, ...; the expected planes are "
-                  "the streams replayed in it (default: the run's, by its results.json)");
+                  "the streams replayed in it; cts: colour within the Khronos CTS blend tests' "
+                  "threshold of zblend's, reported apart (default: the run's, by its results.json)");
   chk->callback([chk, c] { run_check(*chk, *c); });
 
   auto d = std::make_shared<DigestOptions>();

@@ -18,6 +18,7 @@ struct TestResult {
   // "pass  NAME", "skip  NAME: why", or "FAIL  NAME: the first problem [each plane's state]"
   std::string line;
   int first_x = -1, first_y = -1;  // a failed test's first differing pixel, if a word differs
+  bool cts = false;  // passed by the CTS threshold only, not exactly ("cts   NAME: ..."); pass too
 };
 
 // Every command that reads a suite first holds each file of each test to the manifest's SHA-256
@@ -46,6 +47,16 @@ struct Selection {
   bool quick = false;
 };
 
+// How a DUT's planes are held to the golden model's: exactly, in its declared arithmetic; or, for
+// a DUT that cannot say how it rounds, by the verdict the Khronos CTS's blend tests give: each
+// colour channel within 2^(8 - bits) * 5 / 2 + 2 of zblend's (4 for RGBA8), every other plane
+// exact, and reported apart from exact passes (docs/conformance.md "The CTS verdict").
+struct CheckRule {
+  Arithmetic arithmetic;
+  bool cts = false;
+};
+constexpr int kCtsColorThreshold = (1 << (8 - 8)) * 5 / 2 + 2;
+
 // Checks the selected tests of SUITE, in the suite's order, and reports each result to `report`
 // as it is decided. Without `dut_accum` (a DUT with no accumulation plane) a test that needs the
 // plane is skipped and no test's got.accum.hex is read. A malformed or corrupt suite (manifest,
@@ -57,6 +68,6 @@ struct Selection {
 std::vector<TestResult> check_suite(const std::string& suite, const std::string& out,
                                     const Selection& only, bool dut_accum,
                                     const std::function<void(const TestResult&)>& report,
-                                    const Arithmetic& arithmetic = {});
+                                    const CheckRule& rule = {});
 
 }  // namespace zb::conformance

@@ -84,8 +84,16 @@ if(NOT ZBLEND_SANITIZE)
   add_test(NAME conformance_arith_wrong
            COMMAND ${arith} wrong verilator ${suite} ${w}/arith-wrong ${zb}
                    ZB_REF_ARITH_SUM_CEIL256 sum-ceil256)
+  # A DUT that cannot say how it rounds asks for the CTS verdict: the ceil rule passes by the
+  # threshold (counted apart), an alpha blend that skips blending for alpha >= 128 fails.
+  add_test(NAME conformance_arith_cts
+           COMMAND ${arith} cts icarus ${suite} ${w}/arith-cts ${zb} ZB_REF_ARITH_SUM_CEIL256 - --quick)
+  add_test(NAME conformance_arith_cts_fails
+           COMMAND ${arith} cts-fails icarus ${suite} ${w}/arith-cts-fails ${zb}
+                   ZB_REF_ARITH_SUM_CEIL256,ZB_REF_DEFECT_ALPHA_OPAQUE_MSB - --quick)
   set_tests_properties(conformance_arith_round255 conformance_arith_ceil256
-                       conformance_arith_floor256 conformance_arith_wrong
+                       conformance_arith_floor256 conformance_arith_wrong conformance_arith_cts
+                       conformance_arith_cts_fails
                        PROPERTIES LABELS conformance FIXTURES_REQUIRED conformance_suite)
   # The defect catalogue (conformance/ref/defects.json): each defect against the quick tier on
   # Icarus, stopping at the first failing test, which the line names; the quick tier, chosen by the

@@ -3,6 +3,11 @@
 #   test_ref_arith.sh pass SIM SUITE OUT ZBLEND DEFINE NAME [ARGS...]
 #       the DUT built with DEFINE (its own arithmetic) and declared NAME: every supported test
 #       passes, none fails
+#   test_ref_arith.sh cts SIM SUITE OUT ZBLEND DEFINES - [ARGS...]
+#       the DUT built with DEFINES (comma-separated) asking for the CTS verdict (--arithmetic cts):
+#       no test fails, some pass by the threshold only (cts_pass, counted apart from pass)
+#   test_ref_arith.sh cts-fails SIM SUITE OUT ZBLEND DEFINES - [ARGS...]
+#       the same with a defect beyond the threshold among DEFINES: exit 1, a colour pixel fails
 #   test_ref_arith.sh wrong SIM SUITE OUT ZBLEND DEFINE NAME [ARGS...]
 #       the DUT built with DEFINE (arithmetic NAME) but declared zblend's: exit 1, and the tests
 #       that fail are exactly those in which the two arithmetics make some pass's planes
@@ -19,8 +24,11 @@ rm -rf "$out"
 mkdir -p "$out"
 declared=$name
 [[ $mode == wrong ]] && declared=zblend
+[[ $mode == cts* ]] && declared=cts
+defines=()
+for d in ${define//,/ }; do defines+=(--define "$d"); done
 python3 "$root/scripts/conformance.py" --suite "$suite" --sim "$sim" --out "$out/run" \
-  --profile "$root/conformance/ref/profile.json" --define "$define" --arithmetic "$declared" \
+  --profile "$root/conformance/ref/profile.json" "${defines[@]}" --arithmetic "$declared" \
   --zblend "$zblend" -j 2 "$@" >"$out/log.txt" 2>&1
 rc=$?
 verdicts() {  # the tests of a verdict in results.json, sorted, one a line
@@ -37,6 +45,23 @@ case $mode in
     python3 -c 'import json,sys; assert json.load(open(sys.argv[1]))["arithmetic"] == sys.argv[2]' \
       "$out/run/results.json" "$name" || fail "results.json does not record arithmetic $name"
     echo "ok: zb_ref_rop with $define declared $name under $sim: $npass pass, 0 fail"
+    ;;
+  cts)
+    ncts=$(verdicts cts_pass | grep -c .)
+    [[ $rc == 0 && -z $(verdicts fail) ]] || fail "$define under the CTS verdict: exit $rc, failing: $(verdicts fail | tr '\n' ' ')"
+    [[ $ncts -gt 0 ]] || fail "$define under the CTS verdict: no test passed by the threshold only"
+    grep -q "^conformance: $npass pass, $ncts pass by the CTS threshold only (not exact), 0 fail" "$out/log.txt" ||
+      fail "the summary does not count the CTS passes apart: $(grep '^conformance: .* pass, ' "$out/log.txt")"
+    for t in $(verdicts cts_pass); do
+      grep -q "^cts   $t: [0-9]* colour pixels\? within the CTS blend threshold" "$out/log.txt" ||
+        fail "$t: no cts line from the checker"
+    done
+    echo "ok: zb_ref_rop with $define under the CTS verdict ($sim): $npass exact, $ncts by the threshold only, 0 fail"
+    ;;
+  cts-fails)
+    [[ $rc == 1 ]] || fail "$define under the CTS verdict: exit $rc, want 1"
+    grep -q "^FAIL  .*: color pixel (" "$out/log.txt" || fail "no colour pixel beyond the threshold named"
+    echo "ok: $define fails under the CTS verdict ($sim): $(grep -m1 '^FAIL' "$out/log.txt" | cut -c1-120)"
     ;;
   wrong)
     [[ $rc == 1 ]] || fail "$define declared zblend: exit $rc, want 1"
