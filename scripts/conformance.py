@@ -85,7 +85,7 @@ FEATURES = (["blend." + b for b in ("replace", "alpha", "additive", "coverage", 
             + [f"depth_bits.{b}" for b in range(8, 33)] + [f"coverage_samples.{n}" for n in
                                                              (1, 2, 4, 8, 16)])
 PROFILE_KEYS = {"dut", "features", "params", "retire_port", "resident_tile", "sources", "defines",
-                "adapter_version", "arithmetic"}
+                "adapter_version", "arithmetic", "checkout", "include_dirs"}
 # A declared arithmetic's name (docs/datapath.md "Declared arithmetic"; rop/arithmetic.h): the
 # checker replays the streams in it. zblend's is the default.
 # "cts" asks instead for the Khronos CTS blend tests' verdict (per-channel thresholds), reported
@@ -227,10 +227,55 @@ def load_suite(suite):
     return configs, tests, v
 
 
-def load_profile(path, features_arg):
-    """The DUT's profile: {features, params, retire_port, sources, defines, dut, path}."""
+def resolve_paths(path, prof, key, checkout, must_match):
+    """A profile's list of paths: relative to its folder, absolute, or under the DUT's own
+    checkout ("$CHECKOUT/..." and --checkout DIR); globs allowed."""
+    base = os.path.dirname(os.path.abspath(path))
+    out = []
+    for pattern in prof[key]:
+        if not isinstance(pattern, str):
+            usage_error(f"--profile {path}: {key}: {pattern!r} is not a path")
+        if pattern.startswith("$CHECKOUT/"):
+            if not checkout:
+                c = prof.get("checkout") or {}
+                usage_error(f"--profile {path}: its {key} are in a checkout of "
+                            f"{c.get('name', 'the DUT')}"
+                            + (f" ({c['url']} at {c['commit']})" if "url" in c and "commit" in c
+                               else "")
+                            + ": give its folder with --checkout DIR (docs/conformance.md "
+                            "\"Outside ROPs\")")
+            pattern = os.path.join(checkout, pattern[len("$CHECKOUT/"):])
+        found = sorted(glob.glob(os.path.join(base, pattern)))
+        if not found and must_match:
+            usage_error(f"--profile {path}: {key[:-1]} {pattern!r} matches no file in "
+                        f"{checkout if pattern.startswith(checkout or chr(0)) else base}")
+        out += [f for f in found if f not in out]
+    return out
+
+
+def check_checkout(prof, checkout):
+    """Warns when --checkout is not at the commit the profile names."""
+    want = (prof.get("checkout") or {}).get("commit")
+    if not checkout or not want:
+        return
+    p = subprocess.run(["git", "-C", checkout, "rev-parse", "HEAD"], stdout=subprocess.PIPE,
+                       stderr=subprocess.DEVNULL, text=True)
+    have = p.stdout.strip()
+    if p.returncode != 0:
+        print(f"conformance: warning: --checkout {checkout} is not a git checkout: its commit is "
+              f"unknown (the profile was written for {want})", file=sys.stderr)
+    elif not have.startswith(want) and not want.startswith(have):
+        print(f"conformance: warning: --checkout {checkout} is at {have[:12]}; the profile was "
+              f"written for {want[:12]}", file=sys.stderr)
+    else:
+        print(f"conformance: checkout {checkout} at {have[:12]}", file=sys.stderr)
+
+
+def load_profile(path, features_arg, checkout=None):
+    """The DUT's profile: {features, params, retire_port, sources, defines, dut, path, ...}."""
     prof = {"features": [], "params": {}, "retire_port": False, "resident_tile": False,
-            "sources": [], "defines": [], "dut": "", "path": path, "arithmetic": "zblend"}
+            "sources": [], "defines": [], "dut": "", "path": path, "arithmetic": "zblend",
+            "include_dirs": []}
     try:
         with open(path) as f:
             j = json.load(f)
@@ -243,14 +288,10 @@ def load_profile(path, features_arg):
         usage_error(f"--profile {path}: unknown key {unknown[0]!r} (keys: "
                     f"{', '.join(sorted(PROFILE_KEYS))})")
     prof.update(j)
-    base = os.path.dirname(os.path.abspath(path))
-    sources = []
-    for pattern in prof["sources"]:
-        found = sorted(glob.glob(os.path.join(base, pattern)))
-        if not found:
-            usage_error(f"--profile {path}: source {pattern!r} matches no file in {base}")
-        sources += [f for f in found if f not in sources]
-    prof["sources"] = sources
+    if prof.get("checkout") is not None and not isinstance(prof["checkout"], dict):
+        usage_error(f"--profile {path}: checkout: give {{\"name\", \"url\", \"commit\"}}")
+    prof["sources"] = resolve_paths(path, prof, "sources", checkout, True)
+    prof["include_dirs"] = resolve_paths(path, prof, "include_dirs", checkout, True)
     if features_arg is not None:
         prof["features"] = [f for f in features_arg.split(",") if f]
     for pattern in prof["features"]:
@@ -349,6 +390,7 @@ def build(sim, config, a, bdir):
         cmd += [os.path.join(SV, "zb_golden_pkg.vlt")] if a.lockstep else []
         cmd += [f"-G{k}={v}" for k, v in params.items()]
         cmd += [f"+define+{d}" for d in defines]
+        cmd += [f"+incdir+{d}" for d in a.prof["include_dirs"]]
         cmd += list(a.verilator_arg) + sources + tb + list(a.golden_libs)
         if a.golden_libs:
             cmd += ["-LDFLAGS", "-lfmt -lpthread"]
@@ -360,6 +402,7 @@ def build(sim, config, a, bdir):
         cmd = ["iverilog", "-g2012", "-o", vvp, "-s", "zb_conf_tb"]
         cmd += [f"-Pzb_conf_tb.{k}={v}" for k, v in params.items()]
         cmd += [f"-D{d}" for d in defines]
+        cmd += [f"-I{d}" for d in a.prof["include_dirs"]]
         cmd += [os.path.join(SV, "zb_conf_timescale.sv")] + sources + tb
         run_cmd = ["vvp", "-n", vvp] + (["-fst"] if a.waves else [])
     t0 = time.time()
@@ -528,6 +571,9 @@ def main():
     ap.add_argument("--arithmetic", default=None, metavar="NAME",
                     help="the DUT's blend arithmetic, in place of the profile's (docs/datapath.md "
                          "\"Declared arithmetic\": zblend, sum-round255, sum-ceil256, ...)")
+    ap.add_argument("--checkout", default=None, metavar="DIR",
+                    help="the DUT's own checkout, for a profile whose sources say $CHECKOUT/... "
+                         "(an outside ROP run in place: docs/conformance.md \"Outside ROPs\")")
     ap.add_argument("--features", default=None, metavar="GLOBS",
                     help="comma-separated features the DUT supports, in place of the profile's")
     ap.add_argument("--tests", default="", metavar="GLOBS",
@@ -597,7 +643,12 @@ def main():
         if name in CONFIG_PARAMS:
             usage_error(f"--param {name}: set by each test's configuration in the suite")
         a.params[name] = int(value)
-    a.prof = load_profile(a.profile, a.features)
+    if a.checkout is not None:
+        a.checkout = os.path.abspath(a.checkout)
+        if not os.path.isdir(a.checkout):
+            usage_error(f"--checkout {a.checkout}: not a folder (the DUT's own checkout)")
+    a.prof = load_profile(a.profile, a.features, a.checkout)
+    check_checkout(a.prof, a.checkout)
     if a.arithmetic is not None:
         if not ARITHMETIC.fullmatch(a.arithmetic):
             usage_error(f"--arithmetic {a.arithmetic!r}: not an arithmetic: zblend, or <each|sum>-"

@@ -65,8 +65,10 @@ if(NOT ZBLEND_SANITIZE)
                    --profile ${v6})
   add_test(NAME conformance_adapter_versions
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test_adapter_versions.sh ${suite} ${w}/adapter-versions)
+  add_test(NAME conformance_checkout
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test_checkout.sh ${suite} ${w}/checkout)
   set_tests_properties(conformance_adapter_v6_verilator conformance_adapter_v6_icarus
-                       conformance_adapter_versions
+                       conformance_adapter_versions conformance_checkout
                        PROPERTIES LABELS conformance FIXTURES_REQUIRED conformance_suite)
   # Declared arithmetic: the DUT built in each of three rules other than zblend's (round(sum /
   # 255), ceil(sum / 256), floor(sum / 256)) and declaring it passes; the ceil rule declared as
