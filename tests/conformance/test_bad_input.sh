@@ -18,6 +18,9 @@ expect_error "misspelt option" "unknown option '--quik'; did you mean '--quick'"
 expect_error "no subcommand" "conformance" "$zblend" conformance
 expect_error "check: no OUT" "OUT is required" "$zblend" conformance check "$o"
 expect_error "check: no suite" "SUITE $o/manifest.json: cannot read" "$zblend" conformance check "$o" "$o"
+expect_error "check: a bad arithmetic" "--arithmetic: 'sum-ceil' is not an arithmetic" "$zblend" conformance check "$o" "$o" --arithmetic sum-ceil
+expect_error "digests: no suite" "SUITE $o/manifest.json: cannot read" "$zblend" conformance digests "$o" cad-opaque
+expect_error "digests: a bad arithmetic" "--arithmetic: 'round' is not an arithmetic" "$zblend" conformance digests "$o" cad-opaque --arithmetic round
 if [[ $(id -u) -ne 0 ]]; then  # root writes anywhere
   mkdir "$o/locked" && chmod a-w "$o/locked"
   expect_error "DIR not writable" "directory '$o/locked' is not writable" "$zblend" conformance export "$o/locked/s"
