@@ -118,10 +118,18 @@ module zb_ref_rop #(
   function automatic logic [8:0] sum_div(input logic [17:0] t);
     logic [17:0] c;
 `ifdef ZB_REF_ARITH_SUM_ROUND255
+`ifdef ZB_REF_DEFECT_ARITH_NO_HALF
+    c = t;  // the defect: the half before the division forgotten, t / 255 truncated
+`else
     c = t + 18'h80;
+`endif
     c = (c + (c >> 8)) >> 8;
 `elsif ZB_REF_ARITH_SUM_CEIL256
+`ifdef ZB_REF_DEFECT_ARITH_CEIL_AS_ROUND
+    c = (t + 18'h80) >> 8;  // the defect: the declared ceil computed as round
+`else
     c = (t + 18'hff) >> 8;
+`endif
 `else
     c = t >> 8;
 `endif
@@ -142,7 +150,12 @@ module zb_ref_rop #(
 `endif
 `ifdef ZB_REF_ARITH_SUM
     inv = 8'd255 - a;
+`ifdef ZB_REF_DEFECT_ARITH_ONE256
+    // The defect: 1 - a formed as 256 - a beside a division by 256, where the rule says 255 - a.
+    sum = sum_div(18'(16'(s) * 16'(a)) + 18'(16'(16'(d) * (16'(inv) + 16'd1))));
+`else
     sum = sum_div(18'(16'(s) * 16'(a)) + 18'(16'(d) * 16'(inv)));
+`endif
 `else
     sum = 9'(unorm_mul(s, a)) + 9'(unorm_mul(d, 8'd255 - a));
 `endif
