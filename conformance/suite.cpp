@@ -141,6 +141,20 @@ void add_generated(std::vector<TestSpec>& all, const Config& c) {
   }
 }
 
+// Version 8: at 16 and 32 bits, what a DUT of one depth width needs to meet every blend it has
+// (a ROP with a 16-bit depth buffer ran 8 tests of version 7): cad with opaque, the states,
+// values and same-pixel runs of the replace, alpha and additive blends, and the tiles.
+void add_narrow(std::vector<TestSpec>& all, const Config& c) {
+  all.push_back(scene_test(c, "cad", "opaque"));
+  for (BlendMode b : {BlendMode::kReplace, BlendMode::kAlpha, BlendMode::kAdditive})
+    all.push_back(generated_test(c, Family::kStates, b));
+  for (BlendMode b : {BlendMode::kReplace, BlendMode::kAlpha, BlendMode::kAdditive})
+    all.push_back(generated_test(c, Family::kValues, b));
+  for (BlendMode b : {BlendMode::kAlpha, BlendMode::kAdditive})
+    all.push_back(generated_test(c, Family::kSamePixel, b));
+  all.push_back(generated_test(c, Family::kTiles));
+}
+
 }  // namespace
 
 const char* to_string(TestKind k) {
@@ -196,6 +210,7 @@ std::vector<TestSpec> suite_tests(bool quick) {
     all.push_back(random_test(*c, RandomMix::kCore));  // version 5
     add_generated(all, *c);
     all.push_back(generated_test(*c, Family::kLayers));  // version 7
+    add_narrow(all, *c);                                 // version 8
   }
   for (TestSpec& t : all)
     t.quick = std::find(std::begin(kQuick), std::end(kQuick), t.name) != std::end(kQuick);

@@ -29,7 +29,10 @@ constexpr const char* kSuiteName = "zblend-conformance";
 // FRAME_OP kind 5 resolves the layers; the scenes with mlab-2 and mlab-4, the layers family, the
 // same-pixel runs of layers, at the end of their configs' groups (the other tests' bytes as in
 // version 6).
-constexpr int kSuiteVersion = 7;
+// Version 8: at 16 and 32 bits, cad with opaque, states, values and same-pixel runs of the replace,
+// alpha and additive blends, and the tiles, at the end of those configs' groups, so a DUT of one
+// depth width meets every blend it has (the other tests' bytes as in version 7).
+constexpr int kSuiteVersion = 8;
 
 // Bad input to the kit (a malformed suite, a path it cannot use, an unknown test): one line.
 struct ConformanceError : std::runtime_error {

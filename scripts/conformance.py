@@ -31,7 +31,8 @@ Tiers: --quick runs the manifest's quick tier (the fewest tests keeping the most
 the whole suite is the full tier; `zblend conformance export --seed N` writes the seeded random
 tier, a suite of its own.
 
-Suite versions: 7 (mlab-K's layers; 6 added the generated tests and tiers). Earlier suites lack
+Suite versions: 8 (the blends' generated tests at 16 and 32 bits; 7 added mlab-K's layers, 6 the
+generated tests and tiers). Earlier suites lack
 what this script selects by or the layers tests: export the suite again with this zblend.
 """
 import argparse
@@ -52,7 +53,7 @@ import time
 import xml.etree.ElementTree as ET
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SUITE_VERSIONS = (7,)  # the versions this script runs (conformance/suite.h kSuiteVersion)
+SUITE_VERSIONS = (8,)  # the versions this script runs (conformance/suite.h kSuiteVersion)
 # Why each earlier version is refused.
 REFUSED = {v: "it has no per-test features or file checksums (version 5 added them)"
            for v in range(1, 5)}
@@ -60,6 +61,8 @@ REFUSED[5] = ("it has no tiers and none of the tests generated from the coverage
               "(version 6 added them)")
 REFUSED[6] = ("it has no tests of mlab-K's layers, and its PASS words carry the 13-bit pass "
               "state (version 7 added them)")
+REFUSED[7] = ("at 16 and 32 bits it has none of the tests of the replace, alpha and additive "
+              "blends' states, values and same-pixel runs (version 8 added them)")
 TIMINGS = {"tight": 0, "loose": 1, "random": 2}  # zb_conf_tb's +timing
 PLANES = ("color", "depth", "coverage", "peel", "accum")
 # The testbench's parameters that each test's configuration sets (manifest "configs").

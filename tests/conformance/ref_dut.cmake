@@ -16,8 +16,10 @@
 # replace and alpha blends' states (states-replace, states-alpha; the -peel ones need the peel
 # test), depth-bits at the three widths, values-replace and values-alpha, tiles and
 # same-pixel-alpha (its second pass replaces under lequal): 9 of the 28 generated. Version 7's 24
-# layers tests (blend 6) add none. The suite: 84 supported, 120 NOT SUPPORTED; its cad-* tests:
-# 6 + 2 + 2 = 10 of 22, and random-core.
+# layers tests (blend 6) add none. Version 8 adds at 16 and at 32 bits cad-opaque, the states and
+# values of replace, alpha and additive, the same-pixel runs of alpha and additive, and tiles: 7 of
+# those 10 each (not the additive ones). The suite: 98 supported, 126 NOT SUPPORTED; its cad-*
+# tests: 6 + 3 + 3 = 12 of 24, and random-core.
 if(NOT ZBLEND_SANITIZE)
   set(ref ${CMAKE_CURRENT_SOURCE_DIR}/test_ref_dut.sh)
   set(zb $<TARGET_FILE:zblend>)
@@ -25,17 +27,17 @@ if(NOT ZBLEND_SANITIZE)
   # Lint: both variants (zb_ref_rop with and without ZB_REF_FULL, zb_ref_pipe), with no defect,
   # with every defect of conformance/ref/defects.json at once and with each alone (about 13 s).
   add_test(NAME conformance_ref_lint COMMAND ${ref} lint)
-  # The whole suite: Verilator builds three configurations (3 to 5 s each) and runs the 84 tests
+  # The whole suite: Verilator builds three configurations (3 to 5 s each) and runs the 98 tests
   # in a few seconds.
   add_test(NAME conformance_ref_verilator
-           COMMAND ${ref} pass verilator ${suite} ${w}/ref-verilator ${zb} "" 84 120)
+           COMMAND ${ref} pass verilator ${suite} ${w}/ref-verilator ${zb} "" 98 126)
   # Icarus: every cad test, at the three depth widths the supported tests come in, and the
   # random stream of every depth function.
   add_test(NAME conformance_ref_icarus
-           COMMAND ${ref} pass icarus ${suite} ${w}/ref-icarus ${zb} "cad-*,random-core" 11 12)
+           COMMAND ${ref} pass icarus ${suite} ${w}/ref-icarus ${zb} "cad-*,random-core" 13 12)
   # Another stall seed, most cycles stalled (160 of 256) and gaps in the fragment stream.
   add_test(NAME conformance_ref_random_stalls
-           COMMAND ${ref} stalls verilator ${suite} ${w}/ref-stalls ${zb} "" 84 120 7 160 25
+           COMMAND ${ref} stalls verilator ${suite} ${w}/ref-stalls ${zb} "" 98 126 7 160 25
                    cad-three-pass)
   add_test(NAME conformance_ref_bug
            COMMAND ${ref} bug verilator ${suite} ${w}/ref-bug ${zb} cad-opaque,cad-three-pass
@@ -43,14 +45,14 @@ if(NOT ZBLEND_SANITIZE)
   add_test(NAME conformance_ref_hang
            COMMAND ${ref} hang icarus ${suite} ${w}/ref-hang ${zb} cad-opaque)
   # The full datapath (ZB_REF_FULL) and the pipelined variant, clean: the quick tier on Icarus
-  # (every test: 33), the whole suite on Verilator for the pipeline (its 97 of 204: replace,
+  # (every test: 33), the whole suite on Verilator for the pipeline (its 117 of 224: replace,
   # alpha, additive, every depth function, depth write, colour mask).
   set(refdir ${PROJECT_SOURCE_DIR}/conformance/ref)
   add_test(NAME conformance_ref_full
            COMMAND ${ref} pass icarus ${suite} ${w}/ref-full ${zb} "" 33 0 --quick
                    --profile ${refdir}/profile_full.json)
   add_test(NAME conformance_ref_pipe
-           COMMAND ${ref} pass verilator ${suite} ${w}/ref-pipe ${zb} "" 97 107
+           COMMAND ${ref} pass verilator ${suite} ${w}/ref-pipe ${zb} "" 117 107
                    --profile ${refdir}/profile_pipe.json)
   # Upgrading the kit never breaks an adapter (docs/conformance.md "Adapter versions"): the
   # second DUT's adapter as it was at interface version 6 (tests/conformance/adapter_v6, before
@@ -58,10 +60,10 @@ if(NOT ZBLEND_SANITIZE)
   # version 7, is conformance_ref_verilator's. Then the versions read off the ports, without a run.
   set(v6 ${CMAKE_CURRENT_SOURCE_DIR}/adapter_v6/profile.json)
   add_test(NAME conformance_adapter_v6_verilator
-           COMMAND ${ref} pass verilator ${suite} ${w}/adapter-v6-verilator ${zb} "" 84 120
+           COMMAND ${ref} pass verilator ${suite} ${w}/adapter-v6-verilator ${zb} "" 98 126
                    --profile ${v6})
   add_test(NAME conformance_adapter_v6_icarus
-           COMMAND ${ref} pass icarus ${suite} ${w}/adapter-v6-icarus ${zb} "cad-*,random-core" 11 12
+           COMMAND ${ref} pass icarus ${suite} ${w}/adapter-v6-icarus ${zb} "cad-*,random-core" 13 12
                    --profile ${v6})
   add_test(NAME conformance_adapter_versions
            COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test_adapter_versions.sh ${suite} ${w}/adapter-versions)

@@ -22,7 +22,7 @@ cat "$tmp/a.log"
 python3 - "$tmp/a/manifest.json" >"$tmp/tests" <<'PY' || bad "manifest unreadable"
 import hashlib, json, os, sys
 m = json.load(open(sys.argv[1]))
-assert m["suite"] == "zblend-conformance" and m["version"] == 7
+assert m["suite"] == "zblend-conformance" and m["version"] == 8
 configs = {c["name"] for c in m["configs"]}
 BLEND = ["replace", "alpha", "additive", "coverage", "under", "accumulate", "layers"]
 FUNC = ["never", "less", "equal", "lequal", "greater", "notequal", "gequal", "always"]
