@@ -89,6 +89,11 @@ def main(zblend, doc_path):
     # Every `conformance check SUITE OUT` after the steps that make both.
     exported, ran = set(), set()
     for i, ln in enumerate(lines, 1):
+        # A command continued with a backslash is read whole.
+        k = i
+        while ln.startswith(("build/", "python3 ")) and ln.rstrip().endswith("\\") and k < len(lines):
+            ln = ln.rstrip()[:-1] + " " + lines[k].strip()
+            k += 1
         words = shlex.split(ln.split("#")[0]) if ln.startswith(("build/", "python3 ")) else []
         if words[1:3] == ["conformance", "export"]:
             exported.add(words[-1])

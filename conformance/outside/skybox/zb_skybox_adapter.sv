@@ -299,7 +299,7 @@ module zb_conf_adapter import VX_gpu_pkg::*; import VX_om_pkg::*; #(
       end
       if (rd_fire) begin
         h_v[h_tail]   <= 1'b1;
-        h_idx[h_tail] <= IdxW'(u_om.mem_req_pos_y[0] * `VX_OM_DIM_BITS'(TILE_W) + u_om.mem_req_pos_x[0]);
+        h_idx[h_tail] <= f_idx;  // rd_fire is the fragment's own take
         h_tail        <= h_tail + 3'd1;
       end
     end
