@@ -168,8 +168,9 @@ void run_check(const CLI::App& cmd, const CheckOptions& o) {
       if (r.pass || r.skipped || r.first_x < 0)
         fmt::print("{}\n", r.line);
       else
-        fmt::print("{}; why: {} pixel {} {} --at {},{}\n", r.line, program, shell_word(o.suite),
-                   r.name, r.first_x, r.first_y);
+        fmt::print("{}; why: {} pixel {} {} --at {},{}{}\n", r.line, program, shell_word(o.suite),
+                   r.name, r.first_x, r.first_y,
+                   rule.cts || arith->is_zblend() ? "" : " --arithmetic " + arith_name);
       std::fflush(stdout);
     }, rule);
   } catch (const cf::ConformanceError& e) {

@@ -2,6 +2,7 @@
 // conformance test's stream, from the suite alone (docs/history.md).
 #include <algorithm>
 #include <memory>
+#include <optional>
 
 #include <fmt/core.h>
 
@@ -19,7 +20,7 @@ using namespace cli;
 namespace {
 
 struct SuitePixelOptions {
-  std::string suite, test, at, json;
+  std::string suite, test, at, json, arithmetic = "zblend";
 };
 
 void run_suite_pixel(const SuitePixelOptions& o) {
@@ -33,15 +34,22 @@ void run_suite_pixel(const SuitePixelOptions& o) {
     throw UsageError(fmt::format("TEST: '{}' is not a test of {} (its manifest.json names them)",
                                  o.test, o.suite));
   check_json(o.json);
+  const std::optional<Arithmetic> arith = parse_arithmetic(o.arithmetic);
+  if (!arith)
+    throw UsageError(fmt::format("--arithmetic: '{}' is not an arithmetic: zblend, or <each|sum>-"
+                                 "<zblend|round255|floor256|ceil256|round256>[-one256]",
+                                 o.arithmetic));
   Trace trace;
   try {
     trace = conformance::read_stream(o.suite + "/" + o.test + "/stream.hex");
   } catch (const TraceError& e) {
     throw UsageError(e.what());
   }
-  const FrameHistory f = conformance::stream_history(trace, parse_at(o.at, trace.width, trace.height));
-  write_histories(f, fmt::format("conformance test {} of {} ({})", o.test, o.suite,
-                                 count_text(f.passes.size(), "pass", "passes")),
+  const FrameHistory f =
+      conformance::stream_history(trace, parse_at(o.at, trace.width, trace.height), *arith);
+  write_histories(f, fmt::format("conformance test {} of {} ({}{})", o.test, o.suite,
+                                 count_text(f.passes.size(), "pass", "passes"),
+                                 arith->is_zblend() ? "" : ", arithmetic " + o.arithmetic),
                   o.suite + "/" + o.test, "", o.json, nullptr);
 }
 
@@ -55,6 +63,9 @@ void add_suite_pixel_command(CLI::App& parent) {
   cmd->add_option("SUITE", o->suite, "The suite's directory (conformance export)")->required();
   cmd->add_option("TEST", o->test, "The test's name (its directory in SUITE)")->required();
   add_at_json_options(cmd, o->at, o->json);
+  cmd->add_option("--arithmetic", o->arithmetic,
+                  "The DUT's declared blend arithmetic to replay in (docs/datapath.md \"Declared "
+                  "arithmetic\"; default zblend)");
   cmd->callback([o] { run_suite_pixel(*o); });
 }
 

@@ -350,9 +350,10 @@ Trace read_stream(const std::string& path) {
   return decode_stream(bytes.str(), path);
 }
 
-FrameHistory stream_history(Trace t, const std::vector<std::pair<int, int>>& pixels) {
+FrameHistory stream_history(Trace t, const std::vector<std::pair<int, int>>& pixels,
+                            const Arithmetic& arithmetic) {
   for (TracePass& p : t.passes) p.name.clear();
-  return record_history(t, pixels);
+  return record_history(t, pixels, arithmetic);
 }
 
 const char* to_string(Plane p) {

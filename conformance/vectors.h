@@ -43,7 +43,8 @@ Trace read_stream(const std::string& path);
 // The histories of `pixels` in a decoded stream's replay (record_history). A stream names no
 // passes (decode's "pass-<k>" count from 1), so they are shown by number, from 0 as the
 // lock-step report counts them.
-FrameHistory stream_history(Trace t, const std::vector<std::pair<int, int>>& pixels);
+FrameHistory stream_history(Trace t, const std::vector<std::pair<int, int>>& pixels,
+                            const Arithmetic& arithmetic = {});
 
 // The planes, in signature order; the name in expect.<name>.hex and got.<name>.hex. kAccum is
 // the accumulation word {r, acc_A, acc_B, acc_G, acc_R} (acc_R at bit 0; zb_rop's AccW bits).

@@ -257,21 +257,34 @@ def resolve_paths(path, prof, key, checkout, must_match):
 
 
 def check_checkout(prof, checkout):
-    """Warns when --checkout is not at the commit the profile names."""
+    """The checkout's commit and local changes, for results.json: warns when it is not at the
+    commit the profile names, or when tracked files are modified (the run is then of a modified
+    DUT, not of that commit)."""
     want = (prof.get("checkout") or {}).get("commit")
-    if not checkout or not want:
-        return
+    if not checkout:
+        return None
     p = subprocess.run(["git", "-C", checkout, "rev-parse", "HEAD"], stdout=subprocess.PIPE,
                        stderr=subprocess.DEVNULL, text=True)
     have = p.stdout.strip()
     if p.returncode != 0:
         print(f"conformance: warning: --checkout {checkout} is not a git checkout: its commit is "
-              f"unknown (the profile was written for {want})", file=sys.stderr)
-    elif not have.startswith(want) and not want.startswith(have):
+              f"unknown" + (f" (the profile was written for {want})" if want else ""),
+              file=sys.stderr)
+        return {"path": checkout, "commit": None, "modified": []}
+    st = subprocess.run(["git", "-C", checkout, "status", "--porcelain", "--untracked-files=no"],
+                        stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+    modified = sorted(ln[3:] for ln in st.stdout.splitlines() if ln.strip())
+    if want and not have.startswith(want) and not want.startswith(have):
         print(f"conformance: warning: --checkout {checkout} is at {have[:12]}; the profile was "
               f"written for {want[:12]}", file=sys.stderr)
     else:
         print(f"conformance: checkout {checkout} at {have[:12]}", file=sys.stderr)
+    if modified:
+        print(f"conformance: warning: --checkout {checkout} has {len(modified)} modified file"
+              f"{'s' if len(modified) != 1 else ''} ({', '.join(modified[:3])}"
+              f"{', ...' if len(modified) > 3 else ''}): the run is of a modified DUT, not of "
+              f"{have[:12]}", file=sys.stderr)
+    return {"path": checkout, "commit": have, "modified": modified}
 
 
 def load_profile(path, features_arg, checkout=None):
@@ -508,6 +521,7 @@ def write_results(a, results, counts, suite_version, no_accum):
            "timing": a.timing, "schedule": a.schedule, "seed": a.seed,
            "profile": a.prof["path"], "dut": a.prof["dut"], "accum_plane": not no_accum,
            "adapter_version": a.adapter_version, "arithmetic": a.prof["arithmetic"],
+           "checkout": a.checkout_state,
            "counts": counts, "tests": results}
     with open(os.path.join(a.out, "results.json"), "w") as f:
         json.dump(doc, f, indent=2)
@@ -651,7 +665,7 @@ def main():
         if not os.path.isdir(a.checkout):
             usage_error(f"--checkout {a.checkout}: not a folder (the DUT's own checkout)")
     a.prof = load_profile(a.profile, a.features, a.checkout)
-    check_checkout(a.prof, a.checkout)
+    a.checkout_state = check_checkout(a.prof, a.checkout)
     if a.arithmetic is not None:
         if not ARITHMETIC.fullmatch(a.arithmetic):
             usage_error(f"--arithmetic {a.arithmetic!r}: not an arithmetic: zblend, or <each|sum>-"

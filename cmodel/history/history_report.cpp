@@ -80,15 +80,25 @@ std::string writes_text(const FrameHistory& f, const PixelWrites& w) {
 
 // The blend's roundings per channel, as datapath.md pins them (m(x, y) the unorm8 multiply of
 // rop/blend.h): "R m(0,77)+m(255,178)=0+178=178, ...". Empty for modes without them here.
-std::string rounding_text(BlendMode mode, Rgba8 s, Rgba8 d) {
+// Under a declared arithmetic other than zblend's the alpha and additive blends show its rule:
+// "R sum-round255(35*110+40*145)=38" (datapath.md "Declared arithmetic").
+std::string rounding_text(BlendMode mode, Rgba8 s, Rgba8 d, const Arithmetic& r) {
   const uint8_t sv[4] = {s.r, s.g, s.b, s.a}, dv[4] = {d.r, d.g, d.b, d.a};
   const char names[4] = {'R', 'G', 'B', 'A'};
   const uint8_t a = s.a, t = uint8_t(255 - d.a);
+  const std::string rule = to_string(r);
+  const uint32_t one_v = one_value(r.one);
   std::string out;
   for (int c = 0; c < 4; ++c) {
     const uint8_t x = sv[c], y = dv[c];
     std::string one;
-    if (mode == BlendMode::kAlpha) {
+    if (!r.is_zblend() && mode == BlendMode::kAlpha) {
+      one = fmt::format("{}({}*{}+{}*{})={}", rule, x, a, y, one_v - a, blend_alpha(r, x, a, y));
+    } else if (!r.is_zblend() && mode == BlendMode::kAdditive) {
+      one = r.round == BlendRound::kSum
+                ? fmt::format("{}({}*{}+{}*{})={}", rule, x, a, y, one_v, blend_additive(r, x, a, y))
+                : fmt::format("{}+{}({}*{})={}", y, rule, x, a, blend_additive(r, x, a, y));
+    } else if (mode == BlendMode::kAlpha) {
       const int p = mul_unorm8(x, a), q = mul_unorm8(y, uint8_t(255 - a));
       one = fmt::format("m({},{})+m({},{})={}+{}={}", x, a, y, 255 - a, p, q, std::min(255, p + q));
     } else if (mode == BlendMode::kAdditive) {
@@ -243,7 +253,7 @@ std::string fragment_text(const FrameHistory& f, const PassRecord& pass, const H
         : mode == BlendMode::kLayers
             ? (r.writes.layers ? layers_steps_text(f, pass.state.layers, g, e.before, r.writes) : "")
         : mode == BlendMode::kCoverage ? coverage_text(f, g, e.before)
-                                       : rounding_text(mode, g.color, e.before.color);
+                                       : rounding_text(mode, g.color, e.before.color, f.arithmetic);
     if (!steps.empty()) s += "    roundings: " + steps + "\n";
   }
   return s;

@@ -30,6 +30,7 @@ void HistoryRecorder::begin_frame(int width, int height, int depth_bits, Rgba8 c
   frame_.depth_bits = depth_bits;
   frame_.coverage_samples = coverage_samples;
   frame_.wboit = wboit;
+  frame_.arithmetic = arith_;
   slot_.assign(size_t(width) * size_t(height), -1);
   const Framebuffer& fb = golden_.framebuffer();
   for (const auto& [x, y] : asked_) {
@@ -206,8 +207,9 @@ FrameHistory record_history(const RasterizedScene& rs, const PassPlan& plan,
   return checked(std::move(f));
 }
 
-FrameHistory record_history(const Trace& trace, const std::vector<std::pair<int, int>>& pixels) {
-  HistoryRecorder recorder(pixels);
+FrameHistory record_history(const Trace& trace, const std::vector<std::pair<int, int>>& pixels,
+                            const Arithmetic& arithmetic) {
+  HistoryRecorder recorder(pixels, arithmetic);
   replay_trace(trace, recorder);
   return checked(recorder.take());
 }

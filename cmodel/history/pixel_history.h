@@ -99,6 +99,7 @@ struct FrameHistory {
   int width = 0, height = 0, depth_bits = 0, coverage_samples = 0;
   bool from_scene = false;           // Fragment::prim names a scene's triangle or edge
   WboitFormat wboit;
+  Arithmetic arithmetic;  // the blend arithmetic replayed in (a DUT's declared one; rop/arithmetic.h)
   std::vector<PassRecord> passes;
   std::vector<PixelHistory> pixels;  // in the order asked
 };
@@ -110,7 +111,10 @@ struct FrameHistory {
 // come here.
 class HistoryRecorder final : public Backend {
  public:
-  explicit HistoryRecorder(std::vector<std::pair<int, int>> pixels) : asked_(std::move(pixels)) {}
+  explicit HistoryRecorder(std::vector<std::pair<int, int>> pixels, const Arithmetic& arith = {})
+      : asked_(std::move(pixels)), arith_(arith) {
+    golden_.set_arithmetic(arith);
+  }
   const char* name() const override { return "golden"; }
   using Backend::begin_frame;
   void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color, int coverage_samples,
@@ -129,6 +133,7 @@ class HistoryRecorder final : public Backend {
  private:
   GoldenRop golden_;
   std::vector<std::pair<int, int>> asked_;
+  Arithmetic arith_;
   std::vector<int32_t> slot_;  // per frame pixel: its history's index, or -1
   FrameHistory frame_;
   std::string label_;
@@ -146,8 +151,10 @@ std::optional<std::string> replay_error(const PixelHistory& h, const FrameHistor
 // the exact reference at each pixel.
 FrameHistory record_history(const RasterizedScene& rs, const PassPlan& plan,
                             const std::vector<std::pair<int, int>>& pixels);
-// The same for a trace's replay (a .zbt file, a conformance test's stream).
-FrameHistory record_history(const Trace& trace, const std::vector<std::pair<int, int>>& pixels);
+// The same for a trace's replay (a .zbt file, a conformance test's stream), in `arithmetic` (a
+// DUT's declared one: the conformance path).
+FrameHistory record_history(const Trace& trace, const std::vector<std::pair<int, int>>& pixels,
+                            const Arithmetic& arithmetic = {});
 
 
 }  // namespace zb

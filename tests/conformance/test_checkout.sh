@@ -30,7 +30,12 @@ profile 0123456789abcdef0123456789abcdef01234567
 conf --checkout "$out/rop" >"$out/other.txt" 2>&1 || fail "another commit: exit $?"
 grep -q "^conformance: warning: --checkout $out/rop is at ${head:0:12}; the profile was written for 0123456789ab$" "$out/other.txt" ||
   fail "no warning for another commit: $(head -n 3 "$out/other.txt")"
+# A modified file in the checkout: a warning naming it.
+echo "// changed" >>"$out/rop/rtl/outside_rop.sv"
+conf --checkout "$out/rop" >"$out/dirty.txt" 2>&1 || fail "a modified checkout: exit $?"
+grep -q "^conformance: warning: --checkout $out/rop has 1 modified file (rtl/outside_rop.sv): the run is of a modified DUT, not of ${head:0:12}$" "$out/dirty.txt" ||
+  fail "no warning for a modified checkout: $(head -n 4 "$out/dirty.txt")"
 conf --checkout "$out/nothere" >"$out/bad.txt" 2>&1
 [[ $? == 2 ]] && grep -q "^conformance.py: error: --checkout .*nothere: not a folder" "$out/bad.txt" ||
   fail "a missing --checkout: $(cat "$out/bad.txt")"
-echo "ok: \$CHECKOUT sources need --checkout, resolve in it, and its commit is checked against the profile's"
+echo "ok: \$CHECKOUT sources need --checkout, resolve in it, its commit is checked against the profile's, its local changes are warned of"

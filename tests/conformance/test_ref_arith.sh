@@ -83,7 +83,17 @@ print(",".join(t["name"] for t in json.load(open(sys.argv[1]))["tests"] if t["ve
     [[ $npass -gt 0 ]] || fail "no test passed: the wrong declaration should fail only where the arithmetics differ"
     diff "$out/failed.txt" "$out/differ.txt" >"$out/sets.diff" ||
       fail "the failing tests are not those where $name and zblend differ: $(cat "$out/sets.diff")"
-    echo "ok: zb_ref_rop with $define declared zblend under $sim: the $(grep -c . "$out/failed.txt") tests where the arithmetics differ fail, $npass pass"
+    # The pixel history in the DUT's rule ends where the DUT ended: the first failing colour pixel.
+    line=$(grep -m1 "^FAIL  .*: color pixel (" "$out/log.txt") || fail "no failing colour pixel"
+    read -r t x y got < <(sed -E 's/^FAIL  ([^:]*): color pixel \(([0-9]+), ([0-9]+)\): expected [0-9a-f]+, got ([0-9a-f]+).*/\1 \2 \3 \4/' <<<"$line")
+    "$zblend" conformance pixel "$suite" "$t" --at "$x,$y" --arithmetic "$name" >"$out/history.txt" 2>&1 ||
+      fail "conformance pixel $t --at $x,$y --arithmetic $name: exit $?"
+    final=$(sed -nE 's/^final  colour \(([0-9]+),([0-9]+),([0-9]+),([0-9]+)\).*/\1 \2 \3 \4/p' "$out/history.txt")
+    read -r r g b a <<<"$final"
+    [[ -n $final && $(printf '%02x%02x%02x%02x' "$a" "$b" "$g" "$r") == "$got" ]] ||
+      fail "$t ($x, $y): the history in $name ends at ($final), the DUT wrote $got"
+    grep -q "^    roundings: R $name(" "$out/history.txt" || fail "the history shows no $name roundings"
+    echo "ok: zb_ref_rop with $define declared zblend under $sim: the $(grep -c . "$out/failed.txt") tests where the arithmetics differ fail, $npass pass; $t ($x, $y) replayed in $name ends at the DUT's $got"
     ;;
   *) echo "usage: test_ref_arith.sh pass|wrong ..." >&2; exit 2 ;;
 esac

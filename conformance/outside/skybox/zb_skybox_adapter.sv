@@ -25,7 +25,8 @@
 // to the colour word's byte mask, blend replace/alpha/additive as GL factors); zblend's colour
 // packing (r in the low byte) to and from rgba_t's (b in the low byte). Coverage and peel:
 // the OM has neither; the adapter keeps and returns what was loaded. No accumulation plane,
-// no layers, no retire port.
+// no layers, no retire port. The OM's reset is stretched to 16 clocks and idle_o waits 32
+// quiet clocks after the last memory traffic (README.md, "The adapter").
 `include "VX_om_define.vh"
 
 /* verilator lint_off DECLFILENAME */
@@ -411,6 +412,8 @@ module zb_conf_adapter import VX_gpu_pkg::*; import VX_om_pkg::*; #(
   logic unused;
   assign unused = ^{state_i[12], state_layers_i, st_resolve_i, ld_acc_i, ld_depth_i, frag_z_i,
                     frag_cov_i, COV_SAMPLES, cache_bus_if[0].req_data.atype};
+  // conformance.py --define ZB_SKYBOX_TRACE: one line per event into sim.log (state writes, the
+  // OM's reads and write-backs, its buffer's output, the cache port), as used for README.md.
 `ifdef ZB_SKYBOX_TRACE
   int unsigned cyc = 0;
   always_ff @(posedge clk_i) begin
