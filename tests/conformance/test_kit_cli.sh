@@ -34,6 +34,8 @@ s=$out/suite
 truncate -s -40 "$s/hazard/stream.hex"
 bad_input "corrupt suite: .*hazard/stream.hex: SHA-256" --suite "$s" --out "$out/run"
 cp "$suite/hazard/stream.hex" "$s/hazard/stream.hex"
+sed -i 's/"version": 8/"version": 7/' "$s/manifest.json"
+bad_input "suite version 7 is refused: at 16 and 32 bits it has none of the tests" --suite "$s" --out "$out/run"
 sed -i 's/"version": 7/"version": 5/' "$s/manifest.json"
 bad_input "suite version 5 is refused: it has no tiers and none of the tests generated" --suite "$s" --out "$out/run"
 sed -i 's/"version": 5/"version": 4/' "$s/manifest.json"
@@ -81,7 +83,7 @@ r = json.load(open(f"{d}/results.json"))
 v = {t["name"]: t["verdict"] for t in r["tests"]}
 assert v == {"cad-opaque": "pass", "cad-three-pass": "pass", "cad-coverage-aa": "not_supported"}, v
 assert r["counts"] == {"pass": 2, "cts_pass": 0, "fail": 0, "not_supported": 1, "timeout": 0, "not_run": 0}, r["counts"]
-assert r["suite_version"] == 7 and r["timing"] == "tight" and r["schedule"] == "resident"
+assert r["suite_version"] == 8 and r["timing"] == "tight" and r["schedule"] == "resident"
 s = ET.parse(f"{d}/junit.xml").getroot().find("testsuite")
 assert (s.get("tests"), s.get("failures"), s.get("skipped")) == ("3", "0", "1"), s.attrib
 sk = [c.get("name") for c in s.iter("testcase") if c.find("skipped") is not None]
