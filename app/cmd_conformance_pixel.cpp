@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 
 #include "check.h"
+#include "suite.h"
 #include "cli.h"
 #include "commands.h"
 #include "io/trace.h"
@@ -24,27 +25,15 @@ struct SuitePixelOptions {
 };
 
 void run_suite_pixel(const SuitePixelOptions& o) {
-  std::vector<std::string> names;
-  try {
-    names = conformance::verified_test_names(o.suite);
-  } catch (const std::exception& e) {
-    throw UsageError(e.what());
-  }
-  if (std::find(names.begin(), names.end(), o.test) == names.end())
-    throw UsageError(fmt::format("TEST: '{}' is not a test of {} (its manifest.json names them)",
-                                 o.test, o.suite));
-  check_json(o.json);
-  const std::optional<Arithmetic> arith = parse_arithmetic(o.arithmetic);
-  if (!arith)
-    throw UsageError(fmt::format("--arithmetic: '{}' is not an arithmetic: zblend, or <each|sum>-"
-                                 "<zblend|round255|floor256|ceil256|round256>[-one256]",
-                                 o.arithmetic));
   Trace trace;
   try {
-    trace = conformance::read_stream(o.suite + "/" + o.test + "/stream.hex");
-  } catch (const TraceError& e) {
+    trace = conformance::read_test_stream(o.suite, o.test);
+  } catch (const zb::conformance::ConformanceError& e) {
     throw UsageError(e.what());
   }
+  check_json(o.json);
+  const std::optional<Arithmetic> arith = parse_arithmetic(o.arithmetic);
+  if (!arith) throw UsageError("--arithmetic: " + arithmetic_error(o.arithmetic));
   const FrameHistory f =
       conformance::stream_history(trace, parse_at(o.at, trace.width, trace.height), *arith);
   write_histories(f, fmt::format("conformance test {} of {} ({}{})", o.test, o.suite,

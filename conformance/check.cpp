@@ -18,7 +18,6 @@
 #include <nlohmann/json.hpp>
 
 #include "geometry/geometry.h"
-#include "rop/rop.h"
 #include "sha256.h"
 #include "suite.h"
 #include "vectors.h"
@@ -249,17 +248,11 @@ PlaneCheck check_plane(const ManifestTest& t, Plane plane, const std::vector<std
 }
 
 // The testbench's digest of the planes after each pass (got.passes.hex: "<passes done> <16 hex
-// digits>" a line) against the golden model's: "" when every line matches or there is no file,
-// else the first differing pass. A pass another overwrites is seen here, not in the final planes.
-std::string check_passes(const fs::path& suite, const fs::path& out, const ManifestTest& t,
-                         const Arithmetic& arithmetic) {
-  const fs::path path = out / t.name / "got.passes.hex";
-  std::error_code ec;
-  if (!fs::exists(path, ec)) return "";
+// digits>" a line) against the golden model's: "" when every line matches, else the first
+// differing pass. A pass another overwrites is seen here, not in the final planes.
+std::string check_passes(const fs::path& path, const std::vector<PassDigest>& golden) {
   const std::optional<std::string> text = read_text(path);
   if (!text) return fmt::format("{}: cannot read: {}", path.string(), std::strerror(errno));
-  const std::vector<PassDigest> golden =
-      pass_digests(read_stream((suite / t.name / "stream.hex").string()), arithmetic);
   std::istringstream in(*text);
   std::string line;
   for (int n = 1; std::getline(in, line); ++n) {
@@ -298,14 +291,17 @@ TestResult check_test(const fs::path& suite, const fs::path& out, const Manifest
     throw ConformanceError(fmt::format("SUITE {}: the expect files of test '{}' do not match its "
                                        "signature_sha256 (export the suite again)",
                                        suite.string(), t.name));
-  if (!arithmetic.is_zblend()) {
-    // The DUT's own arithmetic: the stream (verified above) replayed in it.
-    GoldenRop golden;
-    golden.set_arithmetic(arithmetic);
-    replay_trace(read_stream((suite / t.name / "stream.hex").string()), golden);
-    for (size_t p = 0; p < std::size(kPlanes); ++p)
-      expect_text[p] = plane_hex(golden.framebuffer(), kPlanes[p]);
-  }
+  // The stream (verified above) replayed once, for the digests after each pass (exact: a DUT
+  // judged by thresholds is judged on its final planes alone) and, in a declared arithmetic other
+  // than zblend's, for the expected planes.
+  const fs::path passes_path = out / t.name / "got.passes.hex";
+  std::error_code ec;
+  const bool digests = !rule.cts && fs::exists(passes_path, ec);
+  std::optional<GoldenReplay> replay;
+  if (digests || !arithmetic.is_zblend())
+    replay = replay_golden(read_stream((suite / t.name / "stream.hex").string()), arithmetic);
+  if (!arithmetic.is_zblend())
+    for (size_t p = 0; p < std::size(kPlanes); ++p) expect_text[p] = plane_hex(replay->frame, kPlanes[p]);
   TestResult r{t.name, true, false, ""};
   if (t.needs_accum && !dut_accum) {
     r.skipped = true;
@@ -342,8 +338,7 @@ TestResult check_test(const fs::path& suite, const fs::path& out, const Manifest
     }
     states += fmt::format("{}{} {}", p ? ", " : "", to_string(plane), c.state);
   }
-  // The digests are exact: a DUT judged by thresholds is judged on its final planes alone.
-  const std::string passes = rule.cts ? "" : check_passes(suite, out, t, arithmetic);
+  const std::string passes = digests ? check_passes(passes_path, replay->digests) : "";
   if (first.empty() && !passes.empty()) first = passes + " (the final planes match: a later pass "
                                                 "overwrote what this one did wrong)";
   else if (!passes.empty()) states += "; " + passes;
@@ -365,6 +360,18 @@ std::vector<std::string> verified_test_names(const std::string& suite) {
   std::vector<std::string> names;
   for (const ManifestTest& t : tests) names.push_back(t.name);
   return names;
+}
+
+Trace read_test_stream(const std::string& suite, const std::string& test) {
+  const std::vector<std::string> names = verified_test_names(suite);
+  if (std::find(names.begin(), names.end(), test) == names.end())
+    throw ConformanceError(fmt::format("TEST: '{}' is not a test of {} (its manifest.json names "
+                                       "them)", test, suite));
+  try {
+    return read_stream((fs::path(suite) / test / "stream.hex").string());
+  } catch (const TraceError& e) {
+    throw ConformanceError(e.what());
+  }
 }
 
 std::optional<RunRecord> read_run(const std::string& out) {

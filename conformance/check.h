@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "io/trace.h"
 #include "rop/arithmetic.h"
 
 namespace zb::conformance {
@@ -29,6 +30,10 @@ struct TestResult {
 // The names of SUITE's tests, in its order, once every file is verified. Throws
 // ConformanceError on a malformed manifest or a corrupt suite.
 std::vector<std::string> verified_test_names(const std::string& suite);
+
+// TEST's stream of SUITE, once every file is verified. Throws ConformanceError on a corrupt suite,
+// a name that is not a test ("TEST: ..."), or a stream that does not decode.
+Trace read_test_stream(const std::string& suite, const std::string& test);
 
 // What a run of scripts/conformance.py left in OUT/results.json: the tests it simulated (verdict
 // pass, fail or timeout), in its order, and whether the DUT had the accumulation plane.

@@ -417,21 +417,40 @@ uint64_t frame_digest(const Framebuffer& fb) {
   return h;
 }
 
-std::vector<PassDigest> pass_digests(const Trace& trace, const Arithmetic& arithmetic) {
-  GoldenRop golden;
-  golden.set_arithmetic(arithmetic);
-  golden.begin_frame(trace.width, trace.height, trace.depth_bits, trace.clear_color,
-                     trace.coverage_samples, trace.wboit);
-  std::vector<PassDigest> out;
-  for (size_t k = 0; k < trace.passes.size(); ++k) {
-    const TracePass& p = trace.passes[k];
-    for (const FrameOp& op : p.frame_ops) golden.frame_op(op);
-    golden.begin_pass(p.state);
-    golden.draw(p.fragments);
-    golden.end_pass();
-    out.push_back({int(k) + 1, frame_digest(golden.framebuffer())});
+namespace {
+
+// The golden model, its frame's digest taken as each pass ends.
+class DigestingRop final : public Backend {
+ public:
+  explicit DigestingRop(const Arithmetic& arithmetic) { golden_.set_arithmetic(arithmetic); }
+  const char* name() const override { return "golden"; }
+  using Backend::begin_frame;
+  void begin_frame(int width, int height, int depth_bits, Rgba8 clear_color, int coverage_samples,
+                   const WboitFormat& wboit) override {
+    golden_.begin_frame(width, height, depth_bits, clear_color, coverage_samples, wboit);
   }
-  return out;
+  void begin_pass(const RopState& state) override { golden_.begin_pass(state); }
+  using Backend::draw;
+  void draw(const Fragment* fragments, size_t count) override { golden_.draw(fragments, count); }
+  PassStats end_pass() override {
+    digests.push_back({int(digests.size()) + 1, frame_digest(golden_.framebuffer())});
+    return golden_.end_pass();
+  }
+  void frame_op(const FrameOp& op) override { golden_.frame_op(op); }
+  const Framebuffer& framebuffer() const override { return golden_.framebuffer(); }
+
+  std::vector<PassDigest> digests;
+
+ private:
+  GoldenRop golden_;
+};
+
+}  // namespace
+
+GoldenReplay replay_golden(const Trace& trace, const Arithmetic& arithmetic) {
+  DigestingRop rop(arithmetic);
+  replay_trace(trace, rop);
+  return {std::move(rop.digests), rop.framebuffer()};
 }
 
 std::string plane_hex(const Framebuffer& fb, Plane p) {

@@ -66,12 +66,16 @@ std::string plane_hex(const Framebuffer& fb, Plane p);
 // seen"): FNV-1a over 64 bits of the colour, depth, coverage and peel planes' words, plane after
 // plane, each row-major (offset 0xcbf29ce484222325, prime 0x100000001b3; h = (h ^ word) * prime).
 uint64_t frame_digest(const Framebuffer& fb);
-// The golden model's frame_digest after each pass of `trace` (before the next pass's frame
-// operations), in `arithmetic`; pass numbers from 1.
 struct PassDigest {
-  int pass = 0;
+  int pass = 0;  // from 1
   uint64_t digest = 0;
 };
-std::vector<PassDigest> pass_digests(const Trace& trace, const Arithmetic& arithmetic);
+// `trace` replayed on the golden model in `arithmetic` (replay_trace): frame_digest after each
+// pass, before the next pass's frame operations, and the frame at the end.
+struct GoldenReplay {
+  std::vector<PassDigest> digests;
+  Framebuffer frame;
+};
+GoldenReplay replay_golden(const Trace& trace, const Arithmetic& arithmetic);
 
 }  // namespace zb::conformance

@@ -30,7 +30,7 @@ void HistoryRecorder::begin_frame(int width, int height, int depth_bits, Rgba8 c
   frame_.depth_bits = depth_bits;
   frame_.coverage_samples = coverage_samples;
   frame_.wboit = wboit;
-  frame_.arithmetic = arith_;
+  frame_.arithmetic = golden_.arithmetic();
   slot_.assign(size_t(width) * size_t(height), -1);
   const Framebuffer& fb = golden_.framebuffer();
   for (const auto& [x, y] : asked_) {

@@ -112,7 +112,7 @@ struct FrameHistory {
 class HistoryRecorder final : public Backend {
  public:
   explicit HistoryRecorder(std::vector<std::pair<int, int>> pixels, const Arithmetic& arith = {})
-      : asked_(std::move(pixels)), arith_(arith) {
+      : asked_(std::move(pixels)) {
     golden_.set_arithmetic(arith);
   }
   const char* name() const override { return "golden"; }
@@ -133,7 +133,6 @@ class HistoryRecorder final : public Backend {
  private:
   GoldenRop golden_;
   std::vector<std::pair<int, int>> asked_;
-  Arithmetic arith_;
   std::vector<int32_t> slot_;  // per frame pixel: its history's index, or -1
   FrameHistory frame_;
   std::string label_;

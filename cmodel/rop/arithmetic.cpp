@@ -33,4 +33,9 @@ std::optional<Arithmetic> parse_arithmetic(const std::string& name) {
   return std::nullopt;
 }
 
+std::string arithmetic_error(const std::string& name) {
+  return "'" + name + "' is not an arithmetic: zblend, or <each|sum>-<zblend|round255|floor256|" +
+         "ceil256|round256>[-one256] (docs/datapath.md \"Declared arithmetic\")";
+}
+
 }  // namespace zb

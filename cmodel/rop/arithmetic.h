@@ -84,6 +84,8 @@ constexpr uint8_t blend_additive(const Arithmetic& r, uint8_t s, uint8_t a, uint
 std::string to_string(const Arithmetic& r);
 // The rule named `name`, or nullopt.
 std::optional<Arithmetic> parse_arithmetic(const std::string& name);
+// Why `name` is no rule, one line with the names there are, for every program's error.
+std::string arithmetic_error(const std::string& name);
 // Every rule, in a fixed order (zblend first): 20 rules.
 constexpr unsigned kArithmetics = 2 * kDivides * 2;
 Arithmetic arithmetic_at(unsigned i);

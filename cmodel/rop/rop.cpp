@@ -8,16 +8,24 @@
 
 namespace zb {
 
+namespace {
+
+// A blend weighted by the source's alpha, `f(s, a, d)` on R, G, B and on alpha (s = a).
+template <class F>
+Rgba8 by_channel(F f, Rgba8 s, Rgba8 d) {
+  return {f(s.r, s.a, d.r), f(s.g, s.a, d.g), f(s.b, s.a, d.b), f(s.a, s.a, d.a)};
+}
+
+}  // namespace
+
 Rgba8 blend(BlendMode mode, Rgba8 s, Rgba8 d) {
   switch (mode) {
     case BlendMode::kReplace:
       return s;
     case BlendMode::kAlpha:
-      return {blend_alpha(s.r, s.a, d.r), blend_alpha(s.g, s.a, d.g), blend_alpha(s.b, s.a, d.b),
-              blend_alpha(s.a, s.a, d.a)};
+      return by_channel([](uint8_t x, uint8_t a, uint8_t y) { return blend_alpha(x, a, y); }, s, d);
     case BlendMode::kAdditive:
-      return {blend_additive(s.r, s.a, d.r), blend_additive(s.g, s.a, d.g),
-              blend_additive(s.b, s.a, d.b), blend_additive(s.a, s.a, d.a)};
+      return by_channel([](uint8_t x, uint8_t a, uint8_t y) { return blend_additive(x, a, y); }, s, d);
     case BlendMode::kCoverage:  // needs the depths and coverages: composite_coverage
     case BlendMode::kAccumulate:  // writes the accumulation planes: accumulate_wboit
     case BlendMode::kLayers:      // writes the layers: insert_layer
@@ -32,11 +40,9 @@ Rgba8 blend(BlendMode mode, Rgba8 s, Rgba8 d) {
 Rgba8 blend(const Arithmetic& r, BlendMode mode, Rgba8 s, Rgba8 d) {
   switch (mode) {
     case BlendMode::kAlpha:
-      return {blend_alpha(r, s.r, s.a, d.r), blend_alpha(r, s.g, s.a, d.g),
-              blend_alpha(r, s.b, s.a, d.b), blend_alpha(r, s.a, s.a, d.a)};
+      return by_channel([&r](uint8_t x, uint8_t a, uint8_t y) { return blend_alpha(r, x, a, y); }, s, d);
     case BlendMode::kAdditive:
-      return {blend_additive(r, s.r, s.a, d.r), blend_additive(r, s.g, s.a, d.g),
-              blend_additive(r, s.b, s.a, d.b), blend_additive(r, s.a, s.a, d.a)};
+      return by_channel([&r](uint8_t x, uint8_t a, uint8_t y) { return blend_additive(r, x, a, y); }, s, d);
     default:
       return blend(mode, s, d);
   }

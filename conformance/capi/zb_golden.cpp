@@ -242,9 +242,7 @@ int zb_golden_set_arithmetic(zb_golden* g, const char* name) {
     const std::optional<zb::Arithmetic> r =
         name ? zb::parse_arithmetic(name) : std::optional<zb::Arithmetic>{};
     if (!r)
-      return {ZB_EARG, fmt::format("'{}' is not an arithmetic: zblend, or <each|sum>-<zblend|"
-                                   "round255|floor256|ceil256|round256>[-one256] (docs/datapath.md "
-                                   "\"Declared arithmetic\")", name ? name : "(null)")};
+      return {ZB_EARG, zb::arithmetic_error(name ? name : "(null)")};
     h.rop.set_arithmetic(*r);
     return kOk;
   });

@@ -110,10 +110,15 @@ TEST(Arithmetic, ComparisonFailsOnARuleChangedByOneConstant) {
 TEST(Arithmetic, ZblendIsTheDefaultAndTheOthersDifferAsMeasured) {
   const Arithmetic z;
   EXPECT_TRUE(z.is_zblend());
+  // The renderer's entry points (blend.h) against the default rule's formula, written here.
   const Count same = compare_all(
-      [&](uint8_t s, uint8_t a, uint8_t d) { return zb::blend_alpha(z, s, a, d); },
-      [&](uint32_t s, uint32_t a, uint32_t d) { return zb::blend_alpha(uint8_t(s), uint8_t(a), uint8_t(d)); });
+      [&](uint8_t s, uint8_t a, uint8_t d) { return zb::blend_alpha(s, a, d); },
+      [&](uint32_t s, uint32_t a, uint32_t d) { return alpha_spec(z, s, a, d); });
   EXPECT_EQ(same.differ, 0u);
+  const Count add = compare_all(
+      [&](uint8_t s, uint8_t a, uint8_t d) { return zb::blend_additive(s, a, d); },
+      [&](uint32_t s, uint32_t a, uint32_t d) { return additive_spec(z, s, a, d); });
+  EXPECT_EQ(add.differ, 0u);
   struct Share {
     const char* name;
     double percent, digits;
